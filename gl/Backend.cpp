@@ -1,0 +1,57 @@
+#include "gl/Backend.h"
+
+#include <fmt/format.h>
+
+#include "gl/Debug.h"
+#include "gl/GL.h"
+
+namespace hemirad::gl {
+
+namespace {
+std::string glString(GLenum e) {
+  const GLubyte* s = glGetString(e);
+  return s ? reinterpret_cast<const char*>(s) : "";
+}
+}  // namespace
+
+std::string RenderBackend::renderer() const { return glString(GL_RENDERER); }
+std::string RenderBackend::version() const { return glString(GL_VERSION); }
+void RenderBackend::finish() const { glFinish(); }
+int RenderBackend::maxTextureSize() const {
+  GLint size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+  return size;
+}
+
+void RenderBackend::loadFunctions(void* (*resolve)(const char*), bool debug) {
+  int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(resolve));
+  if (version == 0) throw Error(fmt::format("{}: could not load GL functions", name()));
+  int major = GLAD_VERSION_MAJOR(version), minor = GLAD_VERSION_MINOR(version);
+  if (major * 10 + minor < 45)
+    throw Error(fmt::format("{}: GL {}.{} found, hemirad needs GL 4.5 core", name(), major, minor));
+  if (debug) enableDebugOutput();
+}
+
+BackendKind parseBackendKind(const std::string& name) {
+  if (name == "osmesa") return BackendKind::OSMesa;
+  if (name == "egl") return BackendKind::Egl;
+  if (name == "auto") return BackendKind::Auto;
+  throw Error(fmt::format("unknown backend '{}' (osmesa, egl or auto)", name));
+}
+
+std::unique_ptr<RenderBackend> createBackend(const BackendOptions& options) {
+  switch (options.kind) {
+    case BackendKind::OSMesa: return createOSMesaBackend(options);
+    case BackendKind::Egl: return createEglBackend(options, false);
+    case BackendKind::Auto:
+      // A hardware EGL device when there is one, else the software path.
+      try {
+        return createEglBackend(options, true);
+      } catch (const Error&) {
+        return createOSMesaBackend(options);
+      }
+  }
+  throw Error("unreachable backend kind");
+}
+
+}  // namespace hemirad::gl

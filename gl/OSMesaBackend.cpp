@@ -1,0 +1,74 @@
+// OSMesa: Mesa's llvmpipe in-process, the deterministic default. libOSMesa is opened at run
+// time so the same binary also runs where it is absent (the GPU machine).
+#include "gl/GL.h"
+// glad first: its include guard keeps osmesa.h's <GL/gl.h> from declaring real gl* symbols.
+#include <GL/osmesa.h>
+#include <dlfcn.h>
+#include <fmt/format.h>
+
+#include <array>
+
+#include "gl/Backend.h"
+
+namespace hemirad::gl {
+
+namespace {
+
+struct OSMesaApi {
+  void* lib = nullptr;
+  decltype(&OSMesaCreateContextAttribs) createContextAttribs = nullptr;
+  decltype(&OSMesaMakeCurrent) makeCurrent = nullptr;
+  decltype(&OSMesaDestroyContext) destroyContext = nullptr;
+  decltype(&OSMesaGetProcAddress) getProcAddress = nullptr;
+};
+
+OSMesaApi& api() {
+  static OSMesaApi a = [] {
+    OSMesaApi r;
+    for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"})
+      if ((r.lib = dlopen(name, RTLD_NOW | RTLD_LOCAL))) break;
+    if (!r.lib) return r;
+    r.createContextAttribs = reinterpret_cast<decltype(r.createContextAttribs)>(dlsym(r.lib, "OSMesaCreateContextAttribs"));
+    r.makeCurrent = reinterpret_cast<decltype(r.makeCurrent)>(dlsym(r.lib, "OSMesaMakeCurrent"));
+    r.destroyContext = reinterpret_cast<decltype(r.destroyContext)>(dlsym(r.lib, "OSMesaDestroyContext"));
+    r.getProcAddress = reinterpret_cast<decltype(r.getProcAddress)>(dlsym(r.lib, "OSMesaGetProcAddress"));
+    return r;
+  }();
+  return a;
+}
+
+void* resolve(const char* name) { return reinterpret_cast<void*>(api().getProcAddress(name)); }
+
+class OSMesaBackend final : public RenderBackend {
+ public:
+  explicit OSMesaBackend(const BackendOptions& options) {
+    OSMesaApi& a = api();
+    if (!a.lib) throw Error("osmesa: libOSMesa.so.8 not found (install libosmesa6)");
+    if (!a.createContextAttribs || !a.makeCurrent || !a.destroyContext || !a.getProcAddress)
+      throw Error("osmesa: libOSMesa lacks OSMesaCreateContextAttribs (Mesa too old)");
+    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    context_ = a.createContextAttribs(attribs, nullptr);
+    if (!context_) throw Error("osmesa: could not create a GL 4.5 core context");
+    // All rendering goes to FBOs; the default framebuffer is a 1x1 placeholder.
+    if (!a.makeCurrent(context_, pixel_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
+      a.destroyContext(context_);
+      throw Error("osmesa: could not make the context current");
+    }
+    loadFunctions(resolve, options.debug);
+  }
+  ~OSMesaBackend() override { api().destroyContext(context_); }
+  std::string name() const override { return "osmesa"; }
+
+ private:
+  OSMesaContext context_ = nullptr;
+  std::array<unsigned char, 4> pixel_{};
+};
+
+}  // namespace
+
+std::unique_ptr<RenderBackend> createOSMesaBackend(const BackendOptions& options) {
+  return std::make_unique<OSMesaBackend>(options);
+}
+
+}  // namespace hemirad::gl

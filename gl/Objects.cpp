@@ -1,0 +1,99 @@
+#include "gl/Objects.h"
+
+#include <fmt/format.h>
+
+#include "gl/Backend.h"
+
+namespace hemirad::gl {
+
+void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
+void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
+void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+void deleteProgram(GLuint id) { glDeleteProgram(id); }
+void deleteQuery(GLuint id) { glDeleteQueries(1, &id); }
+void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
+
+// ---- Buffer
+Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
+  glCreateBuffers(1, &id_);
+  glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes ? bytes : 4), data, GL_DYNAMIC_STORAGE_BIT);
+}
+void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
+  glNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+void Buffer::read(std::size_t offset, std::size_t bytes, void* out) const {
+  glGetNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), out);
+}
+void Buffer::clearZero() { glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr); }
+void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id_); }
+void Buffer::bind(GLenum target) const { glBindBuffer(target, id_); }
+
+// ---- Texture
+Texture::Texture(GLenum internalFormat, int width, int height) : width_(width), height_(height), format_(internalFormat) {
+  glCreateTextures(GL_TEXTURE_2D, 1, &id_);
+  glTextureStorage2D(id_, 1, internalFormat, width, height);
+  glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+void Texture::upload(GLenum format, GLenum type, const void* data) {
+  glTextureSubImage2D(id_, 0, 0, 0, width_, height_, format, type, data);
+}
+void Texture::read(GLenum format, GLenum type, std::size_t bytes, void* out) const {
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(id_, 0, format, type, static_cast<GLsizei>(bytes), out);
+}
+void Texture::clear(GLenum format, GLenum type, const void* value) { glClearTexImage(id_, 0, format, type, value); }
+void Texture::bindUnit(GLuint unit) const { glBindTextureUnit(unit, id_); }
+void Texture::bindImage(GLuint unit, GLenum access) const {
+  glBindImageTexture(unit, id_, 0, GL_FALSE, 0, access, format_);
+}
+
+// ---- Framebuffer
+Framebuffer::Framebuffer() { glCreateFramebuffers(1, &id_); }
+void Framebuffer::attach(GLenum attachment, const Texture& texture) {
+  glNamedFramebufferTexture(id_, attachment, texture.id(), 0);
+}
+void Framebuffer::drawBuffers(std::span<const GLenum> buffers) {
+  glNamedFramebufferDrawBuffers(id_, static_cast<GLsizei>(buffers.size()), buffers.data());
+}
+void Framebuffer::checkComplete(const char* what) const {
+  GLenum status = glCheckNamedFramebufferStatus(id_, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) throw Error(fmt::format("{} framebuffer incomplete (0x{:04x})", what, status));
+}
+void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id_); }
+
+// ---- VertexArray
+VertexArray::VertexArray() { glCreateVertexArrays(1, &id_); }
+void VertexArray::bind() const { glBindVertexArray(id_); }
+
+// ---- Query
+Query::Query(GLenum target) : target_(target) { glCreateQueries(target, 1, &id_); }
+bool Query::available() const {
+  GLuint ready = 0;
+  glGetQueryObjectuiv(id_, GL_QUERY_RESULT_AVAILABLE, &ready);
+  return ready != 0;
+}
+std::uint64_t Query::result() const {
+  GLuint64 v = 0;
+  glGetQueryObjectui64v(id_, GL_QUERY_RESULT, &v);
+  return v;
+}
+
+// ---- Program
+void Program::use() const { glUseProgram(id_); }
+GLint Program::location(const char* uniform) const { return glGetUniformLocation(id_, uniform); }
+void Program::set(const char* uniform, int v) const { glProgramUniform1i(id_, location(uniform), v); }
+void Program::set(const char* uniform, unsigned v) const { glProgramUniform1ui(id_, location(uniform), v); }
+void Program::set(const char* uniform, float v) const { glProgramUniform1f(id_, location(uniform), v); }
+void Program::set(const char* uniform, const float* mat4) const {
+  glProgramUniformMatrix4fv(id_, location(uniform), 1, GL_FALSE, mat4);
+}
+void Program::dispatch(unsigned x, unsigned y, unsigned z) { glDispatchCompute(x, y, z); }
+void Program::dispatchIndirect(const Buffer& args, std::size_t offset) {
+  args.bind(GL_DISPATCH_INDIRECT_BUFFER);
+  glDispatchComputeIndirect(static_cast<GLintptr>(offset));
+}
+
+}  // namespace hemirad::gl

@@ -1,0 +1,129 @@
+// GL objects as move-only RAII handles (after Magnum's GL wrappers): copy is deleted, a move
+// leaves the source empty (id 0), destruction deletes the name. All use GL 4.5 DSA.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+
+#include "gl/GL.h"
+
+namespace hemirad::gl {
+
+template <void (*Delete)(GLuint)>
+class Handle {
+ public:
+  Handle() = default;
+  explicit Handle(GLuint id) : id_(id) {}
+  ~Handle() { reset(); }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  Handle(Handle&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  Handle& operator=(Handle&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0);
+    }
+    return *this;
+  }
+  GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+  GLuint release() { return std::exchange(id_, 0); }  // for interop: the caller owns the name
+
+ protected:
+  void reset() {
+    if (id_) Delete(id_);
+    id_ = 0;
+  }
+  GLuint id_ = 0;
+};
+
+void deleteBuffer(GLuint);
+void deleteTexture(GLuint);
+void deleteFramebuffer(GLuint);
+void deleteProgram(GLuint);
+void deleteQuery(GLuint);
+void deleteVertexArray(GLuint);
+
+class Buffer : public Handle<deleteBuffer> {
+ public:
+  Buffer() = default;
+  // Immutable storage of `bytes`, optionally initialised; dynamic so it can be updated.
+  Buffer(std::size_t bytes, const void* data = nullptr);
+  template <class T>
+  explicit Buffer(std::span<const T> data) : Buffer(data.size_bytes(), data.data()) {}
+  std::size_t size() const { return size_; }
+  void upload(std::size_t offset, std::size_t bytes, const void* data);
+  void read(std::size_t offset, std::size_t bytes, void* out) const;
+  void clearZero();
+  void bindBase(GLenum target, GLuint index) const;  // SSBO / UBO binding point
+  void bind(GLenum target) const;                    // e.g. GL_DISPATCH_INDIRECT_BUFFER
+
+ private:
+  std::size_t size_ = 0;
+};
+
+class Texture : public Handle<deleteTexture> {
+ public:
+  Texture() = default;
+  // A single-level 2D texture with nearest filtering (texel elements are fetched exactly).
+  Texture(GLenum internalFormat, int width, int height);
+  int width() const { return width_; }
+  int height() const { return height_; }
+  GLenum format() const { return format_; }
+  void upload(GLenum format, GLenum type, const void* data);
+  void read(GLenum format, GLenum type, std::size_t bytes, void* out) const;
+  void clear(GLenum format, GLenum type, const void* value);  // value null = zero
+  void bindUnit(GLuint unit) const;
+  void bindImage(GLuint unit, GLenum access) const;
+
+ private:
+  int width_ = 0, height_ = 0;
+  GLenum format_ = 0;
+};
+
+class Framebuffer : public Handle<deleteFramebuffer> {
+ public:
+  Framebuffer();
+  void attach(GLenum attachment, const Texture& texture);
+  void drawBuffers(std::span<const GLenum> buffers);
+  void checkComplete(const char* what) const;  // throws gl::Error
+  void bind() const;
+};
+
+class VertexArray : public Handle<deleteVertexArray> {
+ public:
+  VertexArray();
+  void bind() const;
+};
+
+class Query : public Handle<deleteQuery> {
+ public:
+  Query() = default;
+  explicit Query(GLenum target);
+  GLenum target() const { return target_; }
+  bool available() const;
+  std::uint64_t result() const;  // waits if not yet available
+
+ private:
+  GLenum target_ = 0;
+};
+
+class Program : public Handle<deleteProgram> {
+ public:
+  Program() = default;
+  explicit Program(GLuint linked) : Handle(linked) {}
+  void use() const;
+  GLint location(const char* uniform) const;  // -1 if the uniform was optimised away
+  void set(const char* uniform, int v) const;
+  void set(const char* uniform, unsigned v) const;
+  void set(const char* uniform, float v) const;
+  void set(const char* uniform, const float* mat4) const;
+  // Compute dispatch helpers (the program must be in use).
+  static void dispatch(unsigned x, unsigned y = 1, unsigned z = 1);
+  static void dispatchIndirect(const Buffer& args, std::size_t offset);
+};
+
+inline unsigned groupsFor(unsigned items, unsigned groupSize) { return (items + groupSize - 1) / groupSize; }
+
+}  // namespace hemirad::gl

@@ -1,0 +1,112 @@
+#include "gl/Shader.h"
+
+#include <fmt/format.h>
+
+#include <sstream>
+
+#include "gl/Backend.h"
+#include "gl/EmbeddedShaders.h"
+
+namespace hemirad::gl {
+
+namespace {
+
+const std::string& fileText(const std::string& name) {
+  const std::string* text = embeddedShader(name);
+  if (!text) throw Error(fmt::format("shader file '{}' is not in shaders/", name));
+  return *text;
+}
+
+// Appends `name` with its includes expanded; `#line L N` maps driver lines back to files.
+void expand(const std::string& name, std::vector<std::string>& names, std::string& out, int depth) {
+  if (depth > 8) throw Error(fmt::format("shader include nesting too deep at '{}'", name));
+  int index = static_cast<int>(names.size());
+  names.push_back(name);
+  out += fmt::format("#line 1 {}\n", index);
+  std::istringstream in(fileText(name));
+  std::string line;
+  for (int lineNo = 1; std::getline(in, line); ++lineNo) {
+    if (line.rfind("#include", 0) == 0) {
+      auto a = line.find('"'), b = line.rfind('"');
+      if (a == std::string::npos || b <= a) throw Error(fmt::format("{}:{}: malformed #include", name, lineNo));
+      expand(line.substr(a + 1, b - a - 1), names, out, depth + 1);
+      out += fmt::format("#line {} {}\n", lineNo + 1, index);
+    } else {
+      out += line;
+      out += '\n';
+    }
+  }
+}
+
+std::string legend(const std::vector<std::string>& names) {
+  std::string s;
+  for (size_t i = 0; i < names.size(); ++i) s += fmt::format("{}{}={}", i ? ", " : "", i, names[i]);
+  return s;
+}
+
+GLuint compile(GLenum stage, const std::string& file, const Defines& defines) {
+  std::vector<std::string> names;
+  std::string source = shaderSource(file, defines, &names);
+  GLuint shader = glCreateShader(stage);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    glDeleteShader(shader);
+    throw Error(fmt::format("shader {} failed to compile (source numbers: {}):\n{}", file, legend(names), log.c_str()));
+  }
+  return shader;
+}
+
+Program link(std::initializer_list<GLuint> shaders, const std::string& what) {
+  GLuint program = glCreateProgram();
+  for (GLuint s : shaders) glAttachShader(program, s);
+  glLinkProgram(program);
+  for (GLuint s : shaders) glDeleteShader(s);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    glDeleteProgram(program);
+    throw Error(fmt::format("program {} failed to link:\n{}", what, log.c_str()));
+  }
+  return Program(program);
+}
+
+}  // namespace
+
+std::string shaderSource(const std::string& file, const Defines& defines, std::vector<std::string>* sourceNames) {
+  std::string out = "#version 450 core\n";
+  for (const auto& [name, value] : defines) out += fmt::format("#define {} {}\n", name, value);
+  std::vector<std::string> names;
+  expand(file, names, out, 0);
+  if (sourceNames) *sourceNames = std::move(names);
+  return out;
+}
+
+Program computeProgram(const std::string& file, const Defines& defines) {
+  return link({compile(GL_COMPUTE_SHADER, file, defines)}, file);
+}
+
+Program renderProgram(const std::string& vertexFile, const std::string& fragmentFile, const Defines& defines) {
+  GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
+  GLuint fs;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  return link({vs, fs}, vertexFile + "+" + fragmentFile);
+}
+
+}  // namespace hemirad::gl

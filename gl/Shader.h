@@ -1,0 +1,21 @@
+// Programs built from shaders/ (embedded at build time). Files carry no #version: the loader
+// prepends `#version 450 core`, the defines and `#line`, and expands `#include "x.glsl"`, so
+// driver logs point at real file lines; a failure names the files and carries the driver log.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gl/Objects.h"
+
+namespace hemirad::gl {
+
+using Defines = std::vector<std::pair<std::string, std::string>>;
+
+Program computeProgram(const std::string& file, const Defines& defines = {});
+Program renderProgram(const std::string& vertexFile, const std::string& fragmentFile, const Defines& defines = {});
+
+// The expanded source as the driver sees it (exposed for tests and error messages).
+std::string shaderSource(const std::string& file, const Defines& defines, std::vector<std::string>* sourceNames = nullptr);
+
+}  // namespace hemirad::gl

@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Writes the shipped scenes (scenes/cornell, scenes/analytic). Run from the repository root.
+
+Every face is emitted counter-clockwise around its front normal: room faces face the room's
+centre, block faces face away from their block's centre.
+"""
+import os
+
+def sub(a, b): return [a[i] - b[i] for i in range(3)]
+def cross(a, b): return [a[1]*b[2]-a[2]*b[1], a[2]*b[0]-a[0]*b[2], a[0]*b[1]-a[1]*b[0]]
+def dot(a, b): return sum(a[i]*b[i] for i in range(3))
+def centre(ps): return [sum(p[i] for p in ps) / len(ps) for i in range(3)]
+
+def orient(face, towards=None, away=None):
+    n = cross(sub(face[1], face[0]), sub(face[2], face[0]))
+    c = centre(face)
+    want = sub(towards, c) if towards else sub(c, away)
+    return face if dot(n, want) > 0 else face[::-1]
+
+class Obj:
+    def __init__(self, mtl):
+        self.lines = [f"mtllib {mtl}"]
+        self.count = 0
+    def group(self, name, material, faces):
+        self.lines += [f"o {name}", f"usemtl {material}"]
+        for f in faces:
+            idx = []
+            for p in f:
+                self.lines.append("v " + " ".join(f"{x:g}" for x in p))
+                self.count += 1
+                idx.append(str(self.count))
+            self.lines.append("f " + " ".join(idx))
+    def write(self, path, header):
+        with open(path, "w") as fh:
+            fh.write("\n".join([f"# {l}" for l in header] + self.lines) + "\n")
+
+def rect(x0, x1, z0, z1, y):
+    return [[x0, y, z0], [x1, y, z0], [x1, y, z1], [x0, y, z1]]
+
+def cornell(folder):
+    # Cornell's published box (graphics.cornell.edu/online/box/data.html), squared so every wall
+    # is planar (the published walls are off-plane by up to 3.2 units), with a hole in the
+    # ceiling for the light so no two faces overlap.
+    X, Y, Z = 556.0, 548.8, 559.2
+    mid = [X / 2, Y / 2, Z / 2]
+    lx0, lx1, lz0, lz1 = 213.0, 343.0, 227.0, 332.0
+    o = Obj("cornell.mtl")
+    o.group("floor", "white", [orient(rect(0, X, 0, Z, 0), towards=mid)])
+    ceiling = [rect(0, X, 0, lz0, Y), rect(0, X, lz1, Z, Y), rect(0, lx0, lz0, lz1, Y), rect(lx1, X, lz0, lz1, Y)]
+    o.group("ceiling", "white", [orient(f, towards=mid) for f in ceiling])
+    o.group("light", "light", [orient(rect(lx0, lx1, lz0, lz1, Y - 0.0), towards=mid)])
+    o.group("back_wall", "white", [orient([[0, 0, Z], [X, 0, Z], [X, Y, Z], [0, Y, Z]], towards=mid)])
+    o.group("left_wall", "red", [orient([[X, 0, 0], [X, 0, Z], [X, Y, Z], [X, Y, 0]], towards=mid)])
+    o.group("right_wall", "green", [orient([[0, 0, 0], [0, 0, Z], [0, Y, Z], [0, Y, 0]], towards=mid)])
+    def block(name, top, h):
+        c = centre(top)
+        c[1] = h / 2
+        faces = [orient([[x, h, z] for x, _, z in top], away=c)]
+        for i in range(4):
+            a, b = top[i], top[(i + 1) % 4]
+            faces.append(orient([[a[0], 0, a[2]], [b[0], 0, b[2]], [b[0], h, b[2]], [a[0], h, a[2]]], away=c))
+        o.group(name, "white", faces)
+    block("short_block", [[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]], 165.0)
+    block("tall_block", [[423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406]], 330.0)
+    o.write(os.path.join(folder, "cornell.obj"), [
+        "Cornell box: Cornell's published geometry (units: mm), walls squared to be planar,",
+        "ceiling split around the light. Written by scenes/tools/make_scenes.py."])
+    with open(os.path.join(folder, "cornell.mtl"), "w") as fh:
+        fh.write("# Reflectances: RGB fits of Cornell's measured spectra (as in pbrt-v4/Mitsuba).\n"
+                 "# Ke is emitted radiosity.\n"
+                 "newmtl white\nKd 0.725 0.71 0.68\n\n"
+                 "newmtl red\nKd 0.63 0.065 0.05\n\n"
+                 "newmtl green\nKd 0.14 0.45 0.091\n\n"
+                 "newmtl light\nKd 0.78 0.78 0.78\nKe 17 12 4\n")
+    with open(os.path.join(folder, "cornell.camera"), "w") as fh:
+        fh.write("# Cornell's published camera: 35 mm lens, 25 mm film -> 39.3 degrees.\n"
+                 "eye=278,273,-800 target=278,273,0 up=0,1,0 fov=39.3\n")
+
+def analytic(folder):
+    mtl = ("newmtl emitter\nKd 0 0 0\nKe 1 1 1\n\n"
+           "newmtl receiver\nKd 0.5 0.5 0.5\n\n"
+           "newmtl grey_emitter\nKd 0.5 0.5 0.5\nKe 1 1 1\n")
+    with open(os.path.join(folder, "analytic.mtl"), "w") as fh:
+        fh.write("# Materials of the analytic test scenes.\n" + mtl)
+    # Howell C-11: unit squares, parallel and opposed, one unit apart: F = 0.19982.
+    o = Obj("analytic.mtl")
+    o.group("emitter", "emitter", [[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]])
+    o.group("receiver", "receiver", [[[0, 0, 1], [0, 1, 1], [1, 1, 1], [1, 0, 1]]])
+    o.write(os.path.join(folder, "parallel_squares.obj"), ["Howell C-11 with a = b = c = 1: F = 0.19982"])
+    # Howell C-14: unit squares sharing an edge at a right angle: F = 0.20004.
+    o = Obj("analytic.mtl")
+    o.group("emitter", "emitter", [[[0, 0, 0], [0, 0, 1], [1, 0, 1], [1, 0, 0]]])
+    o.group("receiver", "receiver", [[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]])
+    o.write(os.path.join(folder, "perpendicular_squares.obj"), ["Howell C-14 with l = w = h = 1: F = 0.20004"])
+    # Furnace: a closed unit cube, every face emitting E = 1 with rho = 0.5: B = E / (1 - rho) = 2.
+    o = Obj("analytic.mtl")
+    mid = [0.5, 0.5, 0.5]
+    faces = [rect(0, 1, 0, 1, 0), rect(0, 1, 0, 1, 1),
+             [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]],
+             [[0, 0, 0], [0, 0, 1], [0, 1, 1], [0, 1, 0]], [[1, 0, 0], [1, 0, 1], [1, 1, 1], [1, 1, 0]]]
+    o.group("box", "grey_emitter", [orient(f, towards=mid) for f in faces])
+    o.write(os.path.join(folder, "furnace.obj"), ["Closed box, all faces E = 1, rho = 0.5: B = 2 everywhere"])
+
+if __name__ == "__main__":
+    os.makedirs("scenes/cornell", exist_ok=True)
+    os.makedirs("scenes/analytic", exist_ok=True)
+    cornell("scenes/cornell")
+    analytic("scenes/analytic")

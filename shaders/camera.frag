@@ -1,0 +1,32 @@
+// Bilinear lookup of B that only weighs texels of the fragment's own polygon, so charts
+// never bleed into each other and partial edge texels are used as they are.
+#include "scene.glsl"
+
+layout(binding = 2) uniform sampler2D radiosity;
+in vec2 vAtlas;
+flat in uint vPolygon;
+layout(location = 0) out vec4 color;
+
+void main() {
+  vec2 c = vAtlas - 0.5;
+  ivec2 i0 = ivec2(floor(c));
+  vec2 f = c - vec2(i0);
+  vec3 sum = vec3(0.0);
+  float weight = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    ivec2 o = ivec2(k & 1, k >> 1);
+    float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+    if (texelFetch(atlasPolygon, i0 + o, 0).r == vPolygon) {
+      sum += w * texelFetch(radiosity, i0 + o, 0).rgb;
+      weight += w;
+    }
+  }
+  if (weight <= 0.0) {  // a sliver of the polygon whose own texel holds no element: nearest one
+    ivec2 centre = ivec2(floor(vAtlas));
+    for (int k = 0; k < 9 && weight <= 0.0; ++k) {
+      ivec2 t = centre + ivec2(k % 3 - 1, k / 3 - 1);
+      if (texelFetch(atlasPolygon, t, 0).r == vPolygon) sum = texelFetch(radiosity, t, 0).rgb, weight = 1.0;
+    }
+  }
+  color = vec4(weight > 0.0 ? sum / weight : vec3(0.0), 1.0);
+}

@@ -1,0 +1,15 @@
+// Scene data on the GPU: the atlas (element centre + area, polygon id per texel) and the
+// per-polygon table.
+
+const uint NO_POLYGON = 0xFFFFFFFFu;
+
+struct Polygon {
+  vec4 normal;       // xyz unit front normal
+  vec4 reflectance;  // rgb rho
+  vec4 emission;     // rgb E
+};
+
+layout(std430, binding = 0) readonly buffer Polygons { Polygon polygons[]; };
+
+layout(binding = 0) uniform sampler2D atlasPositionArea;  // xyz element centre, w area (0: none)
+layout(binding = 1) uniform usampler2D atlasPolygon;      // polygon id or NO_POLYGON

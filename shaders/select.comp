@@ -1,0 +1,50 @@
+// Reads the reduction's winner, applies the stop rule and writes the next shooter and the
+// indirect arguments of this shot's item-buffer draw and gather dispatch.
+#include "hemisphere.glsl"
+#include "scene.glsl"
+#include "reduce_entry.glsl"
+#include "control.glsl"
+
+layout(local_size_x = 1) in;
+layout(binding = 1, rgba32f) uniform readonly image2D deltaB;
+layout(std430, binding = 1) readonly buffer Blocks { ivec4 blockRect[]; };
+layout(std430, binding = 4) readonly buffer Winner { Entry winner[]; };
+
+void main() {
+  Entry w = winner[0];
+  float convergence = 1.0 - w.sum / control.emittedPower;
+  control.convergence = convergence;
+  control.unshotPower = w.sum;
+  if (control.shots < control.historyCapacity) control.history[control.shots] = convergence;
+  bool stop = control.done != 0u || w.best <= 0.0 ||
+              (control.maxShots != 0u && control.shots >= control.maxShots) ||
+              (control.targetConvergence > 0.0 && convergence >= control.targetConvergence);
+  if (stop) {
+    control.done = 1u;
+    control.gatherDispatch = uvec4(0u, 0u, 0u, 0u);
+    control.itemDraw.y = 0u;
+    return;
+  }
+  // The block shoots from its area-weighted centre with its area-weighted unshot radiosity.
+  ivec4 r = blockRect[w.index];
+  vec3 power = vec3(0.0), centre = vec3(0.0);
+  float area = 0.0;
+  uint polygon = NO_POLYGON;
+  for (int y = r.y; y < r.y + r.w; ++y)
+    for (int x = r.x; x < r.x + r.z; ++x) {
+      vec4 pa = texelFetch(atlasPositionArea, ivec2(x, y), 0);
+      if (pa.w <= 0.0) continue;
+      power += imageLoad(deltaB, ivec2(x, y)).rgb * pa.w;
+      centre += pa.xyz * pa.w;
+      area += pa.w;
+      polygon = texelFetch(atlasPolygon, ivec2(x, y), 0).r;
+    }
+  control.shooterPositionArea = vec4(centre / area, area);
+  control.shooterNormal = vec4(polygons[polygon].normal.xyz, 0.0);
+  control.shooterDeltaB = vec4(power / area, w.best);
+  control.shooterRect = r;
+  control.shooterPolygon = polygon;
+  control.shots += 1u;
+  control.gatherDispatch = uvec4(control.gatherGroupsX, control.gatherGroupsY, 1u, 0u);
+  control.itemDraw.y = 1u;
+}

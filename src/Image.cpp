@@ -1,0 +1,70 @@
+#include "src/Image.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "src/AtomicFile.h"
+#include "src/Error.h"
+
+namespace hemirad {
+
+double exposureScale(const Image& image, double ev) {
+  std::vector<float> lum;
+  for (size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
+    float l = 0.2126f * image.rgb[i] + 0.7152f * image.rgb[i + 1] + 0.0722f * image.rgb[i + 2];
+    if (l > 0) lum.push_back(l);
+  }
+  double scale = 1.0;
+  if (!lum.empty()) {
+    auto k = lum.begin() + std::ptrdiff_t(0.95 * double(lum.size() - 1));
+    std::nth_element(lum.begin(), k, lum.end());
+    if (*k > 0) scale = 1.0 / *k;
+  }
+  return scale * std::exp2(ev);
+}
+
+std::vector<unsigned char> toneMap(const Image& image, double scale) {
+  std::vector<unsigned char> out(image.rgb.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    double v = std::clamp(double(image.rgb[i]) * scale, 0.0, 1.0);
+    double s = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+    out[i] = static_cast<unsigned char>(std::lround(s * 255.0));
+  }
+  return out;
+}
+
+namespace {
+void writeWith(const std::string& path, const OIIO::ImageSpec& spec, const void* pixels) {
+  writeAtomically(path, [&](const std::string& tmp) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) fail("{}: no image writer for this extension", path);
+    if (!out->open(tmp, spec) || !out->write_image(spec.format, pixels) || !out->close())
+      fail("{}: cannot write: {}", path, out->geterror());
+  });
+}
+}  // namespace
+
+void writeExr(const std::string& path, const Image& image) {
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+  spec.attribute("compression", "zip");
+  writeWith(path, spec, image.rgb.data());
+}
+
+void writePng(const std::string& path, const Image& image, double scale) {
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  std::vector<unsigned char> pixels = toneMap(image, scale);
+  writeWith(path, spec, pixels.data());
+}
+
+Image readImage(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) fail("{}: cannot read image: {}", path, OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  Image img{spec.width, spec.height, std::vector<float>(size_t(spec.width) * spec.height * 3)};
+  if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, img.rgb.data())) fail("{}: {}", path, in->geterror());
+  return img;
+}
+
+}  // namespace hemirad

@@ -1,0 +1,24 @@
+// Linear RGB images and how they leave hemirad: float EXR (exact), and PNG tone-mapped by
+// exposure and the sRGB curve. Both through OpenImageIO, written atomically.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace hemirad {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // linear, rows top to bottom
+};
+
+// Linear scale that maps the 95th-percentile luminance of lit pixels to 1, times 2^ev.
+// Emitters (a few percent of pixels) clip to white; the rest keeps its range.
+double exposureScale(const Image& image, double ev);
+// 8-bit sRGB of the linear image times `scale`.
+std::vector<unsigned char> toneMap(const Image& image, double scale);
+
+void writeExr(const std::string& path, const Image& image);
+void writePng(const std::string& path, const Image& image, double scale);
+Image readImage(const std::string& path);  // any format OpenImageIO reads; RGB float
+
+}  // namespace hemirad

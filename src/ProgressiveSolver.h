@@ -1,0 +1,55 @@
+// Progressive-refinement radiosity on the GPU (seed 003): per shot, a reduction picks the
+// block with the largest unshot power, the item mesh is rasterised into a hemispherical item
+// buffer from it, and a compute pass gathers the shot into every receiver texel. The choice,
+// the stop rule and the indirect arguments stay on the GPU: the CPU only enqueues shots and
+// reads a small status block between batches.
+#pragma once
+#include <memory>
+
+#include "gl/Objects.h"
+#include "src/Solver.h"
+#include "src/SolverState.h"
+
+namespace hemirad {
+
+struct ProgressiveSettings {
+  int itemSubdivision = 3;   // 1-to-4 splits of the item mesh
+  int itemResolution = 512;  // item buffer pixels per side
+  int shootLevel = 0;        // substructuring: shoot from 2^k x 2^k texel blocks
+  StopRule stop;
+};
+
+class ProgressiveSolver final : public Solver {
+ public:
+  ProgressiveSolver(SolverState& state, const ProgressiveSettings& settings);
+  ~ProgressiveSolver() override;
+  std::string algorithm() const override { return "progressive"; }
+  SolveStatus advance(unsigned shots) override;
+  const PassTimings& timings() const override { return timings_; }
+  std::vector<float> convergenceHistory() const override;
+  std::size_t itemTriangles() const { return itemVertexCount_ / 3; }
+  std::size_t shooterBlocks() const { return blockCount_; }
+
+ private:
+  void selectPass();
+  void itemBufferPass();
+  void gatherPass();
+  SolveStatus readStatus();
+
+  SolverState& state_;
+  ProgressiveSettings settings_;
+  gl::Program blockPower_, reduce_, select_, itemBuffer_, gather_;
+  gl::Buffer blocks_, control_, itemVertices_;
+  std::vector<gl::Buffer> levels_;  // reduction levels: entries per block, then per 1024, ...
+  gl::VertexArray itemVao_;
+  gl::Texture itemId_, itemDepth_;
+  gl::Framebuffer itemFbo_;
+  std::size_t blockCount_ = 0, itemVertexCount_ = 0;
+  unsigned historyCapacity_ = 0;
+  SolveStatus status_;
+  PassTimings timings_;
+  struct Timers;
+  std::unique_ptr<Timers> timers_;
+};
+
+}  // namespace hemirad

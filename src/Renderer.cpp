@@ -1,0 +1,88 @@
+#include "src/Renderer.h"
+
+#include <cstddef>
+
+#include "gl/Debug.h"
+#include "gl/Shader.h"
+
+namespace hemirad {
+
+namespace {
+struct CameraVertex {
+  float position[3];
+  float atlas[2];
+  std::uint32_t polygon;
+};
+}  // namespace
+
+Renderer::Renderer(const SolverState& state) : state_(state) {
+  program_ = gl::renderProgram("camera.vert", "camera.frag");
+  std::vector<CameraVertex> verts;
+  const auto& polys = state.scene.polygons();
+  for (std::uint32_t id = 0; id < polys.size(); ++id) {
+    const Poly3& v = polys[id].vertices;
+    auto vertex = [&](const glm::dvec3& p) {
+      glm::dvec2 a = state.atlas.atlasCoord(int(id), p);
+      verts.push_back({{float(p.x), float(p.y), float(p.z)}, {float(a.x), float(a.y)}, id});
+    };
+    for (size_t k = 1; k + 1 < v.size(); ++k) vertex(v[0]), vertex(v[k]), vertex(v[k + 1]);
+  }
+  vertexCount_ = verts.size();
+  vertices_ = gl::Buffer(std::span<const CameraVertex>(verts));
+  GLuint vao = vao_.id();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(CameraVertex));
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(CameraVertex, position));
+  glVertexArrayAttribBinding(vao, 0, 0);
+  glEnableVertexArrayAttrib(vao, 1);
+  glVertexArrayAttribFormat(vao, 1, 2, GL_FLOAT, GL_FALSE, offsetof(CameraVertex, atlas));
+  glVertexArrayAttribBinding(vao, 1, 0);
+  glEnableVertexArrayAttrib(vao, 2);
+  glVertexArrayAttribIFormat(vao, 2, 1, GL_UNSIGNED_INT, offsetof(CameraVertex, polygon));
+  glVertexArrayAttribBinding(vao, 2, 0);
+}
+
+Image Renderer::render(const Camera& camera, int width, int height, int supersample) {
+  const int s = std::max(1, supersample), w = width * s, h = height * s;
+  gl::Texture color(GL_RGBA32F, w, h), depth(GL_DEPTH_COMPONENT32F, w, h);
+  gl::Framebuffer fbo;
+  fbo.attach(GL_COLOR_ATTACHMENT0, color);
+  fbo.attach(GL_DEPTH_ATTACHMENT, depth);
+  fbo.checkComplete("camera");
+  const float black[4] = {0, 0, 0, 1}, one = 1.0f;
+  glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, black);
+  glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+
+  double reach = glm::length(camera.target - camera.eye) + state_.farDistance;
+  glm::mat4 vp = camera.viewProjection(double(width) / height, reach * 1e-5, reach);
+  fbo.bind();
+  glViewport(0, 0, w, h);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  state_.bindScene();
+  state_.radiosity.bindUnit(2);
+  program_.set("viewProjection", &vp[0][0]);
+  program_.use();
+  vao_.bind();
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertexCount_));
+  gl::checkErrors("camera render");
+
+  std::vector<float> rgba(size_t(w) * h * 4);
+  color.read(GL_RGBA, GL_FLOAT, rgba.size() * sizeof(float), rgba.data());
+  Image img{width, height, std::vector<float>(size_t(width) * height * 3, 0.0f)};
+  const float norm = 1.0f / float(s * s);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        float sum = 0;
+        for (int j = 0; j < s; ++j)
+          for (int i = 0; i < s; ++i) sum += rgba[(size_t(y * s + j) * w + (x * s + i)) * 4 + c];
+        // GL rows go bottom-up; images go top-down.
+        img.rgb[(size_t(height - 1 - y) * width + x) * 3 + c] = sum * norm;
+      }
+  return img;
+}
+
+}  // namespace hemirad

@@ -1,0 +1,27 @@
+// Camera render of a solution: the scene's polygons rasterised with a perspective camera,
+// each fragment looking B up in the atlas (bilinear, masked to its own polygon).
+#pragma once
+#include <vector>
+
+#include "gl/Objects.h"
+#include "src/Camera.h"
+#include "src/Image.h"
+#include "src/SolverState.h"
+
+namespace hemirad {
+
+class Renderer {
+ public:
+  explicit Renderer(const SolverState& state);
+  // Renders at supersample x the size and box-filters down (deterministic anti-aliasing).
+  Image render(const Camera& camera, int width, int height, int supersample = 2);
+
+ private:
+  const SolverState& state_;
+  gl::Program program_;
+  gl::Buffer vertices_;
+  gl::VertexArray vao_;
+  std::size_t vertexCount_ = 0;
+};
+
+}  // namespace hemirad

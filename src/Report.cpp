@@ -1,0 +1,51 @@
+#include "src/Report.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+#include "src/AtomicFile.h"
+#include "src/Error.h"
+
+namespace hemirad {
+
+nlohmann::json reportJson(const RunInfo& r) {
+  using nlohmann::json;
+  json objects = json::array();
+  for (const auto& o : r.objects)
+    objects.push_back({{"name", o.name}, {"area", o.area}, {"mean_radiosity", {o.mean.x, o.mean.y, o.mean.z}}});
+  return {
+      {"backend", r.backend},
+      {"renderer", r.renderer},
+      {"algorithm", r.algorithm},
+      {"scene", r.scene},
+      {"elements", r.elements},
+      {"texel_size", r.texelSize},
+      {"atlas", {{"width", r.atlasWidth}, {"height", r.atlasHeight}}},
+      {"shots", r.status.shots},
+      {"convergence", r.status.convergence},
+      {"item_subdivision", r.itemSubdivision},
+      {"item_resolution", r.itemResolution},
+      {"item_triangles", r.itemTriangles},
+      {"shoot_level", r.shootLevel},
+      {"timings_ms",
+       {{"total", r.totalMs},
+        {"item_buffer", r.timings.itemBuffer},
+        {"gather", r.timings.gather},
+        {"select", r.timings.select},
+        {"readback", r.timings.readback}}},
+      {"radiosity_hash", fmt::format("{:016x}", r.radiosityHash)},
+      {"convergence_history", r.convergenceHistory},
+      {"objects", objects},
+  };
+}
+
+void writeReport(const std::string& path, const RunInfo& run) {
+  writeAtomically(path, [&](const std::string& tmp) {
+    std::ofstream out(tmp);
+    out << reportJson(run).dump(2) << "\n";
+    if (!out.flush()) fail("{}: write failed", path);
+  });
+}
+
+}  // namespace hemirad

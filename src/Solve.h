@@ -1,0 +1,45 @@
+// `hemirad solve` and `hemirad info`: the commands, apart from flag parsing (src/main.cpp).
+#pragma once
+#include <optional>
+#include <string>
+
+#include "gl/Backend.h"
+#include "src/ProgressiveSolver.h"
+#include "src/SceneLoader.h"
+
+namespace hemirad {
+
+struct Discretisation {
+  std::optional<double> texelSize;         // scene units
+  std::optional<std::size_t> elements;     // or: about this many elements
+  static constexpr std::size_t kDefaultElements = 10000;
+};
+
+struct SolveOptions {
+  std::string scene;
+  LoadOptions load;
+  Discretisation discretisation;
+  ProgressiveSettings progressive;
+  gl::BackendOptions backend;
+  std::optional<std::string> camera;
+  int width = 512, height = 512, supersample = 2;
+  double exposure = 0;  // stops over the automatic exposure
+  std::string out, image, atlas, ply, report;
+  bool progress = true;
+};
+
+int runSolve(const SolveOptions& options);
+
+struct InfoOptions {
+  std::string scene;
+  LoadOptions load;
+  Discretisation discretisation;
+  int itemSubdivision = 3;
+};
+
+int runInfo(const InfoOptions& options);
+
+// Texel size from the flags: --texel-size, else --elements, else about 10,000 elements.
+double chooseTexelSize(const Scene& scene, const Discretisation& d);
+
+}  // namespace hemirad

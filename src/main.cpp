@@ -1,0 +1,99 @@
+// hemirad: GPU progressive-refinement radiosity with a hemispherical item buffer.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "gl/Backend.h"
+#include "src/Error.h"
+#include "src/Solve.h"
+
+using namespace hemirad;
+
+namespace {
+
+void addSceneFlags(CLI::App* cmd, std::string& scene, LoadOptions& load, Discretisation& d) {
+  cmd->add_option("scene", scene, "Wavefront OBJ (materials from its MTL)")->required()->check(CLI::ExistingFile);
+  static const std::map<std::string, EmissionSource> emission{{"ke", EmissionSource::Ke}, {"ka", EmissionSource::Ka}};
+  cmd->add_option("--emission", load.emission, "MTL key that gives emission: ke (default) or ka (the thesis)")
+      ->transform(CLI::CheckedTransformer(emission, CLI::ignore_case));
+  auto* ts = cmd->add_option("--texel-size", d.texelSize, "Element (texel) side in scene units")
+                 ->check(CLI::PositiveNumber);
+  cmd->add_option("--elements", d.elements, "Choose the texel size for about N elements (default 10000)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 28))
+      ->excludes(ts);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"hemirad: diffuse global illumination by GPU progressive-refinement radiosity"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "hemirad 0.1.0");
+
+  SolveOptions solve;
+  std::string backend = "osmesa";
+  CLI::App* s = app.add_subcommand("solve", "Solve a scene and write images, atlas, mesh and report");
+  addSceneFlags(s, solve.scene, solve.load, solve.discretisation);
+  auto& pr = solve.progressive;
+  auto* converge = s->add_option("--converge", pr.stop.targetConvergence,
+                                 "Stop at this convergence, 1 - unshot/emitted power (default 0.9)")
+                       ->check(CLI::Range(0.0, 1.0).description("in (0, 1)"))
+                       ->check([](const std::string& v) { return std::stod(v) > 0 && std::stod(v) < 1 ? "" : "must be in (0, 1)"; });
+  auto* shots = s->add_option("--shots", pr.stop.maxShots, "Stop after N shots")->check(CLI::Range(1u, 1u << 30));
+  s->add_option("--item-subdiv", pr.itemSubdivision, "Item-mesh 1-to-4 subdivision level L (default 3)")
+      ->check(CLI::Range(0, 8));
+  s->add_option("--item-res", pr.itemResolution, "Item buffer resolution in pixels (default 512)")
+      ->check(CLI::Range(16, 16384));
+  s->add_option("--shoot-level", pr.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 0)")
+      ->check(CLI::Range(0, 8));
+  s->add_option("--backend", backend, "GL backend: osmesa (default), egl, auto")
+      ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
+  s->add_option("--gpu", solve.backend.gpu, "EGL device index")->check(CLI::NonNegativeNumber);
+  s->add_flag("--gl-debug", solve.backend.debug, "Report GL errors through KHR_debug");
+  s->add_option("--camera", solve.camera, "eye=x,y,z,target=x,y,z,up=x,y,z,fov=degrees (default: SCENE.camera)");
+  s->add_option("--width", solve.width, "Image width (default 512)")->check(CLI::Range(1, 16384));
+  s->add_option("--height", solve.height, "Image height (default 512)")->check(CLI::Range(1, 16384));
+  s->add_option("--supersample", solve.supersample, "Samples per pixel side (default 2)")->check(CLI::Range(1, 8));
+  s->add_option("--exposure", solve.exposure, "PNG/PLY exposure in stops over the automatic one (default 0)");
+  s->add_option("--out", solve.out, "Linear camera render (.exr)");
+  s->add_option("--image", solve.image, "Tone-mapped camera render (.png)");
+  s->add_option("--atlas", solve.atlas, "Radiosity atlas, one texel per element (.exr)");
+  s->add_option("--ply", solve.ply, "Mesh with per-vertex radiosity (.ply)");
+  s->add_option("--report", solve.report, "Report (.json)");
+  bool quiet = false;
+  s->add_flag("--quiet", quiet, "No progress bar");
+
+  InfoOptions info;
+  CLI::App* i = app.add_subcommand("info", "Describe a scene: objects, polygons, area, emitters, elements");
+  addSceneFlags(i, info.scene, info.load, info.discretisation);
+  i->add_option("--item-subdiv", info.itemSubdivision, "Item-mesh subdivision level to count (default 3)")
+      ->check(CLI::Range(0, 8));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "hemirad: error: %s\n", e.what());
+    return kExitInputError;
+  }
+  (void)converge;
+  try {
+    if (*s) {
+      if (!*shots && !*converge) pr.stop.targetConvergence = 0.9;
+      solve.backend.kind = gl::parseBackendKind(backend);
+      solve.progress = !quiet;
+      return runSolve(solve);
+    }
+    return runInfo(info);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "hemirad: error: %s\n", e.what());
+    return kExitInputError;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hemirad: error: %s\n", e.what());
+    return kExitFailure;
+  }
+}
