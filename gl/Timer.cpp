@@ -2,25 +2,34 @@
 
 namespace hemirad::gl {
 
-void GpuTimer::begin(int slot) {
+void GpuTimer::mark(int slot) {
+  if (synchronous_) {
+    glFinish();
+    cpuMarks_.emplace_back(std::chrono::steady_clock::now(), slot);
+    return;
+  }
   Query q;
   if (free_.empty()) {
-    q = Query(GL_TIME_ELAPSED);
+    q = Query(GL_TIMESTAMP);
   } else {
     q = std::move(free_.back());
     free_.pop_back();
   }
-  glBeginQuery(GL_TIME_ELAPSED, q.id());
+  glQueryCounter(q.id(), GL_TIMESTAMP);
   pending_.emplace_back(std::move(q), slot);
 }
 
-void GpuTimer::end() { glEndQuery(GL_TIME_ELAPSED); }
-
 void GpuTimer::collect(std::span<double> totals) {
-  for (auto& [q, slot] : pending_) {
-    totals[size_t(slot)] += double(q.result()) * 1e-6;
-    free_.push_back(std::move(q));
+  for (size_t i = 0; i + 1 < cpuMarks_.size(); ++i)
+    if (cpuMarks_[i].second >= 0)
+      totals[size_t(cpuMarks_[i].second)] +=
+          std::chrono::duration<double, std::milli>(cpuMarks_[i + 1].first - cpuMarks_[i].first).count();
+  cpuMarks_.clear();
+  for (size_t i = 0; i + 1 < pending_.size(); ++i) {
+    int slot = pending_[i].second;
+    if (slot >= 0) totals[size_t(slot)] += double(pending_[i + 1].first.result() - pending_[i].first.result()) * 1e-6;
   }
+  for (auto& p : pending_) free_.push_back(std::move(p.first));
   pending_.clear();
 }
 

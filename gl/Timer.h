@@ -1,6 +1,10 @@
-// GPU time per pass from GL_TIME_ELAPSED queries, read back only at sync points so timing
-// never stalls the pipeline. Queries are recycled.
+// Time per pass. By default from GL_TIMESTAMP queries at pass boundaries, read back only at
+// sync points so timing never stalls the pipeline. Drivers that defer work (llvmpipe bins
+// triangles until a flush) stamp a pass when it is queued, not when it runs, so `synchronous`
+// mode instead waits (glFinish) at every boundary and reads the CPU clock: exact per-pass
+// splits at the cost of pipelining.
 #pragma once
+#include <chrono>
 #include <span>
 #include <utility>
 #include <vector>
@@ -11,14 +15,18 @@ namespace hemirad::gl {
 
 class GpuTimer {
  public:
-  void begin(int slot);
-  void end();
-  // Adds every pending query's milliseconds to totals[slot]; waits for unfinished ones.
+  explicit GpuTimer(bool synchronous = false) : synchronous_(synchronous) {}
+  // Marks the start of pass `slot`; the pass ends at the next mark() or stop().
+  void mark(int slot);
+  void stop() { mark(-1); }
+  // Adds every finished pass's milliseconds to totals[slot]; waits for unfinished queries.
   void collect(std::span<double> totals);
 
  private:
+  bool synchronous_;
   std::vector<Query> free_;
-  std::vector<std::pair<Query, int>> pending_;
+  std::vector<std::pair<Query, int>> pending_;  // timestamp, slot it starts (-1: a stop)
+  std::vector<std::pair<std::chrono::steady_clock::time_point, int>> cpuMarks_;
 };
 
 }  // namespace hemirad::gl

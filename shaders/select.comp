@@ -1,17 +1,17 @@
-// Reads the reduction's winner, applies the stop rule and writes the next shooter and the
-// indirect arguments of this shot's item-buffer draw and gather dispatch.
+// The last level of the shooter reduction (one workgroup, over the blocks themselves when
+// they are few), then the stop rule, the next shooter and the indirect arguments of this
+// shot's item-buffer draw and gather dispatch.
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "reduce_entry.glsl"
 #include "control.glsl"
 
-layout(local_size_x = 1) in;
-layout(binding = 1, rgba32f) uniform readonly image2D deltaB;
-layout(std430, binding = 1) readonly buffer Blocks { ivec4 blockRect[]; };
-layout(std430, binding = 4) readonly buffer Winner { Entry winner[]; };
+layout(local_size_x = 256) in;
 
 void main() {
-  Entry w = winner[0];
+  reduceGroup(0u, count);
+  if (gl_LocalInvocationID.x != 0u) return;
+  Entry w = partial[0];
   float convergence = 1.0 - w.sum / control.emittedPower;
   control.convergence = convergence;
   control.unshotPower = w.sum;

@@ -6,7 +6,6 @@
 
 #include "gl/Debug.h"
 #include "gl/Shader.h"
-#include "gl/Timer.h"
 #include "src/ItemMesh.h"
 
 namespace hemirad {
@@ -15,8 +14,8 @@ namespace {
 
 constexpr std::uint32_t kNoPolygonClear = kNoPolygon;
 constexpr unsigned kGatherGroup = 16;   // gather.comp local size (x and y)
-constexpr unsigned kPowerGroup = 64;    // block_power.comp
 constexpr unsigned kReduceFold = 1024;  // entries folded per reduce.comp workgroup
+constexpr unsigned kSelectFold = 4096;  // at most this many left for select.comp's one workgroup
 constexpr unsigned kUnlimitedHistory = 1u << 20;
 
 // shaders/control.glsl, std430.
@@ -41,13 +40,8 @@ constexpr GLbitfield kAllBarriers = GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IM
 
 }  // namespace
 
-struct ProgressiveSolver::Timers {
-  gl::GpuTimer gpu;
-};
-
 ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettings& settings)
-    : state_(state), settings_(settings), timers_(std::make_unique<Timers>()) {
-  blockPower_ = gl::computeProgram("block_power.comp");
+    : state_(state), settings_(settings), timer_(settings.syncTimings) {
   reduce_ = gl::computeProgram("reduce.comp");
   select_ = gl::computeProgram("select.comp");
   gather_ = gl::computeProgram("gather.comp");
@@ -57,10 +51,8 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(settings.shootLevel);
   blockCount_ = blocks.size();
   blocks_ = gl::Buffer(std::span<const ShooterBlock>(blocks));
-  for (std::size_t n = blockCount_;; n = gl::groupsFor(unsigned(n), kReduceFold)) {
-    levels_.emplace_back(std::max<std::size_t>(n, 1) * 16);
-    if (n <= 1) break;
-  }
+  for (unsigned n = unsigned(blockCount_); n > kSelectFold; n = gl::groupsFor(n, kReduceFold))
+    levels_.emplace_back(gl::groupsFor(n, kReduceFold) * sizeof(float[4]));
 
   // Item mesh in a static buffer: position + polygon id.
   std::vector<ItemVertex> mesh = buildItemMesh(state.scene, settings.itemSubdivision);
@@ -100,7 +92,6 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   itemBuffer_.set("farDistance", far);
   gather_.set("farDistance", far);
   glProgramUniform2i(gather_.id(), gather_.location("atlasSize"), state.atlas.width, state.atlas.height);
-  blockPower_.set("blockCount", unsigned(blockCount_));
   gl::checkErrors("progressive solver setup");
 }
 
@@ -110,21 +101,24 @@ void ProgressiveSolver::selectPass() {
   state_.bindScene();
   state_.deltaB.bindImage(1, GL_READ_ONLY);
   blocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  levels_[0].bindBase(GL_SHADER_STORAGE_BUFFER, 2);
-  blockPower_.use();
-  gl::Program::dispatch(gl::groupsFor(unsigned(blockCount_), kPowerGroup));
+  // Many blocks: fold them 1024 to one in parallel first; the last fold runs in select.comp.
+  unsigned n = unsigned(blockCount_);
+  bool fromBlocks = true;
   reduce_.use();
-  for (std::size_t l = 0, n = blockCount_; l + 1 < levels_.size(); ++l, n = gl::groupsFor(unsigned(n), kReduceFold)) {
+  for (gl::Buffer& level : levels_) {
+    level.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+    reduce_.set("count", n);
+    reduce_.set("fromBlocks", int(fromBlocks));
+    gl::Program::dispatch(gl::groupsFor(n, kReduceFold));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    levels_[l].bindBase(GL_SHADER_STORAGE_BUFFER, 2);
-    levels_[l + 1].bindBase(GL_SHADER_STORAGE_BUFFER, 4);
-    reduce_.set("count", unsigned(n));
-    gl::Program::dispatch(gl::groupsFor(unsigned(n), kReduceFold));
+    level.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+    n = gl::groupsFor(n, kReduceFold);
+    fromBlocks = false;
   }
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  levels_.back().bindBase(GL_SHADER_STORAGE_BUFFER, 4);
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   select_.use();
+  select_.set("count", n);
+  select_.set("fromBlocks", int(fromBlocks));
   gl::Program::dispatch(1);
   glMemoryBarrier(kAllBarriers);
 }
@@ -161,18 +155,15 @@ void ProgressiveSolver::gatherPass() {
 }
 
 SolveStatus ProgressiveSolver::advance(unsigned shots) {
-  gl::GpuTimer& timer = timers_->gpu;
   for (unsigned k = 0; k < shots && !status_.done; ++k) {
-    timer.begin(kSelect);
+    timer_.mark(kSelect);
     selectPass();
-    timer.end();
-    timer.begin(kItemBuffer);
+    timer_.mark(kItemBuffer);
     itemBufferPass();
-    timer.end();
-    timer.begin(kGather);
+    timer_.mark(kGather);
     gatherPass();
-    timer.end();
   }
+  timer_.stop();
   return readStatus();
 }
 
@@ -182,7 +173,7 @@ SolveStatus ProgressiveSolver::readStatus() {
   control_.read(0, sizeof c, &c);
   timings_.readback += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   double totals[kSlots] = {};
-  timers_->gpu.collect(totals);
+  timer_.collect(totals);
   timings_.select += totals[kSelect];
   timings_.itemBuffer += totals[kItemBuffer];
   timings_.gather += totals[kGather];

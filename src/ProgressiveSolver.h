@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "gl/Objects.h"
+#include "gl/Timer.h"
 #include "src/Solver.h"
 #include "src/SolverState.h"
 
@@ -16,6 +17,7 @@ struct ProgressiveSettings {
   int itemSubdivision = 3;   // 1-to-4 splits of the item mesh
   int itemResolution = 512;  // item buffer pixels per side
   int shootLevel = 0;        // substructuring: shoot from 2^k x 2^k texel blocks
+  bool syncTimings = false;  // exact per-pass times (glFinish at pass ends) instead of GPU stamps
   StopRule stop;
 };
 
@@ -38,9 +40,9 @@ class ProgressiveSolver final : public Solver {
 
   SolverState& state_;
   ProgressiveSettings settings_;
-  gl::Program blockPower_, reduce_, select_, itemBuffer_, gather_;
+  gl::Program reduce_, select_, itemBuffer_, gather_;
   gl::Buffer blocks_, control_, itemVertices_;
-  std::vector<gl::Buffer> levels_;  // reduction levels: entries per block, then per 1024, ...
+  std::vector<gl::Buffer> levels_;  // outputs of the parallel reduction levels (large scenes)
   gl::VertexArray itemVao_;
   gl::Texture itemId_, itemDepth_;
   gl::Framebuffer itemFbo_;
@@ -48,8 +50,7 @@ class ProgressiveSolver final : public Solver {
   unsigned historyCapacity_ = 0;
   SolveStatus status_;
   PassTimings timings_;
-  struct Timers;
-  std::unique_ptr<Timers> timers_;
+  gl::GpuTimer timer_;
 };
 
 }  // namespace hemirad
