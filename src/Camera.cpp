@@ -26,6 +26,9 @@ Camera parseCamera(const std::string& text, const Camera& base, const std::strin
   }
   for (char& c : clean)
     if (c == ',' || c == '\t' || c == '\r') c = ' ';
+  // "eye = 1 2 3" reads as "eye=1 2 3".
+  for (size_t eq; (eq = clean.find(" =")) != std::string::npos;) clean.erase(eq, 1);
+  for (size_t eq; (eq = clean.find("= ")) != std::string::npos;) clean.erase(eq + 1, 1);
   Camera cam = base;
   std::istringstream in(clean);
   std::string token, key;

@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 8));
   s->add_option("--item-res", pr.itemResolution, "Item buffer resolution in pixels (default 512)")
       ->check(CLI::Range(16, 16384));
-  s->add_option("--shoot-level", pr.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 0)")
+  s->add_option("--shoot-level", pr.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 1)")
       ->check(CLI::Range(0, 8));
   s->add_flag("--sync-timings", pr.syncTimings,
               "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)");

@@ -1,0 +1,103 @@
+// The command line: bad input gets one `hemirad: error:` line and exit code 2, and leaves no
+// output behind; runs are deterministic whatever llvmpipe's thread count.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/Support.h"
+
+using namespace hemirad;
+using Catch::Contains;
+
+namespace {
+std::string scene(const std::string& name) { return test::sourcePath("scenes/analytic/" + name); }
+
+int errorLines(const std::string& out) {
+  int n = 0;
+  for (size_t p = 0; (p = out.find("hemirad: error:", p)) != std::string::npos; ++p) ++n;
+  return n;
+}
+
+// Expects exit code 2, exactly one error line containing `message`, and no file at `output`.
+void expectInputError(const std::string& args, const std::string& message, const std::string& output = "") {
+  test::Run run = test::hemirad(args);
+  INFO("hemirad " << args << "\n" << run.output);
+  CHECK(run.exitCode == 2);
+  CHECK(errorLines(run.output) == 1);
+  CHECK_THAT(run.output, Contains(message));
+  if (!output.empty()) CHECK_FALSE(std::filesystem::exists(output));
+}
+
+std::string writeObj(const std::string& name, const std::string& obj, const std::string& mtl) {
+  std::string dir = test::tempPath(name);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/m.mtl") << mtl;
+  std::ofstream(dir + "/s.obj") << obj;
+  return dir + "/s.obj";
+}
+}  // namespace
+
+TEST_CASE("Bad flags and bad scenes exit with code 2 and one error line, writing nothing", "[cli]") {
+  std::string out = test::tempPath("never.exr");
+  const std::string good = scene("parallel_squares.obj");
+  expectInputError("solve /no/such.obj --out " + out, "such.obj", out);
+  expectInputError("solve " + good + " --converge 1.5 --out " + out, "--converge", out);
+  expectInputError("solve " + good + " --shots 0 --out " + out, "--shots", out);
+  expectInputError("solve " + good + " --item-subdiv 99 --out " + out, "--item-subdiv", out);
+  expectInputError("solve " + good + " --texel-size -1 --out " + out, "--texel-size", out);
+  expectInputError("solve " + good + " --texel-size 0.1 --elements 10 --out " + out, "excludes", out);
+  expectInputError("solve " + good + " --backend vulkan --out " + out, "--backend", out);
+  expectInputError("solve " + good + " --camera eye=1,2 --out " + out, "--camera: 'eye' needs three numbers", out);
+  expectInputError("solve " + good + " --out /no/such/folder/x.exr", "--out /no/such/folder/x.exr");
+  expectInputError("frobnicate", "subcommand");
+
+  const std::string mtl = "newmtl lamp\nKe 1 1 1\nnewmtl grey\nKd 0.5 0.5 0.5\n";
+  const std::string quad = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  expectInputError("solve " + writeObj("nomtl", "mtllib x.mtl\n" + quad.substr(13) + "f 1 2 3\n", mtl) + " --out " + out,
+                   "material library 'x.mtl' not found", out);
+  expectInputError("solve " + writeObj("unknown", quad + "usemtl neon\nf 1 2 3\n", mtl) + " --out " + out,
+                   ":6: unknown material 'neon'", out);
+  expectInputError("solve " + writeObj("nan", quad + "v nan 0 0\nusemtl lamp\nf 1 2 5\n", mtl) + " --out " + out,
+                   ":6: vertex coordinate is not a finite number", out);
+  expectInputError("solve " + writeObj("dark", quad + "usemtl grey\nf 1 2 3 4\n", mtl) + " --out " + out,
+                   "no emitter", out);
+  expectInputError("solve " + writeObj("bright", quad + "usemtl grey\nf 1 2 3 4\n", "newmtl grey\nKd 1.2 0 0\nKe 1 1 1\n") +
+                       " --out " + out,
+                   "reflectance Kd 1.2 is >= 1", out);
+  expectInputError("solve " + writeObj("empty", "", mtl) + " --out " + out, "no faces", out);
+}
+
+TEST_CASE("Degenerate faces are skipped with a warning and the solve goes on", "[cli]") {
+  std::string obj = writeObj("degenerate",
+                             "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nusemtl lamp\nf 1 2 3 4\nf 1 2 5\n",
+                             "newmtl lamp\nKe 1 1 1\n");
+  test::Run run = test::hemirad("solve " + obj + " --shots 3 --quiet");
+  INFO(run.output);
+  CHECK(run.exitCode == 0);
+  CHECK_THAT(run.output, Contains("s.obj:9: degenerate face with zero area skipped"));
+}
+
+TEST_CASE("Help lists the solve flags", "[cli]") {
+  test::Run run = test::hemirad("solve --help");
+  CHECK(run.exitCode == 0);
+  for (const char* flag : {"--converge", "--shots", "--item-subdiv", "--item-res", "--texel-size", "--camera",
+                           "--shoot-level", "--report", "--ply", "--atlas", "--image", "--out", "--emission"})
+    CHECK_THAT(run.output, Contains(flag));
+}
+
+TEST_CASE("Solves are bitwise identical across runs and llvmpipe thread counts", "[cli]") {
+  auto hashOf = [](const std::string& env) {
+    std::string report = test::tempPath("det" + std::to_string(std::hash<std::string>{}(env)) + ".json");
+    test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                                      " --elements 3000 --shots 200 --quiet --report " + report,
+                                  env);
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    return nlohmann::json::parse(std::ifstream(report))["radiosity_hash"].get<std::string>();
+  };
+  std::string a = hashOf(""), b = hashOf(""), one = hashOf("LP_NUM_THREADS=1"), three = hashOf("LP_NUM_THREADS=3");
+  CHECK(a == b);
+  CHECK(a == one);
+  CHECK(a == three);
+}

@@ -1,0 +1,60 @@
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "cpu/Hemisphere.h"
+#include "gl/Shader.h"
+#include "tests/Support.h"
+
+using namespace hemirad;
+
+TEST_CASE("Hemispherical projection puts the normal at the centre, theta at radius sin(theta), the horizon on the rim",
+          "[cpu]") {
+  const glm::dvec3 origin(1, 2, 3), n = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
+  glm::dvec3 t, b;
+  cpu::shooterBasis(n, t, b);
+  CHECK(glm::dot(t, b) == Approx(0).margin(1e-12));
+  CHECK(glm::dot(t, n) == Approx(0).margin(1e-12));
+  CHECK(glm::length(glm::cross(t, b) - n) == Approx(0).margin(1e-12));  // right-handed
+  CHECK(glm::length(cpu::hemiProject(cpu::shooterLocal(origin + 5.0 * n, origin, n))) == Approx(0).margin(1e-12));
+  for (double theta : {0.1, 0.5, 1.0, 1.4}) {
+    for (double phi : {0.0, 1.0, 2.5, 4.0}) {
+      glm::dvec3 dir = std::cos(theta) * n + std::sin(theta) * (std::cos(phi) * t + std::sin(phi) * b);
+      glm::dvec2 p = cpu::hemiProject(cpu::shooterLocal(origin + 7.0 * dir, origin, n));
+      CHECK(glm::length(p) == Approx(std::sin(theta)));
+      CHECK(std::atan2(p.y, p.x) == Approx(std::remainder(phi, 2 * M_PI)).margin(1e-9));
+    }
+  }
+  glm::dvec3 horizon = glm::normalize(t + b);
+  CHECK(glm::length(cpu::hemiProject(cpu::shooterLocal(origin + horizon, origin, n))) == Approx(1.0));
+}
+
+TEST_CASE("GLSL hemisphere maths equals its C++ mirror", "[gl]") {
+  test::backend();
+  // A compute shader runs hemisphere.glsl on test directions; the C++ mirror must agree.
+  gl::Program p = gl::computeProgram("hemisphere_probe.comp");
+  std::vector<glm::vec4> in;
+  for (int i = 0; i < 64; ++i) {
+    double theta = 0.02 + 1.5 * i / 64.0, phi = 0.7 * i;
+    in.push_back(glm::vec4(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta), 0));
+  }
+  const glm::vec3 n = glm::normalize(glm::vec3(-0.2f, 0.9f, 0.1f)), origin(3, -1, 2);
+  gl::Buffer inBuf{std::span<const glm::vec4>(in)}, outBuf{in.size() * sizeof(glm::vec4)};
+  inBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  glProgramUniform3f(p.id(), p.location("normal"), n.x, n.y, n.z);
+  glProgramUniform3f(p.id(), p.location("origin"), origin.x, origin.y, origin.z);
+  p.use();
+  gl::Program::dispatch(unsigned(in.size()));
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<glm::vec4> out(in.size());
+  outBuf.read(0, out.size() * sizeof(glm::vec4), out.data());
+  for (size_t i = 0; i < in.size(); ++i) {
+    glm::dvec3 t, b;
+    cpu::shooterBasis(glm::dvec3(n), t, b);
+    glm::dvec3 world = glm::dvec3(origin) + 4.0 * (double(in[i].x) * t + double(in[i].y) * b + double(in[i].z) * glm::dvec3(n));
+    glm::dvec2 expect = cpu::hemiProject(cpu::shooterLocal(world, glm::dvec3(origin), glm::dvec3(n)));
+    CHECK(out[i].x == Approx(expect.x).margin(1e-5));
+    CHECK(out[i].y == Approx(expect.y).margin(1e-5));
+    CHECK(out[i].z == Approx(cpu::discFormFactor(0.8, 0.6, 2.0, 0.5)).epsilon(1e-5));
+  }
+}

@@ -1,0 +1,76 @@
+// What `hemirad solve` writes: images, atlas, PLY mesh and report, checked by reading them back.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "src/Image.h"
+#include "tests/Support.h"
+
+using namespace hemirad;
+using Catch::Contains;
+
+TEST_CASE("solve writes the EXR, PNG, atlas, PLY and report it is asked for", "[gl][cli]") {
+  std::string dir = test::tempPath("outputs");
+  std::filesystem::create_directories(dir);
+  test::Run run = test::hemirad("solve " + test::sourcePath("scenes/analytic/parallel_squares.obj") +
+                                " --texel-size 0.1 --converge 0.5 --width 64 --height 48 --camera eye=0.5,0.5,3,target=0.5,0.5,0"
+                                " --out " + dir + "/v.exr --image " + dir + "/v.png --atlas " + dir + "/a.exr --ply " +
+                                dir + "/m.ply --report " + dir + "/r.json");
+  INFO(run.output);
+  REQUIRE(run.exitCode == 0);
+  nlohmann::json r = nlohmann::json::parse(std::ifstream(dir + "/r.json"));
+  for (const char* key : {"backend", "renderer", "algorithm", "elements", "shots", "convergence", "item_subdivision",
+                          "timings_ms", "objects"})
+    CHECK(r.contains(key));
+  CHECK(r["backend"] == "osmesa");
+  CHECK(r["algorithm"] == "progressive");
+  CHECK(r["elements"] == 200);
+  CHECK(r["convergence"].get<double>() >= 0.5);
+  for (const char* key : {"total", "item_buffer", "gather", "select", "readback"}) CHECK(r["timings_ms"].contains(key));
+  REQUIRE(r["objects"].size() == 2);
+  CHECK(r["objects"][1]["name"] == "receiver");
+  CHECK(r["objects"][1]["area"].get<double>() == Approx(1.0));
+  double receiverB = r["objects"][1]["mean_radiosity"][0];
+  CHECK(receiverB > 0);
+
+  Image view = readImage(dir + "/v.exr"), png = readImage(dir + "/v.png");
+  CHECK(view.width == 64);
+  CHECK(view.height == 48);
+  CHECK(png.width == 64);
+  // The camera looks at the receiver's back through the emitter... from z = 3 it sees the
+  // receiver's back face (z = 1 plane): its pixels carry the receiver's B.
+  float centre = view.rgb[(24 * 64 + 32) * 3];
+  CHECK(centre > 0);
+
+  Image atlas = readImage(dir + "/a.exr");
+  CHECK(atlas.width == r["atlas"]["width"].get<int>());
+  CHECK(atlas.height == r["atlas"]["height"].get<int>());
+
+  std::ifstream ply(dir + "/m.ply", std::ios::binary);
+  std::string line;
+  size_t vertices = 0, faces = 0;
+  while (std::getline(ply, line) && line != "end_header") {
+    std::istringstream ss(line);
+    std::string a, b;
+    size_t n = 0;
+    ss >> a >> b >> n;
+    if (a == "element" && b == "vertex") vertices = n;
+    if (a == "element" && b == "face") faces = n;
+  }
+  CHECK(faces == 200);           // one face per element
+  CHECK(vertices == 2 * 11 * 11);  // a 10 x 10 grid of elements per square, corners shared
+}
+
+TEST_CASE("The shipped Cornell box has about 10,000 elements at the default texel size", "[cpu][cli]") {
+  test::Run run = test::hemirad("info " + test::sourcePath("scenes/cornell/cornell.obj"));
+  REQUIRE(run.exitCode == 0);
+  std::istringstream out(run.output);
+  std::string line;
+  size_t elements = 0;
+  while (std::getline(out, line))
+    if (line.rfind("elements", 0) == 0) elements = std::stoul(line.substr(8));
+  CHECK(elements == Approx(10000).epsilon(0.02));
+  CHECK_THAT(run.output, Contains("warnings     0"));
+}

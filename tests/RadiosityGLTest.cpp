@@ -1,0 +1,165 @@
+#include <catch2/catch.hpp>
+#include <cstring>
+
+#include "cpu/Hemisphere.h"
+#include "src/SceneLoader.h"
+#include "tests/Support.h"
+
+using namespace hemirad;
+
+namespace {
+// A closed unit cube, faces inward, every face emitting E with reflectance rho; face
+// `lampFace` (if any) is instead a black lamp: rho 0, E 1.
+Scene cube(double rho, double E, int lampFace = -1) {
+  Scene s;
+  int wall = test::material(s, rho, E), lamp = test::material(s, 0.0, 1.0), o = s.addObject("box");
+  const glm::dvec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1), O(0.0);
+  const Poly3 faces[6] = {test::rectangle(O, Z, X, 1, 1), test::rectangle(Y, X, Z, 1, 1),   // floor, ceiling
+                          test::rectangle(O, X, Y, 1, 1), test::rectangle(Z, Y, X, 1, 1),   // z = 0, z = 1
+                          test::rectangle(O, Y, Z, 1, 1), test::rectangle(X, Z, Y, 1, 1)};  // x = 0, x = 1
+  for (int i = 0; i < 6; ++i) s.addPolygon(faces[i], i == lampFace ? lamp : wall, o);
+  return s;
+}
+Scene furnace(double rho, double E) { return cube(rho, E); }
+
+// What the disc form factor of DESIGN.md hands on from element `s` in a convex scene (no
+// occlusion): sum over receivers j of F_js A_j / A_s. Exact form factors give 1 in a closed box;
+// the disc approximation gives a little less near edges, which bounds how exactly a furnace can
+// come out.
+double discRowSum(const Scene& scene, const Atlas& a, size_t s) {
+  glm::dvec3 ps(a.positionArea[s]), ns = scene.polygons()[a.polygonOf[s]].normal;
+  double As = a.positionArea[s].w, sum = 0;
+  for (size_t j = 0; j < a.polygonOf.size(); ++j) {
+    if (a.polygonOf[j] == kNoPolygon || a.polygonOf[j] == a.polygonOf[s]) continue;
+    glm::dvec3 d = glm::dvec3(a.positionArea[j]) - ps;
+    double r2 = glm::dot(d, d);
+    glm::dvec3 w = d / std::sqrt(r2);
+    sum += cpu::discFormFactor(glm::dot(ns, w), -glm::dot(scene.polygons()[a.polygonOf[j]].normal, w), r2, As) *
+           a.positionArea[j].w / As;
+  }
+  return sum;
+}
+
+// 1 - sum luminance(dB) A / sum luminance(E) A, from a readback.
+double convergenceOf(const Scene& s, const test::Solved& r) {
+  double unshot = 0, emitted = 0;
+  for (size_t t = 0; t < r.dB.size(); ++t) {
+    if (r.atlas.polygonOf[t] == kNoPolygon) continue;
+    double A = r.atlas.positionArea[t].w;
+    unshot += luminance(glm::dvec3(r.dB[t])) * A;
+    emitted += luminance(s.materials[s.polygons()[r.atlas.polygonOf[t]].material].emission) * A;
+  }
+  return 1 - unshot / emitted;
+}
+}  // namespace
+
+TEST_CASE("Test furnace faces all point into the box", "[cpu]") {
+  Scene s = furnace(0.5, 1.0);
+  for (const auto& p : s.polygons()) {
+    glm::dvec3 c(0.0);
+    for (auto& v : p.vertices) c += v / double(p.vertices.size());
+    CHECK(glm::dot(glm::dvec3(0.5) - c, p.normal) > 0);
+  }
+}
+
+TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho sigma), sigma the disc row sum",
+          "[gl]") {
+  // With exact form factors every element hands on all it shoots (sigma = 1) and B = E / (1 - rho)
+  // everywhere. The disc approximation hands on sigma < 1 (computed here on the CPU), so the
+  // GPU solution must match E / (1 - rho sigma) tightly, and E / (1 - rho) to within what sigma
+  // allows.
+  for (double rho : {0.3, 0.6}) {
+    Scene s = furnace(rho, 1.0);
+    ProgressiveSettings settings;
+    settings.shootLevel = 0;
+    settings.stop.targetConvergence = 0.9995;
+    test::Solved r = test::solve(s, 1.0 / 12, settings);
+    double sigma = 0, area = 0;
+    for (size_t t = 0; t < r.B.size(); ++t)
+      if (r.atlas.polygonOf[t] != kNoPolygon)
+        sigma += discRowSum(s, r.atlas, t) * r.atlas.positionArea[t].w, area += r.atlas.positionArea[t].w;
+    sigma /= area;
+    double mean = test::object(r, "box").mean.x, exact = 1 / (1 - rho), disc = 1 / (1 - rho * sigma);
+    INFO("rho " << rho << ": mean B " << mean << " after " << r.status.shots << " shots; E/(1-rho) " << exact
+                << ", E/(1-rho sigma) " << disc << " with sigma " << sigma);
+    CHECK(mean == Approx(disc).epsilon(0.003));
+    CHECK(mean == Approx(exact).epsilon(0.025));
+  }
+}
+
+TEST_CASE("Energy is conserved: in a closed box every shot delivers what its form factors hand on", "[gl]") {
+  // A black lamp (rho 0, E 1, 100 elements) on the ceiling of a grey box. Lamp elements have the
+  // largest unshot power, so the first 100 shots are exactly the lamp's. Walls hold
+  // B = rho * irradiance, so sum B A / rho is the power received; it must equal what the shots
+  // handed on, sum_s sigma_s E A_s, and come within the disc approximation of the power shot (1).
+  const double rho = 0.5;
+  Scene s = cube(rho, 0.0, 1);
+  ProgressiveSettings settings;
+  settings.shootLevel = 0;  // element by element
+  settings.stop.maxShots = 100;
+  test::Solved r = test::solve(s, 0.1, settings);
+  double received = 0, handedOn = 0, shot = 0;
+  for (size_t t = 0; t < r.B.size(); ++t) {
+    if (r.atlas.polygonOf[t] == kNoPolygon) continue;
+    double A = r.atlas.positionArea[t].w;
+    if (r.atlas.polygonOf[t] == 1) {
+      CHECK(r.dB[t].x == 0.0f);
+      shot += A;
+      handedOn += discRowSum(s, r.atlas, t) * A;
+    } else {
+      received += r.B[t].x * A / rho;
+    }
+  }
+  INFO("shot " << shot << ", handed on " << handedOn << ", received " << received);
+  CHECK(received == Approx(handedOn).epsilon(0.002));
+  CHECK(received == Approx(shot).epsilon(0.02));
+  // Convergence is what is no longer unshot: all that was shot, less rho * received now unshot.
+  CHECK(r.status.convergence == Approx(shot - rho * received).margin(1e-4));
+  CHECK(r.status.convergence == Approx(convergenceOf(s, r)).margin(1e-5));
+}
+
+TEST_CASE("Two solves of the same scene are bitwise identical", "[gl]") {
+  ProgressiveSettings settings;
+  settings.shootLevel = 0;  // element by element
+  settings.stop.targetConvergence = 0.8;
+  Scene s = loadScene(test::sourcePath("scenes/analytic/parallel_squares.obj"));
+  test::Solved a = test::solve(s, 0.05, settings), b = test::solve(s, 0.05, settings);
+  CHECK(a.status.shots == b.status.shots);
+  CHECK(a.hash == b.hash);
+  CHECK(std::memcmp(a.B.data(), b.B.data(), a.B.size() * sizeof(glm::vec4)) == 0);
+}
+
+TEST_CASE("The shooter is the block with the largest unshot power, and --shots stops exactly", "[gl]") {
+  // Two lamps over a floor: the bright one (E 3) shoots all 25 of its elements before the dim one.
+  Scene s;
+  int o = s.addObject("scene");
+  s.addPolygon(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1, 1), test::material(s, 0.5, 0.0), o);
+  s.addPolygon(test::rectangle({0, 1, 0}, {1, 0, 0}, {0, 0, 1}, 0.5, 0.5), test::material(s, 0.0, 1.0), o);
+  s.addPolygon(test::rectangle({0.5, 1, 0.5}, {1, 0, 0}, {0, 0, 1}, 0.5, 0.5), test::material(s, 0.0, 3.0), o);
+  ProgressiveSettings settings;
+  settings.shootLevel = 0;  // element by element
+  settings.stop.maxShots = 25;
+  test::Solved r = test::solve(s, 0.1, settings);
+  CHECK(r.status.shots == 25);
+  int dimUnshot = 0, brightShot = 0;
+  for (size_t t = 0; t < r.dB.size(); ++t) {
+    dimUnshot += r.atlas.polygonOf[t] == 1 && r.dB[t].x == 1.0f;
+    brightShot += r.atlas.polygonOf[t] == 2 && r.dB[t].x == 0.0f;
+  }
+  CHECK(dimUnshot == 25);
+  CHECK(brightShot == 25);
+  CHECK(r.status.convergence == Approx(convergenceOf(s, r)).margin(1e-5));
+}
+
+TEST_CASE("Substructured shooting converges to the per-texel solution", "[gl]") {
+  Scene s = loadScene(test::sourcePath("scenes/analytic/parallel_squares.obj"));
+  ProgressiveSettings fine, coarse;
+  fine.shootLevel = 0;
+  fine.stop.targetConvergence = coarse.stop.targetConvergence = 0.99;
+  coarse.shootLevel = 2;
+  test::Solved a = test::solve(s, 1.0 / 16, fine), b = test::solve(s, 1.0 / 16, coarse);
+  CHECK(b.status.shots < a.status.shots / 8);
+  double ra = test::object(a, "receiver").mean.x, rb = test::object(b, "receiver").mean.x;
+  INFO("per-texel " << ra << " (" << a.status.shots << " shots), 4x4 blocks " << rb << " (" << b.status.shots << ")");
+  CHECK(rb == Approx(ra).epsilon(0.02));
+}

@@ -1,0 +1,73 @@
+#include "tests/Support.h"
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sys/wait.h>
+
+namespace hemirad::test {
+
+Poly3 rectangle(glm::dvec3 o, glm::dvec3 u, glm::dvec3 v, double w, double h) {
+  return {o, o + u * w, o + u * w + v * h, o + v * h};
+}
+
+int material(Scene& scene, double rho, double emission) {
+  return scene.addMaterial({"m" + std::to_string(scene.materials.size()), glm::dvec3(rho), glm::dvec3(emission)});
+}
+
+gl::RenderBackend& backend() {
+  static std::unique_ptr<gl::RenderBackend> b = [] {
+    gl::BackendOptions o;
+    const char* kind = std::getenv("HEMIRAD_TEST_BACKEND");
+    o.kind = kind ? gl::parseBackendKind(kind) : gl::BackendKind::OSMesa;
+    return gl::createBackend(o);
+  }();
+  return *b;
+}
+
+Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings) {
+  backend();
+  Solved out;
+  out.atlas = buildAtlas(scene, texelSize);
+  SolverState state(scene, out.atlas);
+  ProgressiveSolver solver(state, settings);
+  while (!out.status.done) out.status = solver.advance(64);
+  out.B = state.readRadiosity();
+  out.dB = state.readDeltaB();
+  out.objects = objectRadiosity(scene, out.atlas, out.B);
+  out.hash = radiosityHash(out.atlas, out.B);
+  return out;
+}
+
+const ObjectRadiosity& object(const Solved& s, const std::string& name) {
+  for (const auto& o : s.objects)
+    if (o.name == name) return o;
+  throw std::runtime_error("no object " + name);
+}
+
+Run hemirad(const std::string& args, const std::string& env) {
+  std::string cmd = env + " " + HEMIRAD_BINARY + " " + args + " 2>&1";
+  Run run;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return run;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) run.output.append(buf.data(), n);
+  int status = pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+std::string sourcePath(const std::string& relative) { return std::string(HEMIRAD_SOURCE_DIR) + "/" + relative; }
+
+std::string tempPath(const std::string& name) {
+  namespace fs = std::filesystem;
+  fs::path dir = fs::temp_directory_path() / ("hemirad-tests-" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  fs::path p = dir / name;
+  fs::remove_all(p);
+  return p.string();
+}
+
+}  // namespace hemirad::test

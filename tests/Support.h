@@ -1,0 +1,41 @@
+// Shared helpers for the tests: scenes built in code, a GPU solve in one call, and running
+// the hemirad binary.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/Backend.h"
+#include "src/Atlas.h"
+#include "src/ProgressiveSolver.h"
+#include "src/Scene.h"
+
+namespace hemirad::test {
+
+// A w x h rectangle at `origin`, spanned by unit axes u and v; its front faces u x v.
+Poly3 rectangle(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, double w, double h);
+int material(Scene& scene, double rho, double emission);
+
+struct Solved {
+  Atlas atlas;
+  std::vector<glm::vec4> B, dB;
+  SolveStatus status;
+  std::vector<ObjectRadiosity> objects;
+  std::uint64_t hash = 0;
+};
+
+// The backend shared by the [gl] tests (OSMesa; HEMIRAD_TEST_BACKEND=egl picks EGL).
+gl::RenderBackend& backend();
+Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings);
+const ObjectRadiosity& object(const Solved& s, const std::string& name);
+
+struct Run {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+// Runs `hemirad ARGS` through the shell (ARGS as typed), optionally with environment prefix.
+Run hemirad(const std::string& args, const std::string& env = "");
+std::string sourcePath(const std::string& relative);  // a path in the source tree
+std::string tempPath(const std::string& name);        // a fresh path in the test temp folder
+
+}  // namespace hemirad::test
