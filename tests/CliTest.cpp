@@ -101,3 +101,18 @@ TEST_CASE("Solves are bitwise identical across runs and llvmpipe thread counts",
   CHECK(a == one);
   CHECK(a == three);
 }
+
+TEST_CASE("OSMesa and EGL on llvmpipe give bitwise-identical radiosity", "[cli]") {
+  auto run = [](const std::string& backend) {
+    std::string report = test::tempPath("backend-" + backend + ".json");
+    test::Run r = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                                " --elements 3000 --shots 100 --quiet --backend " + backend + " --report " + report);
+    INFO(r.output);
+    REQUIRE(r.exitCode == 0);
+    return nlohmann::json::parse(std::ifstream(report));
+  };
+  nlohmann::json osmesa = run("osmesa"), egl = run("egl");
+  CHECK(osmesa["backend"] == "osmesa");
+  CHECK(egl["backend"] == "egl");
+  CHECK(osmesa["radiosity_hash"] == egl["radiosity_hash"]);
+}

@@ -82,7 +82,7 @@ TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho sig
     double mean = test::object(r, "box").mean.x, exact = 1 / (1 - rho), disc = 1 / (1 - rho * sigma);
     INFO("rho " << rho << ": mean B " << mean << " after " << r.status.shots << " shots; E/(1-rho) " << exact
                 << ", E/(1-rho sigma) " << disc << " with sigma " << sigma);
-    CHECK(mean == Approx(disc).epsilon(0.003));
+    CHECK(mean == Approx(disc).epsilon(0.001));
     CHECK(mean == Approx(exact).epsilon(0.025));
   }
 }
