@@ -66,6 +66,19 @@ void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id_); }
 
 // ---- VertexArray
 VertexArray::VertexArray() { glCreateVertexArrays(1, &id_); }
+void VertexArray::vertexBuffer(const Buffer& buffer, GLsizei stride) {
+  glVertexArrayVertexBuffer(id_, 0, buffer.id(), 0, stride);
+}
+void VertexArray::floatAttribute(GLuint location, GLint components, GLuint offset) {
+  glEnableVertexArrayAttrib(id_, location);
+  glVertexArrayAttribFormat(id_, location, components, GL_FLOAT, GL_FALSE, offset);
+  glVertexArrayAttribBinding(id_, location, 0);
+}
+void VertexArray::uintAttribute(GLuint location, GLuint offset) {
+  glEnableVertexArrayAttrib(id_, location);
+  glVertexArrayAttribIFormat(id_, location, 1, GL_UNSIGNED_INT, offset);
+  glVertexArrayAttribBinding(id_, location, 0);
+}
 void VertexArray::bind() const { glBindVertexArray(id_); }
 
 // ---- Query

@@ -94,6 +94,10 @@ class Framebuffer : public Handle<deleteFramebuffer> {
 class VertexArray : public Handle<deleteVertexArray> {
  public:
   VertexArray();
+  // Vertex buffer binding 0: `buffer` with `stride`; attributes read from it.
+  void vertexBuffer(const Buffer& buffer, GLsizei stride);
+  void floatAttribute(GLuint location, GLint components, GLuint offset);
+  void uintAttribute(GLuint location, GLuint offset);  // one GLuint, not normalised
   void bind() const;
 };
 

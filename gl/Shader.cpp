@@ -38,6 +38,16 @@ void expand(const std::string& name, std::vector<std::string>& names, std::strin
   }
 }
 
+// The info log of a shader or program (getiv/getLog: glGetShaderiv/glGetShaderInfoLog or the program pair).
+template <class GetIv, class GetLog>
+std::string infoLog(GLuint object, GetIv getiv, GetLog getLog) {
+  GLint length = 0;
+  getiv(object, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
+  getLog(object, length, nullptr, log.data());
+  return log.c_str();
+}
+
 std::string legend(const std::vector<std::string>& names) {
   std::string s;
   for (size_t i = 0; i < names.size(); ++i) s += fmt::format("{}{}={}", i ? ", " : "", i, names[i]);
@@ -54,12 +64,9 @@ GLuint compile(GLenum stage, const std::string& file, const Defines& defines) {
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    std::string log = infoLog(shader, glGetShaderiv, glGetShaderInfoLog);
     glDeleteShader(shader);
-    throw Error(fmt::format("shader {} failed to compile (source numbers: {}):\n{}", file, legend(names), log.c_str()));
+    throw Error(fmt::format("shader {} failed to compile (source numbers: {}):\n{}", file, legend(names), log));
   }
   return shader;
 }
@@ -72,12 +79,9 @@ Program link(std::initializer_list<GLuint> shaders, const std::string& what) {
   GLint ok = 0;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<size_t>(length > 0 ? length : 1), '\0');
-    glGetProgramInfoLog(program, length, nullptr, log.data());
+    std::string log = infoLog(program, glGetProgramiv, glGetProgramInfoLog);
     glDeleteProgram(program);
-    throw Error(fmt::format("program {} failed to link:\n{}", what, log.c_str()));
+    throw Error(fmt::format("program {} failed to link:\n{}", what, log));
   }
   return Program(program);
 }

@@ -58,14 +58,9 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   std::vector<ItemVertex> mesh = buildItemMesh(state.scene, settings.itemSubdivision);
   itemVertexCount_ = mesh.size();
   itemVertices_ = gl::Buffer(std::span<const ItemVertex>(mesh));
-  GLuint vao = itemVao_.id();
-  glVertexArrayVertexBuffer(vao, 0, itemVertices_.id(), 0, sizeof(ItemVertex));
-  glEnableVertexArrayAttrib(vao, 0);
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(ItemVertex, x));
-  glVertexArrayAttribBinding(vao, 0, 0);
-  glEnableVertexArrayAttrib(vao, 1);
-  glVertexArrayAttribIFormat(vao, 1, 1, GL_UNSIGNED_INT, offsetof(ItemVertex, polygon));
-  glVertexArrayAttribBinding(vao, 1, 0);
+  itemVao_.vertexBuffer(itemVertices_, sizeof(ItemVertex));
+  itemVao_.floatAttribute(0, 3, offsetof(ItemVertex, x));
+  itemVao_.uintAttribute(1, offsetof(ItemVertex, polygon));
 
   int res = settings.itemResolution;
   itemId_ = gl::Texture(GL_R32UI, res, res);

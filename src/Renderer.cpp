@@ -29,17 +29,10 @@ Renderer::Renderer(const SolverState& state) : state_(state) {
   }
   vertexCount_ = verts.size();
   vertices_ = gl::Buffer(std::span<const CameraVertex>(verts));
-  GLuint vao = vao_.id();
-  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(CameraVertex));
-  glEnableVertexArrayAttrib(vao, 0);
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(CameraVertex, position));
-  glVertexArrayAttribBinding(vao, 0, 0);
-  glEnableVertexArrayAttrib(vao, 1);
-  glVertexArrayAttribFormat(vao, 1, 2, GL_FLOAT, GL_FALSE, offsetof(CameraVertex, atlas));
-  glVertexArrayAttribBinding(vao, 1, 0);
-  glEnableVertexArrayAttrib(vao, 2);
-  glVertexArrayAttribIFormat(vao, 2, 1, GL_UNSIGNED_INT, offsetof(CameraVertex, polygon));
-  glVertexArrayAttribBinding(vao, 2, 0);
+  vao_.vertexBuffer(vertices_, sizeof(CameraVertex));
+  vao_.floatAttribute(0, 3, offsetof(CameraVertex, position));
+  vao_.floatAttribute(1, 2, offsetof(CameraVertex, atlas));
+  vao_.uintAttribute(2, offsetof(CameraVertex, polygon));
 }
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample) {
