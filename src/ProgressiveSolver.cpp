@@ -6,32 +6,16 @@
 
 #include "gl/Debug.h"
 #include "gl/Shader.h"
-#include "src/ItemMesh.h"
+#include "src/Control.h"
 
 namespace hemirad {
 
 namespace {
 
-constexpr std::uint32_t kNoPolygonClear = kNoPolygon;
 constexpr unsigned kGatherGroup = 16;   // gather.comp local size (x and y)
 constexpr unsigned kReduceFold = 1024;  // entries folded per reduce.comp workgroup
 constexpr unsigned kSelectFold = 4096;  // at most this many left for select.comp's one workgroup
 constexpr unsigned kUnlimitedHistory = 1u << 20;
-
-// shaders/control.glsl, std430.
-struct ControlBlock {
-  std::uint32_t gatherDispatch[4];
-  std::uint32_t itemDraw[4];
-  float shooterPositionArea[4];
-  float shooterNormal[4];
-  float shooterDeltaB[4];
-  std::int32_t shooterRect[4];
-  std::uint32_t shooterPolygon, shots, maxShots, done;
-  float targetConvergence, emittedPower, convergence, unshotPower;
-  std::uint32_t historyCapacity, gatherGroupsX, gatherGroupsY, pad0;
-};
-static_assert(sizeof(ControlBlock) == 144);
-constexpr std::size_t kDrawOffset = offsetof(ControlBlock, itemDraw);
 
 enum Slot { kSelect, kItemBuffer, kGather, kSlots };
 
@@ -45,7 +29,6 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   reduce_ = gl::computeProgram("reduce.comp");
   select_ = gl::computeProgram("select.comp");
   gather_ = gl::computeProgram("gather.comp");
-  itemBuffer_ = gl::renderProgram("itembuffer.vert", "itembuffer.frag");
 
   // Shooter blocks and the reduction levels above them.
   std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(settings.shootLevel);
@@ -54,26 +37,14 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   for (unsigned n = unsigned(blockCount_); n > kSelectFold; n = gl::groupsFor(n, kReduceFold))
     levels_.emplace_back(gl::groupsFor(n, kReduceFold) * sizeof(float[4]));
 
-  // Item mesh in a static buffer: position + polygon id.
-  std::vector<ItemVertex> mesh = buildItemMesh(state.scene, settings.itemSubdivision);
-  itemVertexCount_ = mesh.size();
-  itemVertices_ = gl::Buffer(std::span<const ItemVertex>(mesh));
-  itemVao_.vertexBuffer(itemVertices_, sizeof(ItemVertex));
-  itemVao_.floatAttribute(0, 3, offsetof(ItemVertex, x));
-  itemVao_.uintAttribute(1, offsetof(ItemVertex, polygon));
-
-  int res = settings.itemResolution;
-  itemId_ = gl::Texture(GL_R32UI, res, res);
-  itemDepth_ = gl::Texture(GL_DEPTH_COMPONENT32F, res, res);
-  itemFbo_.attach(GL_COLOR_ATTACHMENT0, itemId_);
-  itemFbo_.attach(GL_DEPTH_ATTACHMENT, itemDepth_);
-  itemFbo_.checkComplete("item buffer");
+  itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, settings.itemResolution,
+                                             state.farDistance);
 
   // The control block: stop rule, indirect arguments, convergence history.
   const StopRule& stop = settings.stop;
   historyCapacity_ = stop.maxShots ? stop.maxShots + 1 : kUnlimitedHistory;
   ControlBlock c{};
-  c.itemDraw[0] = std::uint32_t(itemVertexCount_);
+  c.itemDraw[0] = std::uint32_t(itemBuffer_->vertexCount());
   c.maxShots = stop.maxShots;
   c.targetConvergence = float(stop.targetConvergence);
   c.emittedPower = float(state.emittedPower);
@@ -83,9 +54,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   control_ = gl::Buffer(sizeof(ControlBlock) + historyCapacity_ * sizeof(float));
   control_.upload(0, sizeof c, &c);
 
-  float far = float(state.farDistance);
-  itemBuffer_.set("farDistance", far);
-  gather_.set("farDistance", far);
+  gather_.set("farDistance", float(state.farDistance));
   glProgramUniform2i(gather_.id(), gather_.location("atlasSize"), state.atlas.width, state.atlas.height);
   gl::checkErrors("progressive solver setup");
 }
@@ -118,31 +87,11 @@ void ProgressiveSolver::selectPass() {
   glMemoryBarrier(kAllBarriers);
 }
 
-void ProgressiveSolver::itemBufferPass() {
-  const GLuint clearId[4] = {kNoPolygonClear, 0, 0, 0};
-  const float far = 1.0f;
-  glClearNamedFramebufferuiv(itemFbo_.id(), GL_COLOR, 0, clearId);
-  glClearNamedFramebufferfv(itemFbo_.id(), GL_DEPTH, 0, &far);
-  itemFbo_.bind();
-  glViewport(0, 0, settings_.itemResolution, settings_.itemResolution);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);  // every face occludes from both sides
-  glEnable(GL_CLIP_DISTANCE0);
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  control_.bind(GL_DRAW_INDIRECT_BUFFER);
-  itemBuffer_.use();
-  itemVao_.bind();
-  glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(kDrawOffset));
-  glDisable(GL_CLIP_DISTANCE0);
-}
-
 void ProgressiveSolver::gatherPass() {
   state_.bindScene();
   state_.radiosity.bindImage(0, GL_READ_WRITE);
   state_.deltaB.bindImage(1, GL_READ_WRITE);
-  itemId_.bindUnit(2);
-  itemDepth_.bindUnit(3);
+  itemBuffer_->bindForLookup();
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   gather_.use();
   gl::Program::dispatchIndirect(control_, 0);
@@ -154,7 +103,7 @@ SolveStatus ProgressiveSolver::advance(unsigned shots) {
     timer_.mark(kSelect);
     selectPass();
     timer_.mark(kItemBuffer);
-    itemBufferPass();
+    itemBuffer_->render(control_);
     timer_.mark(kGather);
     gatherPass();
   }

@@ -8,6 +8,7 @@
 
 #include "gl/Objects.h"
 #include "gl/Timer.h"
+#include "src/ItemBuffer.h"
 #include "src/Solver.h"
 #include "src/SolverState.h"
 
@@ -29,24 +30,21 @@ class ProgressiveSolver final : public Solver {
   SolveStatus advance(unsigned shots) override;
   const PassTimings& timings() const override { return timings_; }
   std::vector<float> convergenceHistory() const override;
-  std::size_t itemTriangles() const { return itemVertexCount_ / 3; }
+  std::size_t itemTriangles() const { return itemBuffer_->triangles(); }
   std::size_t shooterBlocks() const { return blockCount_; }
 
  private:
   void selectPass();
-  void itemBufferPass();
   void gatherPass();
   SolveStatus readStatus();
 
   SolverState& state_;
   ProgressiveSettings settings_;
-  gl::Program reduce_, select_, itemBuffer_, gather_;
-  gl::Buffer blocks_, control_, itemVertices_;
+  gl::Program reduce_, select_, gather_;
+  gl::Buffer blocks_, control_;
+  std::unique_ptr<ItemBuffer> itemBuffer_;
   std::vector<gl::Buffer> levels_;  // outputs of the parallel reduction levels (large scenes)
-  gl::VertexArray itemVao_;
-  gl::Texture itemId_, itemDepth_;
-  gl::Framebuffer itemFbo_;
-  std::size_t blockCount_ = 0, itemVertexCount_ = 0;
+  std::size_t blockCount_ = 0;
   unsigned historyCapacity_ = 0;
   SolveStatus status_;
   PassTimings timings_;
