@@ -5,6 +5,7 @@
 #include "gl/Backend.h"
 #include "src/Error.h"
 #include "src/Solve.h"
+#include "src/Validate.h"
 
 using namespace hemirad;
 
@@ -70,6 +71,29 @@ int main(int argc, char** argv) {
   i->add_option("--item-subdiv", info.itemSubdivision, "Item-mesh subdivision level to count (default 3)")
       ->check(CLI::Range(0, 8));
 
+  ValidateOptions validate;
+  std::string validateBackend = "osmesa", shooters = "16";
+  CLI::App* v = app.add_subcommand("validate", "Check the GPU item buffer and form factors against the exact CPU reference");
+  addSceneFlags(v, validate.scene, validate.load, validate.discretisation);
+  v->add_option("--levels", validate.levels, "Item-mesh subdivision levels to compare (default 0,1,2,3,4)")
+      ->delimiter(',')
+      ->check(CLI::Range(0, 8));
+  v->add_option("--shooters", shooters, "Shooter elements: a count spread over the scene, or 'all' (default 16)")
+      ->check([](const std::string& s) {
+        if (s == "all") return std::string();
+        try {
+          return std::stoul(s) > 0 && s.find_first_not_of("0123456789") == std::string::npos ? std::string()
+                                                                                              : "must be a count or 'all'";
+        } catch (...) {
+          return std::string("must be a count or 'all'");
+        }
+      });
+  v->add_option("--item-res", validate.itemResolution, "Item buffer resolution in pixels (default 512)")
+      ->check(CLI::Range(16, 16384));
+  v->add_option("--backend", validateBackend, "GL backend: osmesa (default), egl, auto")
+      ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
+  v->add_option("--report", validate.report, "Report (.json)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -89,6 +113,11 @@ int main(int argc, char** argv) {
       solve.backend.kind = gl::parseBackendKind(backend);
       solve.progress = !quiet;
       return runSolve(solve);
+    }
+    if (*v) {
+      validate.backend.kind = gl::parseBackendKind(validateBackend);
+      validate.shooters = shooters == "all" ? std::nullopt : std::optional<std::size_t>(std::stoul(shooters));
+      return runValidate(validate);
     }
     return runInfo(info);
   } catch (const InputError& e) {

@@ -1,0 +1,52 @@
+#include "src/FormFactorProbe.h"
+
+#include <chrono>
+
+#include "gl/Debug.h"
+#include "gl/Shader.h"
+#include "src/Control.h"
+
+namespace hemirad {
+
+FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int resolution)
+    : state_(state),
+      itemBuffer_(state.scene, subdivision, resolution, state.farDistance),
+      program_(gl::computeProgram("formfactor_probe.comp")),
+      control_(sizeof(ControlBlock)),
+      result_(GL_RGBA32F, state.atlas.width, state.atlas.height) {
+  program_.set("farDistance", float(state.farDistance));
+  glProgramUniform2i(program_.id(), program_.location("atlasSize"), state.atlas.width, state.atlas.height);
+}
+
+std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
+  const Atlas& a = state_.atlas;
+  const std::uint32_t polygon = a.polygonOf[s];
+  const glm::dvec3 n = state_.scene.polygons()[polygon].normal;
+  ControlBlock c{};
+  c.itemDraw[0] = std::uint32_t(itemBuffer_.vertexCount());
+  c.itemDraw[1] = 1;
+  for (int k = 0; k < 4; ++k) c.shooterPositionArea[k] = a.positionArea[s][k];
+  c.shooterNormal[0] = float(n.x), c.shooterNormal[1] = float(n.y), c.shooterNormal[2] = float(n.z);
+  c.shooterRect[0] = int(s % a.width), c.shooterRect[1] = int(s / a.width), c.shooterRect[2] = c.shooterRect[3] = 1;
+  c.shooterPolygon = polygon;
+  control_.upload(0, sizeof c, &c);
+
+  glFinish();
+  auto t0 = std::chrono::steady_clock::now();
+  itemBuffer_.render(control_);
+  state_.bindScene();
+  itemBuffer_.bindForLookup();
+  result_.bindImage(0, GL_WRITE_ONLY);
+  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  program_.use();
+  gl::Program::dispatch(gl::groupsFor(unsigned(a.width), 16), gl::groupsFor(unsigned(a.height), 16));
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glFinish();
+  gpuMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<ProbeSample> out(a.polygonOf.size());
+  result_.read(GL_RGBA, GL_FLOAT, out.size() * sizeof(ProbeSample), out.data());
+  gl::checkErrors("form factor probe");
+  return out;
+}
+
+}  // namespace hemirad

@@ -1,0 +1,156 @@
+#include "src/Validate.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "src/AtomicFile.h"
+#include "src/Error.h"
+#include "src/ExactReference.h"
+#include "src/FormFactorProbe.h"
+
+namespace hemirad {
+
+namespace {
+
+double percentile(std::vector<double>& v, double q) {
+  if (v.empty()) return 0;
+  auto k = v.begin() + std::ptrdiff_t(q * double(v.size() - 1) + 0.5);
+  std::nth_element(v.begin(), k, v.end());
+  return *k;
+}
+
+// F_ab over the shooters: shooter element i in a hands on sum_j in b F_ji A_j / A_i (reciprocity
+// of the receiver-to-element form factors); F_ab is the area-weighted mean over a's shooters.
+struct ObjectSums {
+  std::vector<double> shooterArea;            // per object
+  std::vector<std::vector<double>> handedOn;  // [a][b]: sum over a's shooters of A_i F_i->b
+  explicit ObjectSums(size_t objects) : shooterArea(objects, 0.0), handedOn(objects, std::vector<double>(objects, 0.0)) {}
+};
+
+}  // namespace
+
+std::vector<std::size_t> chooseShooters(const Atlas& atlas, std::optional<std::size_t> count) {
+  std::vector<std::size_t> elements;
+  for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
+    if (atlas.polygonOf[t] != kNoPolygon) elements.push_back(t);
+  if (!count || *count >= elements.size()) return elements;
+  std::vector<std::size_t> chosen;
+  for (std::size_t i = 0; i < *count; ++i) chosen.push_back(elements[(2 * i + 1) * elements.size() / (2 * *count)]);
+  return chosen;
+}
+
+Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOptions& o) {
+  Validation v;
+  v.elements = atlas.elements;
+  const std::vector<std::size_t> shooters = chooseShooters(atlas, o.shooters);
+  v.shooters = shooters.size();
+  const size_t objects = scene.objects.size();
+  auto objectOf = [&](std::size_t t) { return scene.polygons()[atlas.polygonOf[t]].object; };
+
+  // The exact side does not depend on L: once per shooter.
+  auto t0 = std::chrono::steady_clock::now();
+  ExactReference exact(scene, atlas);
+  std::vector<std::vector<PairSample>> reference;
+  ObjectSums exactSums(objects);
+  for (std::size_t s : shooters) {
+    reference.push_back(exact.fromShooter(s));
+    double As = atlas.positionArea[s].w;
+    exactSums.shooterArea[objectOf(s)] += As;
+    for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
+      if (reference.back()[t].formFactor > 0)
+        exactSums.handedOn[objectOf(s)][objectOf(t)] += reference.back()[t].formFactor * atlas.positionArea[t].w;
+  }
+  v.exactMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  SolverState state(scene, atlas);
+  ObjectSums gpuSums(objects);
+  for (int level : o.levels) {
+    FormFactorProbe probe(state, level, o.itemResolution);
+    LevelStats st;
+    st.itemSubdivision = level;
+    st.itemTriangles = probe.itemTriangles();
+    std::vector<double> relErrors;
+    std::size_t agree = 0;
+    gpuSums = ObjectSums(objects);
+    for (std::size_t k = 0; k < shooters.size(); ++k) {
+      std::vector<ProbeSample> gpu = probe.fromShooter(shooters[k]);
+      gpuSums.shooterArea[objectOf(shooters[k])] += atlas.positionArea[shooters[k]].w;
+      for (std::size_t t = 0; t < gpu.size(); ++t) {
+        const PairSample& ref = reference[k][t];
+        if (gpu[t].formFactor > 0)
+          gpuSums.handedOn[objectOf(shooters[k])][objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
+        if (!ref.facing) continue;
+        ++st.texelPairs;
+        bool gv = gpu[t].visible > 0.5f;
+        agree += gv == ref.visible;
+        st.falseVisible += gv && !ref.visible;
+        st.falseHidden += !gv && ref.visible;
+        if (ref.formFactor > 0) relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
+      }
+    }
+    st.visibilityAgreement = st.texelPairs ? double(agree) / double(st.texelPairs) : 1.0;
+    st.ffRelErrorMedian = percentile(relErrors, 0.5);
+    st.ffRelErrorP95 = percentile(relErrors, 0.95);
+    st.ffRelErrorMax = relErrors.empty() ? 0 : *std::max_element(relErrors.begin(), relErrors.end());
+    st.gpuMs = probe.gpuMilliseconds();
+    v.levels.push_back(st);
+  }
+  for (size_t a = 0; a < objects; ++a)
+    for (size_t b = 0; b < objects; ++b) {
+      if (exactSums.shooterArea[a] <= 0) continue;
+      v.objectFormFactors.push_back({scene.objects[a].name, scene.objects[b].name,
+                                     exactSums.handedOn[a][b] / exactSums.shooterArea[a],
+                                     gpuSums.handedOn[a][b] / gpuSums.shooterArea[a]});
+    }
+  return v;
+}
+
+int runValidate(const ValidateOptions& o) {
+  if (!o.report.empty()) checkWritable(o.report, "--report");
+  Scene scene = loadScene(o.scene, o.load);
+  for (const auto& w : scene.warnings) warn(w);
+  if (scene.polygons().empty()) fail("{}: the scene has no faces with area", o.scene);
+  auto backend = gl::createBackend(o.backend);
+  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
+  auto t0 = std::chrono::steady_clock::now();
+  Validation v = validate(scene, atlas, o);
+  double totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  fmt::print("{}: {} elements, {} shooters, item buffer {}x{}, exact reference {:.0f} ms\n\n", o.scene, v.elements,
+             v.shooters, o.itemResolution, o.itemResolution, v.exactMs);
+  fmt::print("| L | item triangles | texel pairs | visibility agreement | false visible | false hidden | FF rel. error median | p95 | max | GPU ms |\n");
+  fmt::print("|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const LevelStats& s : v.levels)
+    fmt::print("| {} | {} | {} | {:.5f} | {} | {} | {:.4f} | {:.4f} | {:.3g} | {:.0f} |\n", s.itemSubdivision, s.itemTriangles,
+               s.texelPairs, s.visibilityAgreement, s.falseVisible, s.falseHidden, s.ffRelErrorMedian, s.ffRelErrorP95,
+               s.ffRelErrorMax, s.gpuMs);
+
+  if (!o.report.empty()) {
+    using nlohmann::json;
+    json levels = json::array(), ffs = json::array();
+    for (const LevelStats& s : v.levels)
+      levels.push_back({{"item_subdivision", s.itemSubdivision}, {"item_triangles", s.itemTriangles},
+                        {"texel_pairs", s.texelPairs}, {"visibility_agreement", s.visibilityAgreement},
+                        {"false_visible", s.falseVisible}, {"false_hidden", s.falseHidden},
+                        {"ff_rel_error_median", s.ffRelErrorMedian}, {"ff_rel_error_p95", s.ffRelErrorP95},
+                        {"ff_rel_error_max", s.ffRelErrorMax}, {"gpu_ms", s.gpuMs}});
+    for (const auto& f : v.objectFormFactors) ffs.push_back({{"from", f.from}, {"to", f.to}, {"exact", f.exact}, {"gpu", f.gpu}});
+    json report = {{"scene", o.scene},         {"backend", backend->name()},     {"renderer", backend->renderer()},
+                   {"elements", v.elements},   {"shooters", v.shooters},         {"item_resolution", o.itemResolution},
+                   {"hemisphere", "stereographic"}, {"exact_ms", v.exactMs},     {"total_ms", totalMs},
+                   {"levels", levels},         {"object_form_factors", ffs}};
+    writeAtomically(o.report, [&](const std::string& tmp) {
+      std::ofstream out(tmp);
+      out << report.dump(2) << "\n";
+      if (!out.flush()) fail("{}: write failed", o.report);
+    });
+  }
+  return 0;
+}
+
+}  // namespace hemirad

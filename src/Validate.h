@@ -1,0 +1,48 @@
+// `hemirad validate`: the GPU item buffer and form factors against the exact CPU reference,
+// texel by texel, at several item-mesh subdivision levels L.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/Backend.h"
+#include "src/Solve.h"
+
+namespace hemirad {
+
+struct ValidateOptions {
+  std::string scene;
+  LoadOptions load;
+  Discretisation discretisation;
+  std::vector<int> levels{0, 1, 2, 3, 4};
+  std::optional<std::size_t> shooters = 16;  // nullopt: every element
+  int itemResolution = 512;
+  gl::BackendOptions backend;
+  std::string report;
+};
+
+struct LevelStats {
+  int itemSubdivision = 0;
+  std::size_t itemTriangles = 0, texelPairs = 0, falseVisible = 0, falseHidden = 0;
+  double visibilityAgreement = 0, ffRelErrorMedian = 0, ffRelErrorP95 = 0, ffRelErrorMax = 0, gpuMs = 0;
+};
+
+struct ObjectFormFactor {
+  std::string from, to;
+  double exact = 0, gpu = 0;
+};
+
+struct Validation {
+  std::size_t elements = 0, shooters = 0;
+  double exactMs = 0;
+  std::vector<LevelStats> levels;
+  std::vector<ObjectFormFactor> objectFormFactors;  // gpu at the highest level
+};
+
+// The shooter elements (atlas texels): `count` spread evenly over all elements, or all.
+std::vector<std::size_t> chooseShooters(const Atlas& atlas, std::optional<std::size_t> count);
+// Runs the comparison on the current GL context.
+Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOptions& options);
+int runValidate(const ValidateOptions& options);
+
+}  // namespace hemirad
