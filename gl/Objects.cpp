@@ -29,9 +29,13 @@ void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(targ
 void Buffer::bind(GLenum target) const { glBindBuffer(target, id_); }
 
 // ---- Texture
-Texture::Texture(GLenum internalFormat, int width, int height) : width_(width), height_(height), format_(internalFormat) {
-  glCreateTextures(GL_TEXTURE_2D, 1, &id_);
-  glTextureStorage2D(id_, 1, internalFormat, width, height);
+Texture::Texture(GLenum internalFormat, int width, int height, int layers)
+    : width_(width), height_(height), layers_(layers), format_(internalFormat) {
+  glCreateTextures(layers ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &id_);
+  if (layers)
+    glTextureStorage3D(id_, 1, internalFormat, width, height, layers);
+  else
+    glTextureStorage2D(id_, 1, internalFormat, width, height);
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -54,6 +58,9 @@ void Texture::bindImage(GLuint unit, GLenum access) const {
 Framebuffer::Framebuffer() { glCreateFramebuffers(1, &id_); }
 void Framebuffer::attach(GLenum attachment, const Texture& texture) {
   glNamedFramebufferTexture(id_, attachment, texture.id(), 0);
+}
+void Framebuffer::attachLayer(GLenum attachment, const Texture& texture, int layer) {
+  glNamedFramebufferTextureLayer(id_, attachment, texture.id(), 0, layer);
 }
 void Framebuffer::drawBuffers(std::span<const GLenum> buffers) {
   glNamedFramebufferDrawBuffers(id_, static_cast<GLsizei>(buffers.size()), buffers.data());

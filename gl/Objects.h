@@ -66,8 +66,9 @@ class Buffer : public Handle<deleteBuffer> {
 class Texture : public Handle<deleteTexture> {
  public:
   Texture() = default;
-  // A single-level 2D texture with nearest filtering (texel elements are fetched exactly).
-  Texture(GLenum internalFormat, int width, int height);
+  // A single-level 2D texture with nearest filtering (texel elements are fetched exactly);
+  // with `layers`, a 2D array texture.
+  Texture(GLenum internalFormat, int width, int height, int layers = 0);
   int width() const { return width_; }
   int height() const { return height_; }
   GLenum format() const { return format_; }
@@ -78,7 +79,7 @@ class Texture : public Handle<deleteTexture> {
   void bindImage(GLuint unit, GLenum access) const;
 
  private:
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, layers_ = 0;
   GLenum format_ = 0;
 };
 
@@ -86,6 +87,7 @@ class Framebuffer : public Handle<deleteFramebuffer> {
  public:
   Framebuffer();
   void attach(GLenum attachment, const Texture& texture);
+  void attachLayer(GLenum attachment, const Texture& texture, int layer);
   void drawBuffers(std::span<const GLenum> buffers);
   void checkComplete(const char* what) const;  // throws gl::Error
   void bind() const;

@@ -34,3 +34,50 @@ float discFormFactor(float cosS, float cosR, float r2, float shooterArea) {
 }
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+// ---- Item-buffer projections. The item buffer is a 2D array texture: one layer for the
+// hemisphere, five for the hemicube (HEMICUBE defined), whose side faces use their upper half.
+
+#ifdef HEMICUBE
+// Face f's coordinates (a, b, c) of a shooter-frame point: it looks along +c with a 90-degree
+// field of view, so (a/c, b/c) in [-1, 1]^2. Faces: +z (top), +x, -x, +y, -y.
+vec3 cubeFace(vec3 l, int face) {
+  if (face == 0) return l;
+  if (face == 1) return vec3(l.y, l.z, l.x);
+  if (face == 2) return vec3(-l.y, l.z, -l.x);
+  if (face == 3) return vec3(-l.x, l.z, l.y);
+  return vec3(l.x, l.z, -l.y);
+}
+int cubeFaceOf(vec3 l) {
+  vec3 a = abs(l);
+  if (l.z >= a.x && l.z >= a.y) return 0;
+  if (a.x >= a.y) return l.x >= 0.0 ? 1 : 2;
+  return l.y >= 0.0 ? 3 : 4;
+}
+#endif
+
+// Clip-space position of a shooter-frame point on item-buffer layer `face`; depth is
+// distance / far after the perspective divide, so occlusion is ordered along each ray.
+vec4 itemClipPosition(vec3 local, float farDistance, int face) {
+  float depth = 2.0 * length(local) / farDistance - 1.0;
+#ifdef HEMICUBE
+  vec3 f = cubeFace(local, face);
+  return vec4(f.xy, depth * f.z, f.z);
+#else
+  return vec4(hemiProject(local), depth, 1.0);
+#endif
+}
+
+// The item-buffer texel (x, y, layer) a shooter-frame direction falls in.
+ivec3 itemTexel(vec3 local, ivec2 size) {
+#ifdef HEMICUBE
+  int face = cubeFaceOf(local);
+  vec3 f = cubeFace(local, face);
+  vec2 ndc = f.xy / f.z;
+#else
+  int face = 0;
+  vec2 ndc = hemiProject(local);
+#endif
+  ivec2 pixel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
+  return ivec3(pixel, face);
+}

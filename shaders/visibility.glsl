@@ -1,8 +1,8 @@
 // Visibility of a receiver element from the shooter, looked up in the item buffer.
 // Needs hemisphere.glsl. Texture units 2 (polygon ids) and 3 (depth = distance / far).
 
-layout(binding = 2) uniform usampler2D itemId;
-layout(binding = 3) uniform sampler2D itemDepth;
+layout(binding = 2) uniform usampler2DArray itemId;
+layout(binding = 3) uniform sampler2DArray itemDepth;
 uniform float farDistance;
 
 // The element's centre (`local`: in the shooter's frame) is projected into the item buffer and
@@ -14,11 +14,9 @@ uniform float farDistance;
 //  - otherwise something nearer hides it: hidden.
 // So a partially hidden element is all-or-nothing, decided at its centre.
 float visibility(vec3 local, uint polygon, float elementSize) {
-  ivec2 size = textureSize(itemId, 0);
-  vec2 uv = (hemiProject(local) * 0.5 + 0.5) * vec2(size);
-  ivec2 pixel = clamp(ivec2(floor(uv)), ivec2(0), size - 1);
-  if (texelFetch(itemId, pixel, 0).r == polygon) return 1.0;
-  float seen = texelFetch(itemDepth, pixel, 0).r * farDistance;
+  ivec3 texel = itemTexel(local, textureSize(itemId, 0).xy);
+  if (texelFetch(itemId, texel, 0).r == polygon) return 1.0;
+  float seen = texelFetch(itemDepth, texel, 0).r * farDistance;
   return seen >= length(local) - elementSize ? 1.0 : 0.0;
 }
 

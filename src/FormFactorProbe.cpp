@@ -8,10 +8,10 @@
 
 namespace hemirad {
 
-FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int resolution)
+FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int resolution, Projection projection)
     : state_(state),
-      itemBuffer_(state.scene, subdivision, resolution, state.farDistance),
-      program_(gl::computeProgram("formfactor_probe.comp")),
+      itemBuffer_(state.scene, subdivision, resolution, state.farDistance, projection),
+      program_(gl::computeProgram("formfactor_probe.comp", itemBuffer_.defines())),
       control_(sizeof(ControlBlock)),
       result_(GL_RGBA32F, state.atlas.width, state.atlas.height) {
   program_.set("farDistance", float(state.farDistance));

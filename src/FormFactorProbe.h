@@ -16,7 +16,7 @@ struct ProbeSample {
 
 class FormFactorProbe {
  public:
-  FormFactorProbe(const SolverState& state, int subdivision, int resolution);
+  FormFactorProbe(const SolverState& state, int subdivision, int resolution, Projection projection);
   std::vector<ProbeSample> fromShooter(std::size_t shooterTexel);
   std::size_t itemTriangles() const { return itemBuffer_.triangles(); }
   double gpuMilliseconds() const { return gpuMs_; }  // item buffer + probe, synchronised

@@ -3,34 +3,55 @@
 #include "gl/Shader.h"
 #include "src/Atlas.h"
 #include "src/Control.h"
+#include "src/Error.h"
 #include "src/ItemMesh.h"
+
+#include <cmath>
 
 namespace hemirad {
 
-ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance)
-    : resolution_(resolution),
-      program_(gl::renderProgram("itembuffer.vert", "itembuffer.frag")),
-      id_(GL_R32UI, resolution, resolution),
-      depth_(GL_DEPTH_COMPONENT32F, resolution, resolution) {
+Projection parseProjection(const std::string& name) {
+  if (name == "stereographic" || name == "hemisphere") return Projection::Hemisphere;
+  if (name == "hemicube") return Projection::Hemicube;
+  throw InputError("--hemisphere must be stereographic or hemicube, not '" + name + "'");
+}
+
+std::string projectionName(Projection p) { return p == Projection::Hemicube ? "hemicube" : "stereographic"; }
+
+namespace {
+int faceSide(int resolution, Projection p) {
+  return p == Projection::Hemicube ? std::max(1, int(std::lround(resolution / std::sqrt(3.0)))) : resolution;
+}
+gl::Defines projectionDefines(Projection p) {
+  return p == Projection::Hemicube ? gl::Defines{{"HEMICUBE", "1"}} : gl::Defines{};
+}
+}  // namespace
+
+ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance, Projection projection)
+    : faceResolution_(faceSide(resolution, projection)),
+      defines_(projectionDefines(projection)),
+      program_(gl::renderProgram("itembuffer.vert", "itembuffer.frag", defines_)),
+      id_(GL_R32UI, faceResolution_, faceResolution_, projection == Projection::Hemicube ? 5 : 1),
+      depth_(GL_DEPTH_COMPONENT32F, faceResolution_, faceResolution_, projection == Projection::Hemicube ? 5 : 1) {
   std::vector<ItemVertex> mesh = buildItemMesh(scene, subdivision);
   vertexCount_ = mesh.size();
   vertices_ = gl::Buffer(std::span<const ItemVertex>(mesh));
   vao_.vertexBuffer(vertices_, sizeof(ItemVertex));
   vao_.floatAttribute(0, 3, offsetof(ItemVertex, x));
   vao_.uintAttribute(1, offsetof(ItemVertex, polygon));
-  fbo_.attach(GL_COLOR_ATTACHMENT0, id_);
-  fbo_.attach(GL_DEPTH_ATTACHMENT, depth_);
-  fbo_.checkComplete("item buffer");
+  for (int layer = 0; layer < (projection == Projection::Hemicube ? 5 : 1); ++layer) {
+    gl::Framebuffer& f = faces_.emplace_back();
+    f.attachLayer(GL_COLOR_ATTACHMENT0, id_, layer);
+    f.attachLayer(GL_DEPTH_ATTACHMENT, depth_, layer);
+    f.checkComplete("item buffer");
+  }
   program_.set("farDistance", float(farDistance));
 }
 
 void ItemBuffer::render(const gl::Buffer& control) {
   const GLuint clearId[4] = {kNoPolygon, 0, 0, 0};
   const float far = 1.0f;
-  glClearNamedFramebufferuiv(fbo_.id(), GL_COLOR, 0, clearId);
-  glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far);
-  fbo_.bind();
-  glViewport(0, 0, resolution_, resolution_);
+  glViewport(0, 0, faceResolution_, faceResolution_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // every face occludes from both sides
@@ -39,7 +60,13 @@ void ItemBuffer::render(const gl::Buffer& control) {
   control.bind(GL_DRAW_INDIRECT_BUFFER);
   program_.use();
   vao_.bind();
-  glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(kItemDrawOffset));
+  for (size_t face = 0; face < faces_.size(); ++face) {
+    glClearNamedFramebufferuiv(faces_[face].id(), GL_COLOR, 0, clearId);
+    glClearNamedFramebufferfv(faces_[face].id(), GL_DEPTH, 0, &far);
+    faces_[face].bind();
+    program_.set("face", int(face));
+    glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(kItemDrawOffset));
+  }
   glDisable(GL_CLIP_DISTANCE0);
 }
 

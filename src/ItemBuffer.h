@@ -3,14 +3,29 @@
 // distance / far. The gather and the validation probe look receivers up in it
 // (shaders/visibility.glsl).
 #pragma once
+#include <string>
+#include <vector>
+
 #include "gl/Objects.h"
+#include "gl/Shader.h"
 #include "src/Scene.h"
 
 namespace hemirad {
 
+// Seed 003's single-pass hemispherical projection, or the classic five-face hemicube
+// (Cohen & Greenberg 1985) as the baseline.
+enum class Projection { Hemisphere, Hemicube };
+Projection parseProjection(const std::string& name);  // "stereographic" or "hemicube"
+std::string projectionName(Projection p);
+
 class ItemBuffer {
  public:
-  ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance);
+  // `resolution` is the pixel budget's side: the hemisphere gets resolution^2 pixels, the
+  // hemicube five faces of side resolution / sqrt(3) (top + four half faces = the same budget).
+  ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance,
+             Projection projection = Projection::Hemisphere);
+  // Shader defines that select the projection: every program that looks receivers up needs them.
+  const gl::Defines& defines() const { return defines_; }
   // Draws from the shooter in `control` (SSBO 3), with its indirect draw arguments, so the
   // draw is empty once the GPU's stop rule has fired.
   void render(const gl::Buffer& control);
@@ -18,15 +33,16 @@ class ItemBuffer {
   void bindForLookup() const;
   std::size_t triangles() const { return vertexCount_ / 3; }
   std::size_t vertexCount() const { return vertexCount_; }
-  int resolution() const { return resolution_; }
+  int faceResolution() const { return faceResolution_; }
 
  private:
-  int resolution_;
+  int faceResolution_;
+  gl::Defines defines_;
   gl::Program program_;
   gl::Buffer vertices_;
   gl::VertexArray vao_;
   gl::Texture id_, depth_;
-  gl::Framebuffer fbo_;
+  std::vector<gl::Framebuffer> faces_;  // one per layer
   std::size_t vertexCount_ = 0;
 };
 

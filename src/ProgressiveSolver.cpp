@@ -28,7 +28,6 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
     : state_(state), settings_(settings), timer_(settings.syncTimings) {
   reduce_ = gl::computeProgram("reduce.comp");
   select_ = gl::computeProgram("select.comp");
-  gather_ = gl::computeProgram("gather.comp");
 
   // Shooter blocks and the reduction levels above them.
   std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(settings.shootLevel);
@@ -38,7 +37,8 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
     levels_.emplace_back(gl::groupsFor(n, kReduceFold) * sizeof(float[4]));
 
   itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, settings.itemResolution,
-                                             state.farDistance);
+                                             state.farDistance, settings.projection);
+  gather_ = gl::computeProgram("gather.comp", itemBuffer_->defines());
 
   // The control block: stop rule, indirect arguments, convergence history.
   const StopRule& stop = settings.stop;

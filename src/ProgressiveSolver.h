@@ -16,7 +16,8 @@ namespace hemirad {
 
 struct ProgressiveSettings {
   int itemSubdivision = 3;   // 1-to-4 splits of the item mesh
-  int itemResolution = 512;  // item buffer pixels per side
+  int itemResolution = 512;  // item buffer pixels per side (the pixel budget, for the hemicube too)
+  Projection projection = Projection::Hemisphere;
   int shootLevel = 1;        // substructuring: shoot from 2^k x 2^k texel blocks
   bool syncTimings = false;  // exact per-pass times (glFinish at pass ends) instead of GPU stamps
   StopRule stop;

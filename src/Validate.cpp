@@ -70,7 +70,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
   SolverState state(scene, atlas);
   ObjectSums gpuSums(objects);
   for (int level : o.levels) {
-    FormFactorProbe probe(state, level, o.itemResolution);
+    FormFactorProbe probe(state, level, o.itemResolution, o.projection);
     LevelStats st;
     st.itemSubdivision = level;
     st.itemTriangles = probe.itemTriangles();
@@ -121,8 +121,8 @@ int runValidate(const ValidateOptions& o) {
   Validation v = validate(scene, atlas, o);
   double totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
-  fmt::print("{}: {} elements, {} shooters, item buffer {}x{}, exact reference {:.0f} ms\n\n", o.scene, v.elements,
-             v.shooters, o.itemResolution, o.itemResolution, v.exactMs);
+  fmt::print("{}: {} elements, {} shooters, {} item buffer of {}^2 pixels, exact reference {:.0f} ms\n\n", o.scene,
+             v.elements, v.shooters, projectionName(o.projection), o.itemResolution, v.exactMs);
   fmt::print("| L | item triangles | texel pairs | visibility agreement | false visible | false hidden | FF rel. error median | p95 | max | GPU ms |\n");
   fmt::print("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const LevelStats& s : v.levels)
@@ -142,7 +142,7 @@ int runValidate(const ValidateOptions& o) {
     for (const auto& f : v.objectFormFactors) ffs.push_back({{"from", f.from}, {"to", f.to}, {"exact", f.exact}, {"gpu", f.gpu}});
     json report = {{"scene", o.scene},         {"backend", backend->name()},     {"renderer", backend->renderer()},
                    {"elements", v.elements},   {"shooters", v.shooters},         {"item_resolution", o.itemResolution},
-                   {"hemisphere", "stereographic"}, {"exact_ms", v.exactMs},     {"total_ms", totalMs},
+                   {"hemisphere", projectionName(o.projection)}, {"exact_ms", v.exactMs},     {"total_ms", totalMs},
                    {"levels", levels},         {"object_form_factors", ffs}};
     writeAtomically(o.report, [&](const std::string& tmp) {
       std::ofstream out(tmp);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "gl/Backend.h"
+#include "src/ItemBuffer.h"
 #include "src/Solve.h"
 
 namespace hemirad {
@@ -17,6 +18,7 @@ struct ValidateOptions {
   std::vector<int> levels{0, 1, 2, 3, 4};
   std::optional<std::size_t> shooters = 16;  // nullopt: every element
   int itemResolution = 512;
+  Projection projection = Projection::Hemisphere;
   gl::BackendOptions backend;
   std::string report;
 };

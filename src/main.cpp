@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 8));
   s->add_option("--item-res", pr.itemResolution, "Item buffer resolution in pixels (default 512)")
       ->check(CLI::Range(16, 16384));
+  std::string solveProjection = "stereographic";
+  s->add_option("--hemisphere", solveProjection, "Item buffer: stereographic (seed 003, default) or hemicube")
+      ->check(CLI::IsMember({"stereographic", "hemicube"}));
   s->add_option("--shoot-level", pr.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 1)")
       ->check(CLI::Range(0, 8));
   s->add_flag("--sync-timings", pr.syncTimings,
@@ -90,6 +93,9 @@ int main(int argc, char** argv) {
       });
   v->add_option("--item-res", validate.itemResolution, "Item buffer resolution in pixels (default 512)")
       ->check(CLI::Range(16, 16384));
+  std::string validateProjection = "stereographic";
+  v->add_option("--hemisphere", validateProjection, "Item buffer: stereographic (seed 003) or hemicube, equal pixel budgets")
+      ->check(CLI::IsMember({"stereographic", "hemicube"}));
   v->add_option("--backend", validateBackend, "GL backend: osmesa (default), egl, auto")
       ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
   v->add_option("--report", validate.report, "Report (.json)");
@@ -111,11 +117,13 @@ int main(int argc, char** argv) {
     if (*s) {
       if (!*shots && !*converge) pr.stop.targetConvergence = 0.9;
       solve.backend.kind = gl::parseBackendKind(backend);
+      pr.projection = parseProjection(solveProjection);
       solve.progress = !quiet;
       return runSolve(solve);
     }
     if (*v) {
       validate.backend.kind = gl::parseBackendKind(validateBackend);
+      validate.projection = parseProjection(validateProjection);
       validate.shooters = shooters == "all" ? std::nullopt : std::optional<std::size_t>(std::stoul(shooters));
       return runValidate(validate);
     }
