@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "src/AtomicFile.h"
+#include "src/DenseSolver.h"
+#include "src/ProgressiveSolver.h"
 #include "src/Error.h"
 #include "src/ExactReference.h"
 #include "src/FormFactorProbe.h"
@@ -31,6 +33,45 @@ struct ObjectSums {
   std::vector<std::vector<double>> handedOn;  // [a][b]: sum over a's shooters of A_i F_i->b
   explicit ObjectSums(size_t objects) : shooterArea(objects, 0.0), handedOn(objects, std::vector<double>(objects, 0.0)) {}
 };
+
+// A converged GPU solve (per-element shooting, the finest level asked for) against the dense one.
+void compareSolution(const Scene& scene, const Atlas& atlas, const cpu::ExactVisibility& visibility,
+                     const ValidateOptions& o, Validation& v) {
+  DenseSolution dense = solveDense(scene, atlas, visibility);
+  SolverState state(scene, atlas);
+  ProgressiveSettings settings;
+  settings.itemSubdivision = *std::max_element(o.levels.begin(), o.levels.end());
+  settings.itemResolution = o.itemResolution;
+  settings.projection = o.projection;
+  settings.shootLevel = 0;
+  settings.stop.targetConvergence = o.solutionConvergence;
+  ProgressiveSolver solver(state, settings);
+  SolveStatus status;
+  while (!status.done) status = solver.advance(256);
+  v.solutionShots = status.shots;
+  std::vector<glm::vec4> B = state.readRadiosity();
+  std::vector<SolutionError> errors(scene.objects.size());
+  std::vector<double> area(scene.objects.size(), 0.0);
+  for (std::size_t t = 0; t < B.size(); ++t) {
+    if (atlas.polygonOf[t] == kNoPolygon) continue;
+    size_t obj = size_t(scene.polygons()[atlas.polygonOf[t]].object);
+    double A = atlas.positionArea[t].w, d = luminance(dense.B[t]), g = luminance(glm::dvec3(B[t]));
+    SolutionError& e = errors[obj];
+    area[obj] += A;
+    e.meanDense += d * A;
+    e.meanGpu += g * A;
+    e.rmse += (g - d) * (g - d) * A;
+    e.maxError = std::max(e.maxError, std::abs(g - d));
+  }
+  for (size_t i = 0; i < errors.size(); ++i) {
+    errors[i].object = scene.objects[i].name;
+    if (area[i] <= 0) continue;
+    errors[i].meanDense /= area[i];
+    errors[i].meanGpu /= area[i];
+    errors[i].rmse = std::sqrt(errors[i].rmse / area[i]);
+  }
+  v.solution = errors;
+}
 
 }  // namespace
 
@@ -100,6 +141,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
     st.gpuMs = probe.gpuMilliseconds();
     v.levels.push_back(st);
   }
+  if (o.solution) compareSolution(scene, atlas, exact.visibility(), o, v);
   for (size_t a = 0; a < objects; ++a)
     for (size_t b = 0; b < objects; ++b) {
       if (exactSums.shooterArea[a] <= 0) continue;
@@ -130,6 +172,13 @@ int runValidate(const ValidateOptions& o) {
                s.texelPairs, s.visibilityAgreement, s.falseVisible, s.falseHidden, s.ffRelErrorMedian, s.ffRelErrorP95,
                s.ffRelErrorMax, s.gpuMs);
 
+  if (o.solution) {
+    fmt::print("\nGPU solution ({} shots to convergence {}) against the dense exact solution, luminance of B:\n\n",
+               v.solutionShots, o.solutionConvergence);
+    fmt::print("| object | dense mean | GPU mean | RMSE | max error |\n|---|---|---|---|---|\n");
+    for (const SolutionError& e : v.solution)
+      fmt::print("| {} | {:.5g} | {:.5g} | {:.3g} | {:.3g} |\n", e.object, e.meanDense, e.meanGpu, e.rmse, e.maxError);
+  }
   if (!o.report.empty()) {
     using nlohmann::json;
     json levels = json::array(), ffs = json::array();
@@ -144,6 +193,13 @@ int runValidate(const ValidateOptions& o) {
                    {"elements", v.elements},   {"shooters", v.shooters},         {"item_resolution", o.itemResolution},
                    {"hemisphere", projectionName(o.projection)}, {"exact_ms", v.exactMs},     {"total_ms", totalMs},
                    {"levels", levels},         {"object_form_factors", ffs}};
+    if (o.solution) {
+      json sol = json::array();
+      for (const SolutionError& e : v.solution)
+        sol.push_back({{"object", e.object}, {"mean_dense", e.meanDense}, {"mean_gpu", e.meanGpu}, {"rmse", e.rmse},
+                       {"max_error", e.maxError}});
+      report["solution"] = {{"shots", v.solutionShots}, {"convergence", o.solutionConvergence}, {"objects", sol}};
+    }
     writeAtomically(o.report, [&](const std::string& tmp) {
       std::ofstream out(tmp);
       out << report.dump(2) << "\n";

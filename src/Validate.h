@@ -21,6 +21,8 @@ struct ValidateOptions {
   Projection projection = Projection::Hemisphere;
   gl::BackendOptions backend;
   std::string report;
+  bool solution = false;           // also compare a converged GPU solve with the dense solution
+  double solutionConvergence = 0.999;
 };
 
 struct LevelStats {
@@ -34,11 +36,19 @@ struct ObjectFormFactor {
   double exact = 0, gpu = 0;
 };
 
+// GPU radiosity (converged) against the dense exact solution, per object (luminance of B).
+struct SolutionError {
+  std::string object;
+  double meanDense = 0, meanGpu = 0, rmse = 0, maxError = 0;
+};
+
 struct Validation {
   std::size_t elements = 0, shooters = 0;
   double exactMs = 0;
   std::vector<LevelStats> levels;
   std::vector<ObjectFormFactor> objectFormFactors;  // gpu at the highest level
+  std::vector<SolutionError> solution;              // with ValidateOptions::solution
+  unsigned solutionShots = 0;
 };
 
 // The shooter elements (atlas texels): `count` spread evenly over all elements, or all.

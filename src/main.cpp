@@ -99,6 +99,8 @@ int main(int argc, char** argv) {
   v->add_option("--backend", validateBackend, "GL backend: osmesa (default), egl, auto")
       ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
   v->add_option("--report", validate.report, "Report (.json)");
+  v->add_flag("--solution", validate.solution,
+              "Also compare a converged GPU solution with the dense exact one (up to 5,000 elements)");
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 // the item buffer agrees better with the exact visibility as the item mesh is subdivided.
 #include <catch2/catch.hpp>
 
+#include "src/DenseSolver.h"
 #include "src/ExactReference.h"
 #include "src/SceneLoader.h"
 #include "src/Validate.h"
@@ -77,4 +78,23 @@ TEST_CASE("Hemicube baseline: straight edges stay straight, so it agrees well wi
   CHECK(hemicube.levels[0].visibilityAgreement > 0.99);
   CHECK(hemicube.levels[0].visibilityAgreement > hemisphere.levels[0].visibilityAgreement + 0.03);
   CHECK(hemicube.levels[0].ffRelErrorP95 < 0.01);
+}
+
+TEST_CASE("Dense exact solver: a closed box of emitting grey walls gives B = E / (1 - rho) to 1e-5", "[cpu]") {
+  // From any point inside a closed box the exact form factors to all the other faces' elements
+  // sum to one, so the dense solution is E / (1 - rho) everywhere.
+  Scene s;
+  int m = test::material(s, 0.6, 1.0), o = s.addObject("box");
+  const glm::dvec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1), O(0.0);
+  for (const Poly3& f : {test::rectangle(O, Z, X, 1, 1), test::rectangle(Y, X, Z, 1, 1), test::rectangle(O, X, Y, 1, 1),
+                         test::rectangle(Z, Y, X, 1, 1), test::rectangle(O, Y, Z, 1, 1), test::rectangle(X, Z, Y, 1, 1)})
+    s.addPolygon(f, m, o);
+  Atlas atlas = buildAtlas(s, 1.0 / 8);
+  cpu::ExactVisibility vis(polygonList(s));
+  DenseSolution d = solveDense(s, atlas, vis, 1e-9);
+  double worst = 0;
+  for (std::size_t t = 0; t < d.B.size(); ++t)
+    if (atlas.polygonOf[t] != kNoPolygon) worst = std::max(worst, std::abs(d.B[t].x - 2.5) / 2.5);
+  INFO("iterations " << d.iterations << ", worst relative error " << worst);
+  CHECK(worst < 1e-5);
 }
