@@ -36,6 +36,10 @@ Renderer::Renderer(const SolverState& state) : state_(state) {
 }
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample) {
+  return render(camera, width, height, supersample, state_.radiosity);
+}
+
+Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
   const int s = std::max(1, supersample), w = width * s, h = height * s;
   gl::Texture color(GL_RGBA32F, w, h), depth(GL_DEPTH_COMPONENT32F, w, h);
   gl::Framebuffer fbo;
@@ -55,7 +59,7 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   glDisable(GL_CULL_FACE);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   state_.bindScene();
-  state_.radiosity.bindUnit(2);
+  atlasValues.bindUnit(2);
   program_.set("viewProjection", &vp[0][0]);
   program_.use();
   vao_.bind();

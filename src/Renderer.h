@@ -15,6 +15,8 @@ class Renderer {
   explicit Renderer(const SolverState& state);
   // Renders at supersample x the size and box-filters down (deterministic anti-aliasing).
   Image render(const Camera& camera, int width, int height, int supersample = 2);
+  // The same view of any per-element RGBA32F atlas (e.g. an error map) instead of B.
+  Image render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues);
 
  private:
   const SolverState& state_;

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/AtomicFile.h"
+#include "src/Camera.h"
 #include "src/DenseSolver.h"
 #include "src/ProgressiveSolver.h"
 #include "src/Error.h"
@@ -41,8 +42,8 @@ void compareSolution(const Scene& scene, const Atlas& atlas, const cpu::ExactVis
   SolverState state(scene, atlas);
   ProgressiveSettings settings;
   settings.itemSubdivision = *std::max_element(o.levels.begin(), o.levels.end());
-  settings.itemResolution = o.itemResolution;
-  settings.projection = o.projection;
+  settings.itemResolution = o.itemResolutions.front();
+  settings.projection = o.projections.front();
   settings.shootLevel = 0;
   settings.stop.targetConvergence = o.solutionConvergence;
   ProgressiveSolver solver(state, settings);
@@ -110,36 +111,59 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
 
   SolverState state(scene, atlas);
   ObjectSums gpuSums(objects);
-  for (int level : o.levels) {
-    FormFactorProbe probe(state, level, o.itemResolution, o.projection);
-    LevelStats st;
-    st.itemSubdivision = level;
-    st.itemTriangles = probe.itemTriangles();
-    std::vector<double> relErrors;
-    std::size_t agree = 0;
-    gpuSums = ObjectSums(objects);
-    for (std::size_t k = 0; k < shooters.size(); ++k) {
-      std::vector<ProbeSample> gpu = probe.fromShooter(shooters[k]);
-      gpuSums.shooterArea[objectOf(shooters[k])] += atlas.positionArea[shooters[k]].w;
-      for (std::size_t t = 0; t < gpu.size(); ++t) {
-        const PairSample& ref = reference[k][t];
-        if (gpu[t].formFactor > 0)
-          gpuSums.handedOn[objectOf(shooters[k])][objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
-        if (!ref.facing) continue;
-        ++st.texelPairs;
-        bool gv = gpu[t].visible > 0.5f;
-        agree += gv == ref.visible;
-        st.falseVisible += gv && !ref.visible;
-        st.falseHidden += !gv && ref.visible;
-        if (ref.formFactor > 0) relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
+  std::size_t worstDisagreements = 0;
+  for (Projection projection : o.projections)
+    for (int resolution : o.itemResolutions)
+      for (int level : o.levels) {
+        const bool first = v.levels.empty(), figureConfig = projection == o.projections[0] && resolution == o.itemResolutions[0];
+        FormFactorProbe probe(state, level, resolution, projection);
+        LevelStats st;
+        st.projection = projection;
+        st.itemResolution = resolution;
+        st.itemSubdivision = level;
+        st.itemTriangles = probe.itemTriangles();
+        std::vector<double> relErrors;
+        std::size_t agree = 0;
+        gpuSums = ObjectSums(objects);
+        for (std::size_t k = 0; k < shooters.size(); ++k) {
+          std::vector<ProbeSample> gpu = probe.fromShooter(shooters[k]);
+          gpuSums.shooterArea[objectOf(shooters[k])] += atlas.positionArea[shooters[k]].w;
+          std::size_t disagreements = 0;
+          for (std::size_t t = 0; t < gpu.size(); ++t) {
+            const PairSample& ref = reference[k][t];
+            if (gpu[t].formFactor > 0)
+              gpuSums.handedOn[objectOf(shooters[k])][objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
+            if (!ref.facing) continue;
+            ++st.texelPairs;
+            bool gv = gpu[t].visible > 0.5f;
+            agree += gv == ref.visible;
+            disagreements += gv != ref.visible;
+            st.falseVisible += gv && !ref.visible;
+            st.falseHidden += !gv && ref.visible;
+            if (ref.formFactor > 0)
+              relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
+          }
+          if (first && disagreements > worstDisagreements) worstDisagreements = disagreements, v.figureShooter = k;
+        }
+        st.visibilityAgreement = st.texelPairs ? double(agree) / double(st.texelPairs) : 1.0;
+        st.ffRelErrorMedian = percentile(relErrors, 0.5);
+        st.ffRelErrorP95 = percentile(relErrors, 0.95);
+        st.ffRelErrorMax = relErrors.empty() ? 0 : *std::max_element(relErrors.begin(), relErrors.end());
+        st.gpuMs = probe.gpuMilliseconds();
+        v.levels.push_back(st);
+        // Figure samples: the chosen shooter at the first configuration's lowest and highest level.
+        if (figureConfig && (level == o.levels.front() || level == o.levels.back())) {
+          std::vector<ProbeSample> gpu = probe.fromShooter(shooters[v.figureShooter]);
+          std::vector<ProbeSampleView> view(gpu.size());
+          for (std::size_t t = 0; t < gpu.size(); ++t) view[t] = {gpu[t].visible > 0.5f, gpu[t].formFactor};
+          if (level == o.levels.front()) v.figureGpu.assign(2, view);
+          else v.figureGpu[1] = view;
+        }
       }
-    }
-    st.visibilityAgreement = st.texelPairs ? double(agree) / double(st.texelPairs) : 1.0;
-    st.ffRelErrorMedian = percentile(relErrors, 0.5);
-    st.ffRelErrorP95 = percentile(relErrors, 0.95);
-    st.ffRelErrorMax = relErrors.empty() ? 0 : *std::max_element(relErrors.begin(), relErrors.end());
-    st.gpuMs = probe.gpuMilliseconds();
-    v.levels.push_back(st);
+  if (!v.figureGpu.empty()) {
+    v.figureShooter = shooters[v.figureShooter];
+    const std::vector<PairSample>& ref = reference[size_t(std::find(shooters.begin(), shooters.end(), v.figureShooter) - shooters.begin())];
+    for (const PairSample& p : ref) v.figureExact.push_back({p.facing, p.visible, p.formFactor});
   }
   if (o.solution) compareSolution(scene, atlas, exact.visibility(), o, v);
   for (size_t a = 0; a < objects; ++a)
@@ -152,26 +176,26 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
   return v;
 }
 
+std::string configName(const LevelStats& s) {
+  return fmt::format("{} {}^2", projectionName(s.projection), s.itemResolution);
+}
+
 int runValidate(const ValidateOptions& o) {
   if (!o.report.empty()) checkWritable(o.report, "--report");
+  if (!o.figures.empty()) prepareFigureFolder(o.figures);
   Scene scene = loadScene(o.scene, o.load);
   for (const auto& w : scene.warnings) warn(w);
   if (scene.polygons().empty()) fail("{}: the scene has no faces with area", o.scene);
+  Camera camera = resolveCamera(scene, o.camera);
   auto backend = gl::createBackend(o.backend);
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
   auto t0 = std::chrono::steady_clock::now();
   Validation v = validate(scene, atlas, o);
   double totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
-  fmt::print("{}: {} elements, {} shooters, {} item buffer of {}^2 pixels, exact reference {:.0f} ms\n\n", o.scene,
-             v.elements, v.shooters, projectionName(o.projection), o.itemResolution, v.exactMs);
-  fmt::print("| L | item triangles | texel pairs | visibility agreement | false visible | false hidden | FF rel. error median | p95 | max | GPU ms |\n");
-  fmt::print("|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const LevelStats& s : v.levels)
-    fmt::print("| {} | {} | {} | {:.5f} | {} | {} | {:.4f} | {:.4f} | {:.3g} | {:.0f} |\n", s.itemSubdivision, s.itemTriangles,
-               s.texelPairs, s.visibilityAgreement, s.falseVisible, s.falseHidden, s.ffRelErrorMedian, s.ffRelErrorP95,
-               s.ffRelErrorMax, s.gpuMs);
-
+  fmt::print("{}: {} elements, {} shooters, exact reference {:.0f} ms, total {:.0f} ms\n\n", o.scene, v.elements,
+             v.shooters, v.exactMs, totalMs);
+  fmt::print("{}", levelTable(v));
   if (o.solution) {
     fmt::print("\nGPU solution ({} shots to convergence {}) against the dense exact solution, luminance of B:\n\n",
                v.solutionShots, o.solutionConvergence);
@@ -183,16 +207,16 @@ int runValidate(const ValidateOptions& o) {
     using nlohmann::json;
     json levels = json::array(), ffs = json::array();
     for (const LevelStats& s : v.levels)
-      levels.push_back({{"item_subdivision", s.itemSubdivision}, {"item_triangles", s.itemTriangles},
+      levels.push_back({{"hemisphere", projectionName(s.projection)}, {"item_resolution", s.itemResolution},
+                        {"item_subdivision", s.itemSubdivision}, {"item_triangles", s.itemTriangles},
                         {"texel_pairs", s.texelPairs}, {"visibility_agreement", s.visibilityAgreement},
                         {"false_visible", s.falseVisible}, {"false_hidden", s.falseHidden},
                         {"ff_rel_error_median", s.ffRelErrorMedian}, {"ff_rel_error_p95", s.ffRelErrorP95},
                         {"ff_rel_error_max", s.ffRelErrorMax}, {"gpu_ms", s.gpuMs}});
     for (const auto& f : v.objectFormFactors) ffs.push_back({{"from", f.from}, {"to", f.to}, {"exact", f.exact}, {"gpu", f.gpu}});
-    json report = {{"scene", o.scene},         {"backend", backend->name()},     {"renderer", backend->renderer()},
-                   {"elements", v.elements},   {"shooters", v.shooters},         {"item_resolution", o.itemResolution},
-                   {"hemisphere", projectionName(o.projection)}, {"exact_ms", v.exactMs},     {"total_ms", totalMs},
-                   {"levels", levels},         {"object_form_factors", ffs}};
+    json report = {{"scene", o.scene},         {"backend", backend->name()}, {"renderer", backend->renderer()},
+                   {"elements", v.elements},   {"shooters", v.shooters},     {"exact_ms", v.exactMs},
+                   {"total_ms", totalMs},      {"levels", levels},           {"object_form_factors", ffs}};
     if (o.solution) {
       json sol = json::array();
       for (const SolutionError& e : v.solution)
@@ -206,7 +230,22 @@ int runValidate(const ValidateOptions& o) {
       if (!out.flush()) fail("{}: write failed", o.report);
     });
   }
+  if (!o.figures.empty()) {
+    SolverState state(scene, atlas);
+    writeFigures(o.figures, scene, atlas, state, camera, o, v);
+  }
   return 0;
+}
+
+std::string levelTable(const Validation& v) {
+  std::string out =
+      "| item buffer | L | item triangles | texel pairs | visibility agreement | false visible | false hidden | FF rel. "
+      "error median | p95 | max | GPU ms |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const LevelStats& s : v.levels)
+    out += fmt::format("| {} | {} | {} | {} | {:.5f} | {} | {} | {:.4f} | {:.4f} | {:.3g} | {:.0f} |\n", configName(s),
+                       s.itemSubdivision, s.itemTriangles, s.texelPairs, s.visibilityAgreement, s.falseVisible,
+                       s.falseHidden, s.ffRelErrorMedian, s.ffRelErrorP95, s.ffRelErrorMax, s.gpuMs);
+  return out;
 }
 
 }  // namespace hemirad

@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "gl/Backend.h"
+#include "src/Camera.h"
 #include "src/ItemBuffer.h"
+#include "src/SolverState.h"
 #include "src/Solve.h"
 
 namespace hemirad {
@@ -17,15 +19,19 @@ struct ValidateOptions {
   Discretisation discretisation;
   std::vector<int> levels{0, 1, 2, 3, 4};
   std::optional<std::size_t> shooters = 16;  // nullopt: every element
-  int itemResolution = 512;
-  Projection projection = Projection::Hemisphere;
+  // Every projection at every resolution is one configuration, compared at every level.
+  std::vector<int> itemResolutions{512};
+  std::vector<Projection> projections{Projection::Hemisphere};
   gl::BackendOptions backend;
-  std::string report;
+  std::optional<std::string> camera;  // for the camera-view figures
+  std::string report, figures;
   bool solution = false;           // also compare a converged GPU solve with the dense solution
   double solutionConvergence = 0.999;
 };
 
 struct LevelStats {
+  Projection projection = Projection::Hemisphere;
+  int itemResolution = 0;
   int itemSubdivision = 0;
   std::size_t itemTriangles = 0, texelPairs = 0, falseVisible = 0, falseHidden = 0;
   double visibilityAgreement = 0, ffRelErrorMedian = 0, ffRelErrorP95 = 0, ffRelErrorMax = 0, gpuMs = 0;
@@ -34,6 +40,15 @@ struct LevelStats {
 struct ObjectFormFactor {
   std::string from, to;
   double exact = 0, gpu = 0;
+};
+
+struct PairSampleView {
+  bool facing = false, visible = false;
+  double formFactor = 0;
+};
+struct ProbeSampleView {
+  bool visible = false;
+  double formFactor = 0;
 };
 
 // GPU radiosity (converged) against the dense exact solution, per object (luminance of B).
@@ -49,6 +64,11 @@ struct Validation {
   std::vector<ObjectFormFactor> objectFormFactors;  // gpu at the highest level
   std::vector<SolutionError> solution;              // with ValidateOptions::solution
   unsigned solutionShots = 0;
+  // For the figures: the shooter with the most disagreements at the first configuration's
+  // lowest level, and its exact and GPU samples at that configuration's lowest and highest level.
+  std::size_t figureShooter = 0;
+  std::vector<PairSampleView> figureExact;
+  std::vector<std::vector<ProbeSampleView>> figureGpu;  // [0]: lowest level, [1]: highest
 };
 
 // The shooter elements (atlas texels): `count` spread evenly over all elements, or all.
@@ -56,5 +76,15 @@ std::vector<std::size_t> chooseShooters(const Atlas& atlas, std::optional<std::s
 // Runs the comparison on the current GL context.
 Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOptions& options);
 int runValidate(const ValidateOptions& options);
+
+// The per-level table (markdown), as printed and as written into the figures' summary.
+std::string levelTable(const Validation& v);
+std::string configName(const LevelStats& s);  // "stereographic 512^2"
+
+// validate --figures (src/ValidateFigures.cpp): plots and CSV against L, heat maps on the atlas
+// and in the camera view for the figure shooter, and index.html linking them.
+void prepareFigureFolder(const std::string& dir);
+void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas, const SolverState& state,
+                  const Camera& camera, const ValidateOptions& options, const Validation& v);
 
 }  // namespace hemirad

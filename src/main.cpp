@@ -91,10 +91,15 @@ int main(int argc, char** argv) {
           return std::string("must be a count or 'all'");
         }
       });
-  v->add_option("--item-res", validate.itemResolution, "Item buffer resolution in pixels (default 512)")
+  v->add_option("--item-res", validate.itemResolutions, "Item buffer resolutions (pixel budget side; default 512)")
+      ->delimiter(',')
       ->check(CLI::Range(16, 16384));
-  std::string validateProjection = "stereographic";
-  v->add_option("--hemisphere", validateProjection, "Item buffer: stereographic (seed 003) or hemicube, equal pixel budgets")
+  v->add_option("--figures", validate.figures, "Write plots, CSV, heat maps and index.html into this folder");
+  v->add_option("--camera", validate.camera, "Camera of the view figures (default: SCENE.camera)");
+  std::vector<std::string> validateProjections{"stereographic"};
+  v->add_option("--hemisphere", validateProjections,
+                "Item buffers to compare: stereographic (seed 003), hemicube, or both (equal pixel budgets)")
+      ->delimiter(',')
       ->check(CLI::IsMember({"stereographic", "hemicube"}));
   v->add_option("--backend", validateBackend, "GL backend: osmesa (default), egl, auto")
       ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
@@ -125,7 +130,8 @@ int main(int argc, char** argv) {
     }
     if (*v) {
       validate.backend.kind = gl::parseBackendKind(validateBackend);
-      validate.projection = parseProjection(validateProjection);
+      validate.projections.clear();
+      for (const auto& p : validateProjections) validate.projections.push_back(parseProjection(p));
       validate.shooters = shooters == "all" ? std::nullopt : std::optional<std::size_t>(std::stoul(shooters));
       return runValidate(validate);
     }

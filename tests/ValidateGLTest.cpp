@@ -72,7 +72,7 @@ TEST_CASE("Hemicube baseline: straight edges stay straight, so it agrees well wi
   ValidateOptions o;
   o.levels = {0};
   Validation hemisphere = validate(s, atlas, o);
-  o.projection = Projection::Hemicube;
+  o.projections = {Projection::Hemicube};
   Validation hemicube = validate(s, atlas, o);
   // Measured at L = 0, equal 512^2 budgets: hemisphere 0.932, hemicube 0.996.
   CHECK(hemicube.levels[0].visibilityAgreement > 0.99);

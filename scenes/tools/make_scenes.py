@@ -76,6 +76,46 @@ def cornell(folder):
         fh.write("# Cornell's published camera: 35 mm lens, 25 mm film -> 39.3 degrees.\n"
                  "eye=278,273,-800 target=278,273,0 up=0,1,0 fov=39.3\n")
 
+def subdivide(faces, n):
+    """Splits each planar quad into n x n quads (the thesis's subdivided Cornell boxes)."""
+    out = []
+    for f in faces:
+        a, b, c, d = f
+        def at(u, v):
+            return [a[i] + (b[i] - a[i]) * u + (d[i] - a[i]) * v + (a[i] - b[i] + c[i] - d[i]) * u * v for i in range(3)]
+        for j in range(n):
+            for i in range(n):
+                out.append([at(i / n, j / n), at((i + 1) / n, j / n), at((i + 1) / n, (j + 1) / n), at(i / n, (j + 1) / n)])
+    return out
+
+def cornell_subdivided(folder, n):
+    """The Cornell box with every face split n x n: n^2 times the polygons (and lights)."""
+    src = open("scenes/cornell/cornell.obj").read().splitlines()
+    o = Obj("../cornell/cornell.mtl")
+    verts, name, mtl, faces = [], None, None, []
+    def flush():
+        if name:
+            o.group(name, mtl, subdivide(faces, n))
+    for line in src:
+        t = line.split()
+        if not t or t[0] == "#":
+            continue
+        if t[0] == "v":
+            verts.append([float(x) for x in t[1:4]])
+        elif t[0] == "o":
+            flush()
+            name, faces = t[1], []
+        elif t[0] == "usemtl":
+            mtl = t[1]
+        elif t[0] == "f":
+            faces.append([verts[int(k) - 1] for k in t[1:]])
+    flush()
+    o.write(os.path.join(folder, f"cornell_x{n}.obj"), [
+        f"The Cornell box with every face split {n} x {n} (as the thesis's subdivided environments).",
+        "Written by scenes/tools/make_scenes.py."])
+    with open(os.path.join(folder, f"cornell_x{n}.camera"), "w") as fh:
+        fh.write("eye=278,273,-800 target=278,273,0 up=0,1,0 fov=39.3\n")
+
 def analytic(folder):
     mtl = ("newmtl emitter\nKd 0 0 0\nKe 1 1 1\n\n"
            "newmtl receiver\nKd 0.5 0.5 0.5\n\n"
@@ -105,4 +145,7 @@ if __name__ == "__main__":
     os.makedirs("scenes/cornell", exist_ok=True)
     os.makedirs("scenes/analytic", exist_ok=True)
     cornell("scenes/cornell")
+    os.makedirs("scenes/cornell_subdivided", exist_ok=True)
+    cornell_subdivided("scenes/cornell_subdivided", 2)
+    cornell_subdivided("scenes/cornell_subdivided", 4)
     analytic("scenes/analytic")
