@@ -8,6 +8,14 @@ namespace hemirad::cpu {
 
 using Polygon = std::vector<glm::dvec3>;
 
+// Whether a receiver at pr (normal nr) and a shooter at ps (normal ns) face each other. Cosines
+// under 1e-6 count as coplanar: rounding must not make neighbours on one plane exchange light.
+inline bool facing(const glm::dvec3& ps, const glm::dvec3& ns, const glm::dvec3& pr, const glm::dvec3& nr) {
+  glm::dvec3 d = pr - ps;
+  double len = glm::length(d);
+  return glm::dot(d, ns) > 1e-6 * len && glm::dot(-d, nr) > 1e-6 * len;
+}
+
 // Differential area at p (unit normal n) to a planar polygon, by Lambert's contour formula
 // F = (1 / 2 pi) sum_i theta_i n . (R_i x R_i+1) / |R_i x R_i+1|, after clipping the polygon to the
 // half-space in front of p (the horizon). Only the polygon's front side (counter-clockwise around

@@ -37,8 +37,7 @@ DenseSolution solveDense(const Scene& scene, const Atlas& atlas, const cpu::Exac
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
     for (std::size_t j = 0; j < n; ++j) {
       if (polygon[i] == polygon[j]) continue;
-      glm::dvec3 d = centre[j] - centre[i];
-      if (glm::dot(d, normal[i]) <= 0 || glm::dot(-d, normal[j]) <= 0) continue;
+      if (!cpu::facing(centre[j], normal[j], centre[i], normal[i])) continue;
       if (!visibility.visible(centre[i], polygon[i], centre[j], polygon[j])) continue;
       F[i * n + j] = float(cpu::pointToPolygon(centre[i], normal[i], shape[j], normal[j]));
     }

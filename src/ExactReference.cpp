@@ -26,9 +26,8 @@ std::vector<PairSample> ExactReference::fromShooter(std::size_t s) const {
       std::uint32_t rp = atlas_.polygonOf[t];
       if (rp == kNoPolygon || int(rp) == shooterPolygon) continue;
       const glm::dvec3 pr(atlas_.positionArea[t]), nr = scene_.polygons()[rp].normal;
-      glm::dvec3 d = pr - ps;
       PairSample& p = out[t];
-      p.facing = glm::dot(d, ns) > 0 && glm::dot(-d, nr) > 0;
+      p.facing = cpu::facing(ps, ns, pr, nr);
       if (!p.facing) continue;
       p.visible = visibility_.visible(ps, shooterPolygon, pr, int(rp));
       auto seen = [&](const glm::dvec3& q) { return visibility_.visible(q, shooterPolygon, pr, int(rp)); };

@@ -4,6 +4,7 @@
 
 #include "gl/Backend.h"
 #include "src/Error.h"
+#include "src/Bench.h"
 #include "src/Solve.h"
 #include "src/Validate.h"
 
@@ -107,6 +108,10 @@ int main(int argc, char** argv) {
   v->add_flag("--solution", validate.solution,
               "Also compare a converged GPU solution with the dense exact one (up to 5,000 elements)");
 
+  BenchOptions bench;
+  CLI::App* b = app.add_subcommand("bench", "Time the solver: shots and time to convergence, per-pass split");
+  addBenchFlags(b, bench);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -128,6 +133,7 @@ int main(int argc, char** argv) {
       solve.progress = !quiet;
       return runSolve(solve);
     }
+    if (*b) return runBench(bench);
     if (*v) {
       validate.backend.kind = gl::parseBackendKind(validateBackend);
       validate.projections.clear();

@@ -1,0 +1,139 @@
+#include "src/Bench.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "src/AtomicFile.h"
+#include "src/Error.h"
+#include "src/SceneLoader.h"
+
+namespace hemirad {
+
+namespace {
+
+struct BenchRow {
+  std::string scene;
+  std::size_t elements = 0, itemTriangles = 0;
+  unsigned shots = 0;
+  double convergence = 0, solveMs = 0, msPerShot = 0;
+  PassTimings split;  // ms per shot, synchronised
+  double itemTrianglesPerSecond = 0, gatherUpdatesPerSecond = 0;
+};
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// Runs to the stop rule; returns the wall time of the shots (setup excluded).
+double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveStatus& status) {
+  backend.finish();
+  auto t0 = Clock::now();
+  for (unsigned batch = 1; !status.done; batch = std::min(batch * 2, 1024u)) status = solver.advance(batch);
+  backend.finish();
+  return msSince(t0);
+}
+
+BenchRow benchOne(gl::RenderBackend& backend, const std::string& path, std::size_t elements, const BenchOptions& o) {
+  Scene scene = loadScene(path);
+  validateSolvable(scene);
+  Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, elements), backend.maxTextureSize());
+  BenchRow row;
+  row.scene = path;
+  row.elements = atlas.elements;
+
+  SolverState state(scene, atlas);
+  ProgressiveSettings settings = o.progressive;
+  settings.stop = {0, o.converge};
+  ProgressiveSolver solver(state, settings);
+  SolveStatus status;
+  row.solveMs = runToStop(backend, solver, status);
+  row.shots = status.shots;
+  row.convergence = status.convergence;
+  row.msPerShot = row.shots ? row.solveMs / row.shots : 0;
+  row.itemTriangles = solver.itemTriangles();
+
+  // The split: a fresh solve timed pass by pass (waits at every pass end), over the first shots.
+  SolverState fresh(scene, atlas);
+  settings.syncTimings = true;
+  settings.stop = {std::min(o.splitShots, std::max(row.shots, 1u)), 0};
+  ProgressiveSolver timed(fresh, settings);
+  SolveStatus s2;
+  runToStop(backend, timed, s2);
+  const PassTimings& t = timed.timings();
+  double n = std::max(1u, s2.shots);
+  row.split = {t.itemBuffer / n, t.gather / n, t.select / n, t.readback / n};
+  if (row.split.itemBuffer > 0) row.itemTrianglesPerSecond = double(row.itemTriangles) / (row.split.itemBuffer * 1e-3);
+  if (row.split.gather > 0) row.gatherUpdatesPerSecond = double(row.elements) / (row.split.gather * 1e-3);
+  return row;
+}
+
+}  // namespace
+
+void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
+  cmd->add_option("--scenes", o.scenes, "OBJ scenes (default scenes/cornell/cornell.obj)")->delimiter(',');
+  cmd->add_option("--elements", o.elements, "Element counts to generate each scene at (default 10000,100000)")
+      ->delimiter(',')
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 28));
+  cmd->add_option("--converge", o.converge, "Convergence to time (default 0.9)")->check(CLI::Range(1e-6, 0.999999));
+  cmd->add_option("--shoot-level", o.progressive.shootLevel, "Substructuring level (default 1)")->check(CLI::Range(0, 8));
+  cmd->add_option("--item-subdiv", o.progressive.itemSubdivision, "Item-mesh level L (default 3)")->check(CLI::Range(0, 8));
+  cmd->add_option("--item-res", o.progressive.itemResolution, "Item buffer resolution (default 512)")
+      ->check(CLI::Range(16, 16384));
+  cmd->add_option("--split-shots", o.splitShots, "Shots timed pass by pass for the split (default 64)")
+      ->check(CLI::Range(1u, 1u << 20));
+  cmd->add_option("--backend", o.backendName, "GL backend: osmesa (default), egl, auto")
+      ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
+  cmd->add_option("--gpu", o.backend.gpu, "EGL device index")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--json", o.json, "Write the results as JSON");
+}
+
+int runBench(BenchOptions o) {
+  if (!o.json.empty()) checkWritable(o.json, "--json");
+  o.backend.kind = gl::parseBackendKind(o.backendName);
+  auto backend = gl::createBackend(o.backend);
+  std::time_t now = std::time(nullptr);
+  char date[32];
+  std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
+  fmt::print("hemirad bench, {}, {} ({}), converge {}, shoot level {}, item mesh L{}, item buffer {}^2\n\n", date,
+             backend->name(), backend->renderer(), o.converge, o.progressive.shootLevel, o.progressive.itemSubdivision,
+             o.progressive.itemResolution);
+  fmt::print("| scene | elements | shots | time to {:.0f}% (ms) | ms/shot | item buffer ms | gather ms | select ms | "
+             "item tris | item tris/s | gather texels/s |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+             o.converge * 100);
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& scene : o.scenes)
+    for (std::size_t n : o.elements) {
+      BenchRow r = benchOne(*backend, scene, n, o);
+      fmt::print("| {} | {} | {} | {:.1f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {} | {:.3g} | {:.3g} |\n", r.scene,
+                 r.elements, r.shots, r.solveMs, r.msPerShot, r.split.itemBuffer, r.split.gather, r.split.select,
+                 r.itemTriangles, r.itemTrianglesPerSecond, r.gatherUpdatesPerSecond);
+      std::fflush(stdout);
+      rows.push_back({{"scene", r.scene}, {"elements", r.elements}, {"shots", r.shots}, {"convergence", r.convergence},
+                      {"time_to_converge_ms", r.solveMs}, {"ms_per_shot", r.msPerShot},
+                      {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
+                                             {"select", r.split.select}, {"readback", r.split.readback}}},
+                      {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},
+                      {"gather_texel_updates_per_s", r.gatherUpdatesPerSecond}});
+    }
+  if (!o.json.empty()) {
+    nlohmann::json out = {{"date", date},
+                          {"backend", backend->name()},
+                          {"renderer", backend->renderer()},
+                          {"converge", o.converge},
+                          {"shoot_level", o.progressive.shootLevel},
+                          {"item_subdivision", o.progressive.itemSubdivision},
+                          {"item_resolution", o.progressive.itemResolution},
+                          {"rows", rows}};
+    writeAtomically(o.json, [&](const std::string& tmp) {
+      std::ofstream f(tmp);
+      f << out.dump(2) << "\n";
+      if (!f.flush()) fail("{}: write failed", o.json);
+    });
+  }
+  return 0;
+}
+
+}  // namespace hemirad
