@@ -111,7 +111,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
 
   SolverState state(scene, atlas);
   ObjectSums gpuSums(objects);
-  std::size_t worstDisagreements = 0;
+  double worstError = -1;
   for (Projection projection : o.projections)
     for (int resolution : o.itemResolutions)
       for (int level : o.levels) {
@@ -124,26 +124,28 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
         st.itemTriangles = probe.itemTriangles();
         std::vector<double> relErrors;
         std::size_t agree = 0;
-        gpuSums = ObjectSums(objects);
+        ObjectSums levelSums(objects);
         for (std::size_t k = 0; k < shooters.size(); ++k) {
           std::vector<ProbeSample> gpu = probe.fromShooter(shooters[k]);
-          gpuSums.shooterArea[objectOf(shooters[k])] += atlas.positionArea[shooters[k]].w;
-          std::size_t disagreements = 0;
+          levelSums.shooterArea[objectOf(shooters[k])] += atlas.positionArea[shooters[k]].w;
+          double misplaced = 0;  // form factor the visibility errors add or remove
+          bool seesAnything = false;  // shooters inside closed solids (under a block) never shoot
           for (std::size_t t = 0; t < gpu.size(); ++t) {
             const PairSample& ref = reference[k][t];
             if (gpu[t].formFactor > 0)
-              gpuSums.handedOn[objectOf(shooters[k])][objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
+              levelSums.handedOn[objectOf(shooters[k])][objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
             if (!ref.facing) continue;
             ++st.texelPairs;
             bool gv = gpu[t].visible > 0.5f;
             agree += gv == ref.visible;
-            disagreements += gv != ref.visible;
+            if (gv != ref.visible) misplaced += std::abs(double(gpu[t].formFactor) - ref.formFactor);
+            seesAnything = seesAnything || ref.visible;
             st.falseVisible += gv && !ref.visible;
             st.falseHidden += !gv && ref.visible;
             if (ref.formFactor > 0)
               relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
           }
-          if (first && disagreements > worstDisagreements) worstDisagreements = disagreements, v.figureShooter = k;
+          if (first && seesAnything && misplaced > worstError) worstError = misplaced, v.figureShooter = k;
         }
         st.visibilityAgreement = st.texelPairs ? double(agree) / double(st.texelPairs) : 1.0;
         st.ffRelErrorMedian = percentile(relErrors, 0.5);
@@ -151,6 +153,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
         st.ffRelErrorMax = relErrors.empty() ? 0 : *std::max_element(relErrors.begin(), relErrors.end());
         st.gpuMs = probe.gpuMilliseconds();
         v.levels.push_back(st);
+        if (figureConfig && level == o.levels.back()) gpuSums = levelSums;  // object F: first config, highest L
         // Figure samples: the chosen shooter at the first configuration's lowest and highest level.
         if (figureConfig && (level == o.levels.front() || level == o.levels.back())) {
           std::vector<ProbeSample> gpu = probe.fromShooter(shooters[v.figureShooter]);

@@ -61,11 +61,11 @@ struct Validation {
   std::size_t elements = 0, shooters = 0;
   double exactMs = 0;
   std::vector<LevelStats> levels;
-  std::vector<ObjectFormFactor> objectFormFactors;  // gpu at the highest level
+  std::vector<ObjectFormFactor> objectFormFactors;  // gpu: first configuration, highest level
   std::vector<SolutionError> solution;              // with ValidateOptions::solution
   unsigned solutionShots = 0;
-  // For the figures: the shooter with the most disagreements at the first configuration's
-  // lowest level, and its exact and GPU samples at that configuration's lowest and highest level.
+  // For the figures: the shooter whose visibility errors misplace the most form factor at the
+  // first configuration's lowest level, and its exact and GPU samples at that configuration's lowest and highest level.
   std::size_t figureShooter = 0;
   std::vector<PairSampleView> figureExact;
   std::vector<std::vector<ProbeSampleView>> figureGpu;  // [0]: lowest level, [1]: highest

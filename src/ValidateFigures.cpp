@@ -147,7 +147,7 @@ void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas
       "centres and contour-integral form factors. <a href=\"levels.csv\">levels.csv</a></p>"
       "<h2>Against the item-mesh level L</h2><img src=\"agreement_vs_level.png\"><img src=\"disagreement_vs_level.png\">"
       "<img src=\"ff_error_vs_level.png\"><h2>Per texel, one shooter</h2><p>Shooter element at ({3:.4g}, {4:.4g}, "
-      "{5:.4g}) on {6}, the one with most disagreements at L = {7} ({8}). Colours: light grey visible in both, dark grey "
+      "{5:.4g}) on {6}, the one whose visibility errors misplace the most form factor at L = {7} ({8}). Colours: light grey visible in both, dark grey "
       "hidden in both, <b style=\"color:#e66100\">orange: false visible</b> (GPU sees, exact does not), "
       "<b style=\"color:#0073b3\">blue: false hidden</b>, green: the shooter, black: not facing.</p>"
       "<p>Camera view, L = {7} and L = {9}:</p><img src=\"view_visibility_L{7}.png\" width=\"48%\"> "
