@@ -74,3 +74,37 @@ TEST_CASE("The shipped Cornell box has about 10,000 elements at the default texe
   CHECK(elements == Approx(10000).epsilon(0.02));
   CHECK_THAT(run.output, Contains("warnings     0"));
 }
+
+TEST_CASE("validate writes its report and figures; bench writes its table and JSON", "[gl][cli]") {
+  std::string dir = test::tempPath("validate");
+  test::Run v = test::hemirad("validate " + test::sourcePath("scenes/cornell/cornell.obj") +
+                              " --elements 1500 --levels 0,2 --shooters 4 --hemisphere stereographic,hemicube"
+                              " --report " + dir + ".json --figures " + dir);
+  INFO(v.output);
+  REQUIRE(v.exitCode == 0);
+  nlohmann::json r = nlohmann::json::parse(std::ifstream(dir + ".json"));
+  REQUIRE(r["levels"].size() == 4);  // two projections x two levels
+  for (const char* key : {"item_subdivision", "texel_pairs", "visibility_agreement", "false_visible", "false_hidden",
+                          "ff_rel_error_median", "ff_rel_error_p95", "ff_rel_error_max", "item_triangles", "gpu_ms"})
+    CHECK(r["levels"][0].contains(key));
+  CHECK(r["levels"][3]["hemisphere"] == "hemicube");
+  // Every object holding a shooter, to each of the 8 objects.
+  CHECK(r["object_form_factors"].size() % 8 == 0);
+  CHECK(r["object_form_factors"].size() >= 8);
+  for (const char* f : {"index.html", "levels.csv", "agreement_vs_level.png", "ff_error_vs_level.png",
+                        "atlas_visibility_L0.png", "view_visibility_L2.png", "atlas_ff_error_L2.png"})
+    CHECK(std::filesystem::exists(dir + "/" + f));
+  Image plot = readImage(dir + "/agreement_vs_level.png");
+  CHECK(plot.width == 960);
+
+  std::string json = test::tempPath("bench.json");
+  test::Run b = test::hemirad("bench --scenes " + test::sourcePath("scenes/analytic/parallel_squares.obj") +
+                              " --elements 400 --split-shots 8 --json " + json);
+  INFO(b.output);
+  REQUIRE(b.exitCode == 0);
+  CHECK_THAT(b.output, Contains("| time to 90% (ms) |"));
+  nlohmann::json bj = nlohmann::json::parse(std::ifstream(json));
+  REQUIRE(bj["rows"].size() == 1);
+  CHECK(bj["rows"][0]["convergence"].get<double>() >= 0.9);
+  CHECK(bj["rows"][0]["shots"].get<int>() > 0);
+}
