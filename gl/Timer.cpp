@@ -3,7 +3,8 @@
 namespace hemirad::gl {
 
 void GpuTimer::mark(int slot) {
-  if (synchronous_) {
+  if (mode_ == TimerMode::Off) return;
+  if (mode_ == TimerMode::Synchronous) {
     glFinish();
     cpuMarks_.emplace_back(std::chrono::steady_clock::now(), slot);
     return;

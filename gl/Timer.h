@@ -2,7 +2,7 @@
 // sync points so timing never stalls the pipeline. Drivers that defer work (llvmpipe bins
 // triangles until a flush) stamp a pass when it is queued, not when it runs, so `synchronous`
 // mode instead waits (glFinish) at every boundary and reads the CPU clock: exact per-pass
-// splits at the cost of pipelining.
+// splits at the cost of pipelining. `Off` records nothing: untimed runs pay no query per pass.
 #pragma once
 #include <chrono>
 #include <span>
@@ -13,9 +13,11 @@
 
 namespace hemirad::gl {
 
+enum class TimerMode { Off, Gpu, Synchronous };
+
 class GpuTimer {
  public:
-  explicit GpuTimer(bool synchronous = false) : synchronous_(synchronous) {}
+  explicit GpuTimer(TimerMode mode = TimerMode::Gpu) : mode_(mode) {}
   // Marks the start of pass `slot`; the pass ends at the next mark() or stop().
   void mark(int slot);
   void stop() { mark(-1); }
@@ -23,7 +25,7 @@ class GpuTimer {
   void collect(std::span<double> totals);
 
  private:
-  bool synchronous_;
+  TimerMode mode_;
   std::vector<Query> free_;
   std::vector<std::pair<Query, int>> pending_;  // timestamp, slot it starts (-1: a stop)
   std::vector<std::pair<std::chrono::steady_clock::time_point, int>> cpuMarks_;

@@ -47,6 +47,7 @@ BenchRow benchOne(gl::RenderBackend& backend, const std::string& path, std::size
   SolverState state(scene, atlas);
   ProgressiveSettings settings = o.progressive;
   settings.stop = {0, o.converge};
+  settings.timings = gl::TimerMode::Off;  // the timed run pays for no queries
   ProgressiveSolver solver(state, settings);
   SolveStatus status;
   row.solveMs = runToStop(backend, solver, status);
@@ -57,7 +58,7 @@ BenchRow benchOne(gl::RenderBackend& backend, const std::string& path, std::size
 
   // The split: a fresh solve timed pass by pass (waits at every pass end), over the first shots.
   SolverState fresh(scene, atlas);
-  settings.syncTimings = true;
+  settings.timings = gl::TimerMode::Synchronous;
   settings.stop = {std::min(o.splitShots, std::max(row.shots, 1u)), 0};
   ProgressiveSolver timed(fresh, settings);
   SolveStatus s2;

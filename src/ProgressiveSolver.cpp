@@ -25,7 +25,7 @@ constexpr GLbitfield kAllBarriers = GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IM
 }  // namespace
 
 ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettings& settings)
-    : state_(state), settings_(settings), timer_(settings.syncTimings) {
+    : state_(state), settings_(settings), timer_(settings.timings) {
   reduce_ = gl::computeProgram("reduce.comp");
   select_ = gl::computeProgram("select.comp");
 

@@ -19,7 +19,7 @@ struct ProgressiveSettings {
   int itemResolution = 512;  // item buffer pixels per side (the pixel budget, for the hemicube too)
   Projection projection = Projection::Hemisphere;
   int shootLevel = 1;        // substructuring: shoot from 2^k x 2^k texel blocks
-  bool syncTimings = false;  // exact per-pass times (glFinish at pass ends) instead of GPU stamps
+  gl::TimerMode timings = gl::TimerMode::Gpu;  // per-pass times: GPU stamps, exact (synchronised) or none
   StopRule stop;
 };
 

@@ -50,8 +50,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"stereographic", "hemicube"}));
   s->add_option("--shoot-level", pr.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 1)")
       ->check(CLI::Range(0, 8));
-  s->add_flag("--sync-timings", pr.syncTimings,
-              "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)");
+  s->add_flag_callback(
+      "--sync-timings", [&pr] { pr.timings = gl::TimerMode::Synchronous; },
+      "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)");
   s->add_option("--backend", backend, "GL backend: osmesa (default), egl, auto")
       ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
   s->add_option("--gpu", solve.backend.gpu, "EGL device index")->check(CLI::NonNegativeNumber);
