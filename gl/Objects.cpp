@@ -24,7 +24,6 @@ void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
 void Buffer::read(std::size_t offset, std::size_t bytes, void* out) const {
   glGetNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), out);
 }
-void Buffer::clearZero() { glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr); }
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id_); }
 void Buffer::bind(GLenum target) const { glBindBuffer(target, id_); }
 
@@ -48,7 +47,6 @@ void Texture::read(GLenum format, GLenum type, std::size_t bytes, void* out) con
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glGetTextureImage(id_, 0, format, type, static_cast<GLsizei>(bytes), out);
 }
-void Texture::clear(GLenum format, GLenum type, const void* value) { glClearTexImage(id_, 0, format, type, value); }
 void Texture::bindUnit(GLuint unit) const { glBindTextureUnit(unit, id_); }
 void Texture::bindImage(GLuint unit, GLenum access) const {
   glBindImageTexture(unit, id_, 0, GL_FALSE, 0, access, format_);
@@ -61,9 +59,6 @@ void Framebuffer::attach(GLenum attachment, const Texture& texture) {
 }
 void Framebuffer::attachLayer(GLenum attachment, const Texture& texture, int layer) {
   glNamedFramebufferTextureLayer(id_, attachment, texture.id(), 0, layer);
-}
-void Framebuffer::drawBuffers(std::span<const GLenum> buffers) {
-  glNamedFramebufferDrawBuffers(id_, static_cast<GLsizei>(buffers.size()), buffers.data());
 }
 void Framebuffer::checkComplete(const char* what) const {
   GLenum status = glCheckNamedFramebufferStatus(id_, GL_FRAMEBUFFER);
@@ -89,12 +84,7 @@ void VertexArray::uintAttribute(GLuint location, GLuint offset) {
 void VertexArray::bind() const { glBindVertexArray(id_); }
 
 // ---- Query
-Query::Query(GLenum target) : target_(target) { glCreateQueries(target, 1, &id_); }
-bool Query::available() const {
-  GLuint ready = 0;
-  glGetQueryObjectuiv(id_, GL_QUERY_RESULT_AVAILABLE, &ready);
-  return ready != 0;
-}
+Query::Query(GLenum target) { glCreateQueries(target, 1, &id_); }
 std::uint64_t Query::result() const {
   GLuint64 v = 0;
   glGetQueryObjectui64v(id_, GL_QUERY_RESULT, &v);

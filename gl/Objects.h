@@ -55,7 +55,6 @@ class Buffer : public Handle<deleteBuffer> {
   std::size_t size() const { return size_; }
   void upload(std::size_t offset, std::size_t bytes, const void* data);
   void read(std::size_t offset, std::size_t bytes, void* out) const;
-  void clearZero();
   void bindBase(GLenum target, GLuint index) const;  // SSBO / UBO binding point
   void bind(GLenum target) const;                    // e.g. GL_DISPATCH_INDIRECT_BUFFER
 
@@ -74,7 +73,6 @@ class Texture : public Handle<deleteTexture> {
   GLenum format() const { return format_; }
   void upload(GLenum format, GLenum type, const void* data);
   void read(GLenum format, GLenum type, std::size_t bytes, void* out) const;
-  void clear(GLenum format, GLenum type, const void* value);  // value null = zero
   void bindUnit(GLuint unit) const;
   void bindImage(GLuint unit, GLenum access) const;
 
@@ -88,7 +86,6 @@ class Framebuffer : public Handle<deleteFramebuffer> {
   Framebuffer();
   void attach(GLenum attachment, const Texture& texture);
   void attachLayer(GLenum attachment, const Texture& texture, int layer);
-  void drawBuffers(std::span<const GLenum> buffers);
   void checkComplete(const char* what) const;  // throws gl::Error
   void bind() const;
 };
@@ -106,13 +103,8 @@ class VertexArray : public Handle<deleteVertexArray> {
 class Query : public Handle<deleteQuery> {
  public:
   Query() = default;
-  explicit Query(GLenum target);
-  GLenum target() const { return target_; }
-  bool available() const;
+  explicit Query(GLenum target);  // GL_TIMESTAMP, GL_TIME_ELAPSED, GL_SAMPLES_PASSED...
   std::uint64_t result() const;  // waits if not yet available
-
- private:
-  GLenum target_ = 0;
 };
 
 class Program : public Handle<deleteProgram> {

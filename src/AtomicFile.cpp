@@ -43,4 +43,12 @@ void writeAtomically(const std::string& path, const std::function<void(const std
   }
 }
 
+void writeTextFile(const std::string& path, const std::string& text) {
+  writeAtomically(path, [&](const std::string& tmp) {
+    std::ofstream out(tmp);
+    out << text;
+    if (!out.flush()) fail("{}: write failed", path);
+  });
+}
+
 }  // namespace hemirad

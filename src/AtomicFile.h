@@ -9,6 +9,8 @@ namespace hemirad {
 // Calls write(tmpPath), then renames tmpPath to path. On any exception the temporary file is
 // removed and the error rethrown. Throws InputError if the folder is not writable.
 void writeAtomically(const std::string& path, const std::function<void(const std::string& tmpPath)>& write);
+// Writes `text` to `path` atomically.
+void writeTextFile(const std::string& path, const std::string& text);
 // Fails with InputError naming `flag` now, before hours of solving, if `path` cannot be created.
 void checkWritable(const std::string& path, const std::string& flag);
 

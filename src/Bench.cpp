@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <ctime>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "src/AtomicFile.h"
@@ -128,11 +127,7 @@ int runBench(BenchOptions o) {
                           {"item_subdivision", o.progressive.itemSubdivision},
                           {"item_resolution", o.progressive.itemResolution},
                           {"rows", rows}};
-    writeAtomically(o.json, [&](const std::string& tmp) {
-      std::ofstream f(tmp);
-      f << out.dump(2) << "\n";
-      if (!f.flush()) fail("{}: write failed", o.json);
-    });
+    writeTextFile(o.json, out.dump(2) + "\n");
   }
   return 0;
 }

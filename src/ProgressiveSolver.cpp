@@ -55,6 +55,11 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   control_.upload(0, sizeof c, &c);
 
   gather_.set("farDistance", float(state.farDistance));
+  // select.comp folds what the parallel levels leave: the blocks themselves when there are none.
+  unsigned left = unsigned(blockCount_);
+  for (std::size_t l = 0; l < levels_.size(); ++l) left = gl::groupsFor(left, kReduceFold);
+  select_.set("count", left);
+  select_.set("fromBlocks", int(levels_.empty()));
   glProgramUniform2i(gather_.id(), gather_.location("atlasSize"), state.atlas.width, state.atlas.height);
   gl::checkErrors("progressive solver setup");
 }
@@ -80,9 +85,7 @@ void ProgressiveSolver::selectPass() {
     fromBlocks = false;
   }
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  select_.use();
-  select_.set("count", n);
-  select_.set("fromBlocks", int(fromBlocks));
+  select_.use();  // its count and input kind are fixed per scene: set in the constructor
   gl::Program::dispatch(1);
   glMemoryBarrier(kAllBarriers);
 }

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
 
 #include "src/AtomicFile.h"
 #include "src/Error.h"
@@ -41,11 +40,7 @@ nlohmann::json reportJson(const RunInfo& r) {
 }
 
 void writeReport(const std::string& path, const RunInfo& run) {
-  writeAtomically(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp);
-    out << reportJson(run).dump(2) << "\n";
-    if (!out.flush()) fail("{}: write failed", path);
-  });
+  writeTextFile(path, reportJson(run).dump(2) + "\n");
 }
 
 }  // namespace hemirad

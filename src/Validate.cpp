@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -227,11 +226,7 @@ int runValidate(const ValidateOptions& o) {
                        {"max_error", e.maxError}});
       report["solution"] = {{"shots", v.solutionShots}, {"convergence", o.solutionConvergence}, {"objects", sol}};
     }
-    writeAtomically(o.report, [&](const std::string& tmp) {
-      std::ofstream out(tmp);
-      out << report.dump(2) << "\n";
-      if (!out.flush()) fail("{}: write failed", o.report);
-    });
+    writeTextFile(o.report, report.dump(2) + "\n");
   }
   if (!o.figures.empty()) {
     SolverState state(scene, atlas);

@@ -2,7 +2,6 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
 
 #include "src/AtomicFile.h"
 #include "src/Error.h"
@@ -73,14 +72,6 @@ void writeViewImage(const std::string& path, const SolverState& state, const Cam
   writePng(path, Renderer(state).render(camera, 640, 640, 2, values), 1.0);
 }
 
-void writeText(const std::string& path, const std::string& text) {
-  writeAtomically(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp);
-    out << text;
-    if (!out.flush()) fail("{}: write failed", path);
-  });
-}
-
 }  // namespace
 
 void prepareFigureFolder(const std::string& dir) {
@@ -115,7 +106,7 @@ void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas
     PlotSeries& w = seriesFor(falses, name);
     w.x.push_back(s.itemSubdivision), w.y.push_back(double(s.falseVisible + s.falseHidden) / double(s.texelPairs));
   }
-  writeText(dir + "/levels.csv", csv);
+  writeTextFile(dir + "/levels.csv", csv);
   std::string title = std::filesystem::path(o.scene).filename().string();
   writeLinePlot(dir + "/agreement_vs_level.png",
                 {title + ": item-buffer visibility vs exact (CGAL)", "item-mesh subdivision level L",
@@ -158,7 +149,7 @@ void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas
       title, v.elements, v.shooters, shooter.x, shooter.y, shooter.z,
       scene.objects[size_t(scene.polygons()[atlas.polygonOf[v.figureShooter]].object)].name, low, config, high,
       levelTable(v));
-  writeText(dir + "/index.html", html);
+  writeTextFile(dir + "/index.html", html);
 }
 
 }  // namespace hemirad

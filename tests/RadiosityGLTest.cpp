@@ -163,3 +163,22 @@ TEST_CASE("Substructured shooting converges to the per-texel solution", "[gl]") 
   INFO("per-texel " << ra << " (" << a.status.shots << " shots), 4x4 blocks " << rb << " (" << b.status.shots << ")");
   CHECK(rb == Approx(ra).epsilon(0.02));
 }
+
+TEST_CASE("Scenes with many shooter blocks reduce in parallel levels and pick the same shooters", "[gl]") {
+  // 6,480 blocks at shoot level 0 (over the 4,096 that select.comp folds alone): a lamp of 400
+  // elements at E 3 over a floor of 6,080 must still shoot every lamp element first.
+  Scene s;
+  int o = s.addObject("scene");
+  s.addPolygon(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1, 0.95), test::material(s, 0.5, 0.0), o);
+  s.addPolygon(test::rectangle({0, 1, 0}, {1, 0, 0}, {0, 0, 1}, 0.25, 0.25), test::material(s, 0.0, 3.0), o);
+  ProgressiveSettings settings;
+  settings.shootLevel = 0;
+  settings.itemSubdivision = 1;
+  settings.stop.maxShots = 400;
+  test::Solved r = test::solve(s, 0.0125, settings);
+  REQUIRE(r.atlas.elements == 6480);
+  int lampShot = 0;
+  for (size_t t = 0; t < r.dB.size(); ++t) lampShot += r.atlas.polygonOf[t] == 1 && r.dB[t].x == 0.0f;
+  CHECK(lampShot == 400);
+  CHECK(r.status.convergence == Approx(convergenceOf(s, r)).margin(1e-5));
+}
