@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "gl/Backend.h"
@@ -11,7 +14,12 @@ namespace hemirad::gl {
 
 namespace {
 
-const std::string& fileText(const std::string& name) {
+// HEMIRAD_SHADER_DIR, when set, is searched first: shader work without a rebuild.
+std::string fileText(const std::string& name) {
+  if (const char* dir = std::getenv("HEMIRAD_SHADER_DIR")) {
+    std::ifstream in(std::string(dir) + "/" + name);
+    if (in) return std::string(std::istreambuf_iterator<char>(in), {});
+  }
   const std::string* text = embeddedShader(name);
   if (!text) throw Error(fmt::format("shader file '{}' is not in shaders/", name));
   return *text;

@@ -1,6 +1,7 @@
 // Programs built from shaders/ (embedded at build time). Files carry no #version: the loader
 // prepends `#version 450 core`, the defines and `#line`, and expands `#include "x.glsl"`, so
 // driver logs point at real file lines; a failure names the files and carries the driver log.
+// Files in $HEMIRAD_SHADER_DIR, if set, replace the embedded ones (edit shaders without a rebuild).
 #pragma once
 #include <string>
 #include <utility>

@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 
 #include "cpu/Hemisphere.h"
 #include "gl/Shader.h"
@@ -57,4 +60,23 @@ TEST_CASE("GLSL hemisphere maths equals its C++ mirror", "[gl]") {
     CHECK(out[i].y == Approx(expect.y).margin(1e-5));
     CHECK(out[i].z == Approx(cpu::discFormFactor(0.8, 0.6, 2.0, 0.5)).epsilon(1e-5));
   }
+}
+
+TEST_CASE("A shader that fails to compile is reported with its file names and the driver's log", "[gl]") {
+  test::backend();
+  std::string dir = test::tempPath("shaders");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/broken_probe.comp") << "#include \"hemisphere.glsl\"\nlayout(local_size_x = 1) in;\n"
+                                               "void main() { float x = undefined_thing; }\n";
+  setenv("HEMIRAD_SHADER_DIR", dir.c_str(), 1);
+  try {
+    gl::computeProgram("broken_probe.comp");
+    FAIL("the broken shader compiled");
+  } catch (const gl::Error& e) {
+    std::string what = e.what();
+    CHECK_THAT(what, Catch::Contains("broken_probe.comp"));
+    CHECK_THAT(what, Catch::Contains("1=hemisphere.glsl"));
+    CHECK_THAT(what, Catch::Contains("undefined_thing"));  // the driver's log, naming the culprit
+  }
+  unsetenv("HEMIRAD_SHADER_DIR");
 }
