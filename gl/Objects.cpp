@@ -101,9 +101,5 @@ void Program::set(const char* uniform, const float* mat4) const {
   glProgramUniformMatrix4fv(id_, location(uniform), 1, GL_FALSE, mat4);
 }
 void Program::dispatch(unsigned x, unsigned y, unsigned z) { glDispatchCompute(x, y, z); }
-void Program::dispatchIndirect(const Buffer& args, std::size_t offset) {
-  args.bind(GL_DISPATCH_INDIRECT_BUFFER);
-  glDispatchComputeIndirect(static_cast<GLintptr>(offset));
-}
 
 }  // namespace hemirad::gl

@@ -119,7 +119,6 @@ class Program : public Handle<deleteProgram> {
   void set(const char* uniform, const float* mat4) const;
   // Compute dispatch helpers (the program must be in use).
   static void dispatch(unsigned x, unsigned y = 1, unsigned z = 1);
-  static void dispatchIndirect(const Buffer& args, std::size_t offset);
 };
 
 inline unsigned groupsFor(unsigned items, unsigned groupSize) { return (items + groupSize - 1) / groupSize; }

@@ -1,10 +1,9 @@
-// The solver's state on the GPU: the chosen shooter, the stop rule and the indirect
-// arguments the selection pass writes, so a shot needs no CPU round trip.
-// Mirrored by struct ControlBlock in src/ProgressiveSolver.cpp (std430, 144-byte header).
+// The solver's state on the GPU: the chosen shooter and the stop rule, written by the selection
+// pass, so a shot needs no CPU round trip. Once `done` is set every later pass of the batch
+// returns at once (draws and dispatches stay direct: on NVIDIA, indirect arguments written by
+// the previous pass cost ~1 ms of latency a shot). Mirrored by src/Control.h (std430).
 
 layout(std430, binding = 3) buffer Control {
-  uvec4 gatherDispatch;  // x, y, z groups: zero once done
-  uvec4 itemDraw;        // DrawArraysIndirectCommand: count, instanceCount (0 once done), first, base
   vec4 shooterPositionArea;
   vec4 shooterNormal;
   vec4 shooterDeltaB;    // rgb area-weighted unshot radiosity of the block, a: its power
@@ -18,8 +17,6 @@ layout(std430, binding = 3) buffer Control {
   float convergence;        // after `shots` shots
   float unshotPower;
   uint historyCapacity;
-  uint gatherGroupsX;
-  uint gatherGroupsY;
-  uint pad0;
+  uint pad0, pad1, pad2;
   float history[];          // convergence after k shots, k = 0..shots
 } control;

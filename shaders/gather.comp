@@ -13,7 +13,7 @@ uniform ivec2 atlasSize;
 
 void main() {
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(t, atlasSize))) return;
+  if (control.done != 0u || any(greaterThanEqual(t, atlasSize))) return;  // once stopped, shots are empty
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
   if (polygon == NO_POLYGON) return;
   ivec4 r = control.shooterRect;

@@ -17,4 +17,5 @@ void main() {
   // span the whole disc.
   gl_ClipDistance[0] = local.z - 1e-5 * farDistance;
   vPolygon = polygon;
+  if (control.done != 0u) gl_Position = vec4(0.0, 0.0, 0.0, -1.0);  // once stopped, draw nothing
 }

@@ -1,6 +1,5 @@
 // The last level of the shooter reduction (one workgroup, over the blocks themselves when
-// they are few), then the stop rule, the next shooter and the indirect arguments of this
-// shot's item-buffer draw and gather dispatch.
+// they are few), then the stop rule and the next shooter.
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "reduce_entry.glsl"
@@ -21,8 +20,6 @@ void main() {
               (control.targetConvergence > 0.0 && convergence >= control.targetConvergence);
   if (stop) {
     control.done = 1u;
-    control.gatherDispatch = uvec4(0u, 0u, 0u, 0u);
-    control.itemDraw.y = 0u;
     return;
   }
   // The block shoots from its area-weighted centre with its area-weighted unshot radiosity.
@@ -45,6 +42,4 @@ void main() {
   control.shooterRect = r;
   control.shooterPolygon = polygon;
   control.shots += 1u;
-  control.gatherDispatch = uvec4(control.gatherGroupsX, control.gatherGroupsY, 1u, 0u);
-  control.itemDraw.y = 1u;
 }

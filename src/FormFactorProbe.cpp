@@ -23,8 +23,6 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   const std::uint32_t polygon = a.polygonOf[s];
   const glm::dvec3 n = state_.scene.polygons()[polygon].normal;
   ControlBlock c{};
-  c.itemDraw[0] = std::uint32_t(itemBuffer_.vertexCount());
-  c.itemDraw[1] = 1;
   for (int k = 0; k < 4; ++k) c.shooterPositionArea[k] = a.positionArea[s][k];
   c.shooterNormal[0] = float(n.x), c.shooterNormal[1] = float(n.y), c.shooterNormal[2] = float(n.z);
   c.shooterRect[0] = int(s % a.width), c.shooterRect[1] = int(s / a.width), c.shooterRect[2] = c.shooterRect[3] = 1;

@@ -2,7 +2,6 @@
 
 #include "gl/Shader.h"
 #include "src/Atlas.h"
-#include "src/Control.h"
 #include "src/Error.h"
 #include "src/ItemMesh.h"
 
@@ -57,7 +56,6 @@ void ItemBuffer::render(const gl::Buffer& control) {
   glDisable(GL_CULL_FACE);  // every face occludes from both sides
   glEnable(GL_CLIP_DISTANCE0);
   control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  control.bind(GL_DRAW_INDIRECT_BUFFER);
   program_.use();
   vao_.bind();
   for (size_t face = 0; face < faces_.size(); ++face) {
@@ -65,7 +63,7 @@ void ItemBuffer::render(const gl::Buffer& control) {
     glClearNamedFramebufferfv(faces_[face].id(), GL_DEPTH, 0, &far);
     faces_[face].bind();
     program_.set("face", int(face));
-    glDrawArraysIndirect(GL_TRIANGLES, reinterpret_cast<const void*>(kItemDrawOffset));
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertexCount_));
   }
   glDisable(GL_CLIP_DISTANCE0);
 }

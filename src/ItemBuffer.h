@@ -26,8 +26,8 @@ class ItemBuffer {
              Projection projection = Projection::Hemisphere);
   // Shader defines that select the projection: every program that looks receivers up needs them.
   const gl::Defines& defines() const { return defines_; }
-  // Draws from the shooter in `control` (SSBO 3), with its indirect draw arguments, so the
-  // draw is empty once the GPU's stop rule has fired.
+  // Draws from the shooter in `control` (SSBO 3); every triangle is clipped away once the
+  // GPU's stop rule has fired.
   void render(const gl::Buffer& control);
   // Binds the id and depth targets to texture units 2 and 3.
   void bindForLookup() const;

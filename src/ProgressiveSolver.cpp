@@ -19,8 +19,8 @@ constexpr unsigned kUnlimitedHistory = 1u << 20;
 
 enum Slot { kSelect, kItemBuffer, kGather, kSlots };
 
-constexpr GLbitfield kAllBarriers = GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                                    GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
+constexpr GLbitfield kAllBarriers =
+    GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
 
 }  // namespace
 
@@ -40,17 +40,14 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
                                              state.farDistance, settings.projection);
   gather_ = gl::computeProgram("gather.comp", itemBuffer_->defines());
 
-  // The control block: stop rule, indirect arguments, convergence history.
+  // The control block: stop rule, convergence history.
   const StopRule& stop = settings.stop;
   historyCapacity_ = stop.maxShots ? stop.maxShots + 1 : kUnlimitedHistory;
   ControlBlock c{};
-  c.itemDraw[0] = std::uint32_t(itemBuffer_->vertexCount());
   c.maxShots = stop.maxShots;
   c.targetConvergence = float(stop.targetConvergence);
   c.emittedPower = float(state.emittedPower);
   c.historyCapacity = historyCapacity_;
-  c.gatherGroupsX = gl::groupsFor(unsigned(state.atlas.width), kGatherGroup);
-  c.gatherGroupsY = gl::groupsFor(unsigned(state.atlas.height), kGatherGroup);
   control_ = gl::Buffer(sizeof(ControlBlock) + historyCapacity_ * sizeof(float));
   control_.upload(0, sizeof c, &c);
 
@@ -97,7 +94,8 @@ void ProgressiveSolver::gatherPass() {
   itemBuffer_->bindForLookup();
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   gather_.use();
-  gl::Program::dispatchIndirect(control_, 0);
+  gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
+                        gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));
   glMemoryBarrier(kAllBarriers);
 }
 

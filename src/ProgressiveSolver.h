@@ -1,8 +1,8 @@
 // Progressive-refinement radiosity on the GPU (seed 003): per shot, a reduction picks the
 // block with the largest unshot power, the item mesh is rasterised into a hemispherical item
-// buffer from it, and a compute pass gathers the shot into every receiver texel. The choice,
-// the stop rule and the indirect arguments stay on the GPU: the CPU only enqueues shots and
-// reads a small status block between batches.
+// buffer from it, and a compute pass gathers the shot into every receiver texel. The choice and
+// the stop rule stay on the GPU: the CPU only enqueues shots and reads a small status block
+// between batches.
 #pragma once
 #include <memory>
 
