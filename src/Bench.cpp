@@ -8,6 +8,9 @@
 
 #include "src/AtomicFile.h"
 #include "src/Error.h"
+#include "gl/Shader.h"
+#include "src/Control.h"
+#include "src/ItemBuffer.h"
 #include "src/SceneLoader.h"
 
 namespace hemirad {
@@ -70,6 +73,55 @@ BenchRow benchOne(gl::RenderBackend& backend, const std::string& path, std::size
   return row;
 }
 
+// The device's ceilings for this kind of work: invocations/s of a load-and-store kernel over a
+// 4096^2 RGBA32F image, and triangles/s of the item buffer drawing the first scene's item mesh
+// at L = 6 (155,648 triangles for the Cornell box) from the middle of its top, facing down.
+// Best of 5 timed repetitions after a warm-up.
+struct Ceilings {
+  double invocationsPerSecond = 0, trianglesPerSecond = 0;
+};
+
+Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePath) {
+  Ceilings c;
+  const int side = 4096, repeats = 5;
+  gl::Texture values(GL_RGBA32F, side, side);
+  gl::Program kernel = gl::computeProgram("ceiling.comp");
+  kernel.use();
+  values.bindImage(0, GL_READ_WRITE);
+  double best = 1e300;
+  for (int r = 0; r <= repeats; ++r) {
+    backend.finish();
+    auto t0 = Clock::now();
+    for (int k = 0; k < 10; ++k) {
+      gl::Program::dispatch(side / 16, side / 16);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+    backend.finish();
+    if (r > 0) best = std::min(best, msSince(t0));
+  }
+  c.invocationsPerSecond = 10.0 * side * side / (best * 1e-3);
+
+  Scene scene = loadScene(scenePath);
+  ItemBuffer items(scene, 6, 512, 2.0 * glm::length(scene.boundsMax() - scene.boundsMin()));
+  ControlBlock control{};
+  glm::dvec3 lo = scene.boundsMin(), hi = scene.boundsMax();
+  control.shooterPositionArea[0] = float(0.5 * (lo.x + hi.x));  // the ceiling's centre, facing down
+  control.shooterPositionArea[1] = float(hi.y - 1e-3 * (hi.y - lo.y));
+  control.shooterPositionArea[2] = float(0.5 * (lo.z + hi.z));
+  control.shooterNormal[1] = -1.0f;
+  gl::Buffer controlBuffer(sizeof control, &control);
+  best = 1e300;
+  for (int r = 0; r <= repeats; ++r) {
+    backend.finish();
+    auto t0 = Clock::now();
+    for (int k = 0; k < 10; ++k) items.render(controlBuffer);
+    backend.finish();
+    if (r > 0) best = std::min(best, msSince(t0));
+  }
+  c.trianglesPerSecond = 10.0 * double(items.triangles()) / (best * 1e-3);
+  return c;
+}
+
 }  // namespace
 
 void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
@@ -88,6 +140,9 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
       ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
   cmd->add_option("--gpu", o.backend.gpu, "EGL device index")->check(CLI::NonNegativeNumber);
   cmd->add_option("--json", o.json, "Write the results as JSON");
+  cmd->add_flag("--ceiling", o.ceiling,
+                "Also measure the device's ceilings (load-store invocations/s, item-buffer triangles/s) and "
+                "print each throughput as a fraction of them");
 }
 
 int runBench(BenchOptions o) {
@@ -100,16 +155,27 @@ int runBench(BenchOptions o) {
   fmt::print("hemirad bench, {}, {} ({}), converge {}, shoot level {}, item mesh L{}, item buffer {}^2\n\n", date,
              backend->name(), backend->renderer(), o.converge, o.progressive.shootLevel, o.progressive.itemSubdivision,
              o.progressive.itemResolution);
+  Ceilings ceiling;
+  if (o.ceiling) {
+    ceiling = measureCeilings(*backend, o.scenes.front());
+    fmt::print("ceilings: {:.3g} load-store invocations/s, {:.3g} item-buffer triangles/s (first scene, item mesh L6)\n\n",
+               ceiling.invocationsPerSecond, ceiling.trianglesPerSecond);
+  }
   fmt::print("| scene | elements | shots | time to {:.0f}% (ms) | ms/shot | item buffer ms | gather ms | select ms | "
-             "item tris | item tris/s | gather texels/s |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
-             o.converge * 100);
+             "item tris | item tris/s | gather texels/s |{}\n|---|---|---|---|---|---|---|---|---|---|---|{}\n",
+             o.converge * 100, o.ceiling ? " item buffer / ceiling | gather / ceiling |" : "",
+             o.ceiling ? "---|---|" : "");
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& scene : o.scenes)
     for (std::size_t n : o.elements) {
       BenchRow r = benchOne(*backend, scene, n, o);
-      fmt::print("| {} | {} | {} | {:.1f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {} | {:.3g} | {:.3g} |\n", r.scene,
+      std::string fractions =
+          o.ceiling ? fmt::format(" {:.1f} % | {:.1f} % |", 100 * r.itemTrianglesPerSecond / ceiling.trianglesPerSecond,
+                                  100 * r.gatherUpdatesPerSecond / ceiling.invocationsPerSecond)
+                    : "";
+      fmt::print("| {} | {} | {} | {:.1f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {} | {:.3g} | {:.3g} |{}\n", r.scene,
                  r.elements, r.shots, r.solveMs, r.msPerShot, r.split.itemBuffer, r.split.gather, r.split.select,
-                 r.itemTriangles, r.itemTrianglesPerSecond, r.gatherUpdatesPerSecond);
+                 r.itemTriangles, r.itemTrianglesPerSecond, r.gatherUpdatesPerSecond, fractions);
       std::fflush(stdout);
       rows.push_back({{"scene", r.scene}, {"elements", r.elements}, {"shots", r.shots}, {"convergence", r.convergence},
                       {"time_to_converge_ms", r.solveMs}, {"ms_per_shot", r.msPerShot},
@@ -127,6 +193,9 @@ int runBench(BenchOptions o) {
                           {"item_subdivision", o.progressive.itemSubdivision},
                           {"item_resolution", o.progressive.itemResolution},
                           {"rows", rows}};
+    if (o.ceiling)
+      out["ceilings"] = {{"load_store_invocations_per_s", ceiling.invocationsPerSecond},
+                         {"item_buffer_triangles_per_s", ceiling.trianglesPerSecond}};
     writeTextFile(o.json, out.dump(2) + "\n");
   }
   return 0;

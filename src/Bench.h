@@ -19,6 +19,7 @@ struct BenchOptions {
   gl::BackendOptions backend;
   std::string backendName = "osmesa";
   std::string json;
+  bool ceiling = false;  // also measure the device's compute and raster ceilings
 };
 
 // The bench flags, shared by `hemirad bench` and the lean `hemirad-bench`.

@@ -99,7 +99,7 @@ TEST_CASE("validate writes its report and figures; bench writes its table and JS
 
   std::string json = test::tempPath("bench.json");
   test::Run b = test::hemirad("bench --scenes " + test::sourcePath("scenes/analytic/parallel_squares.obj") +
-                              " --elements 400 --split-shots 8 --json " + json);
+                              " --elements 400 --split-shots 8 --ceiling --json " + json);
   INFO(b.output);
   REQUIRE(b.exitCode == 0);
   CHECK_THAT(b.output, Contains("| time to 90% (ms) |"));
@@ -107,4 +107,7 @@ TEST_CASE("validate writes its report and figures; bench writes its table and JS
   REQUIRE(bj["rows"].size() == 1);
   CHECK(bj["rows"][0]["convergence"].get<double>() >= 0.9);
   CHECK(bj["rows"][0]["shots"].get<int>() > 0);
+  CHECK(bj["ceilings"]["load_store_invocations_per_s"].get<double>() > 0);
+  CHECK(bj["ceilings"]["item_buffer_triangles_per_s"].get<double>() > 0);
+  CHECK_THAT(b.output, Contains("gather / ceiling"));
 }
