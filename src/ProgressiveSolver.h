@@ -19,7 +19,8 @@ struct ProgressiveSettings {
   int itemResolution = 512;  // item buffer pixels per side (the pixel budget, for the hemicube too)
   Projection projection = Projection::Hemisphere;
   int shootLevel = 1;        // substructuring: shoot from 2^k x 2^k texel blocks
-  gl::TimerMode timings = gl::TimerMode::Gpu;  // per-pass times: GPU stamps, exact (synchronised) or none
+  // Per-pass times: GPU stamps on a sample of the shots, every shot synchronised, or none.
+  gl::TimerMode timings = gl::TimerMode::Gpu;
   StopRule stop;
 };
 
@@ -50,6 +51,8 @@ class ProgressiveSolver final : public Solver {
   SolveStatus status_;
   PassTimings timings_;
   gl::GpuTimer timer_;
+  double sampled_[3] = {};  // per-pass milliseconds of the timed shots
+  unsigned enqueued_ = 0, timed_ = 0;
 };
 
 }  // namespace hemirad
