@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <ctime>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "src/AtomicFile.h"
@@ -24,6 +25,8 @@ struct BenchRow {
   double convergence = 0, solveMs = 0, msPerShot = 0;
   PassTimings split;  // ms per shot, synchronised
   double itemTrianglesPerSecond = 0, gatherUpdatesPerSecond = 0;
+  std::uint64_t hash = 0;                // of the converged B: equal across runs on one backend
+  std::vector<ObjectRadiosity> objects;  // for comparing backends (--compare)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -57,6 +60,9 @@ BenchRow benchOne(gl::RenderBackend& backend, const std::string& path, std::size
   row.convergence = status.convergence;
   row.msPerShot = row.shots ? row.solveMs / row.shots : 0;
   row.itemTriangles = solver.itemTriangles();
+  std::vector<glm::vec4> B = state.readRadiosity();
+  row.hash = radiosityHash(atlas, B);
+  row.objects = objectRadiosity(scene, atlas, B);
 
   // The split: a fresh solve timed pass by pass (waits at every pass end), over the first shots.
   SolverState fresh(scene, atlas);
@@ -122,6 +128,41 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
   return c;
 }
 
+nlohmann::json objectsJson(const std::vector<ObjectRadiosity>& objects) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& o : objects) out.push_back({{"name", o.name}, {"mean_radiosity", {o.mean.x, o.mean.y, o.mean.z}}});
+  return out;
+}
+
+// Per-object relative differences of mean luminance between this run's rows and another bench
+// JSON's rows of the same scene and element count (e.g. an NVIDIA run against llvmpipe).
+void printComparison(const nlohmann::json& rows, const std::string& otherPath) {
+  std::ifstream in(otherPath);
+  if (!in) fail("--compare {}: cannot be read", otherPath);
+  nlohmann::json other;
+  try {
+    other = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    fail("--compare {}: not a bench JSON: {}", otherPath, e.what());
+  }
+  fmt::print("\nagainst {} ({}): per-object relative difference of mean luminance\n\n", otherPath,
+             other.value("renderer", "?"));
+  fmt::print("| scene | elements | object | this | other | relative difference |\n|---|---|---|---|---|---|\n");
+  auto lum = [](const nlohmann::json& c) { return 0.2126 * double(c[0]) + 0.7152 * double(c[1]) + 0.0722 * double(c[2]); };
+  for (const auto& a : rows)
+    for (const auto& b : other.value("rows", nlohmann::json::array())) {
+      if (a["scene"] != b["scene"] || a["elements"] != b["elements"] || !b.contains("objects")) continue;
+      for (const auto& oa : a["objects"])
+        for (const auto& ob : b["objects"]) {
+          if (oa["name"] != ob["name"]) continue;
+          double x = lum(oa["mean_radiosity"]), y = lum(ob["mean_radiosity"]);
+          fmt::print("| {} | {} | {} | {:.6g} | {:.6g} | {:.2e} |\n", a["scene"].get<std::string>(),
+                     a["elements"].get<std::size_t>(), oa["name"].get<std::string>(), x, y,
+                     y != 0 ? std::abs(x - y) / std::abs(y) : std::abs(x - y));
+        }
+    }
+}
+
 }  // namespace
 
 void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
@@ -140,6 +181,7 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
       ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
   cmd->add_option("--gpu", o.backend.gpu, "EGL device index")->check(CLI::NonNegativeNumber);
   cmd->add_option("--json", o.json, "Write the results as JSON");
+  cmd->add_option("--compare", o.compare, "Another bench JSON: print per-object differences to its matching rows");
   cmd->add_flag("--ceiling", o.ceiling,
                 "Also measure the device's ceilings (load-store invocations/s, item-buffer triangles/s) and "
                 "print each throughput as a fraction of them");
@@ -182,8 +224,10 @@ int runBench(BenchOptions o) {
                       {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
                                              {"select", r.split.select}, {"readback", r.split.readback}}},
                       {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},
-                      {"gather_texel_updates_per_s", r.gatherUpdatesPerSecond}});
+                      {"gather_texel_updates_per_s", r.gatherUpdatesPerSecond},
+                      {"radiosity_hash", fmt::format("{:016x}", r.hash)}, {"objects", objectsJson(r.objects)}});
     }
+  if (!o.compare.empty()) printComparison(rows, o.compare);
   if (!o.json.empty()) {
     nlohmann::json out = {{"date", date},
                           {"backend", backend->name()},

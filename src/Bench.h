@@ -20,6 +20,7 @@ struct BenchOptions {
   std::string backendName = "osmesa";
   std::string json;
   bool ceiling = false;  // also measure the device's compute and raster ceilings
+  std::string compare;   // another bench JSON to compare per-object radiosity with
 };
 
 // The bench flags, shared by `hemirad bench` and the lean `hemirad-bench`.
