@@ -110,4 +110,12 @@ TEST_CASE("validate writes its report and figures; bench writes its table and JS
   CHECK(bj["ceilings"]["load_store_invocations_per_s"].get<double>() > 0);
   CHECK(bj["ceilings"]["item_buffer_triangles_per_s"].get<double>() > 0);
   CHECK_THAT(b.output, Contains("gather / ceiling"));
+  CHECK(bj["rows"][0]["radiosity_hash"].get<std::string>().size() == 16);
+  // Comparing a run with its own earlier JSON: same backend, bitwise the same objects.
+  test::Run c = test::hemirad("bench --scenes " + test::sourcePath("scenes/analytic/parallel_squares.obj") +
+                              " --elements 400 --split-shots 8 --compare " + json);
+  INFO(c.output);
+  REQUIRE(c.exitCode == 0);
+  CHECK_THAT(c.output, Contains("| receiver | "));
+  CHECK_THAT(c.output, Contains("| 0.00e+00 |"));
 }
