@@ -111,6 +111,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
   SolverState state(scene, atlas);
   ObjectSums gpuSums(objects);
   double worstError = -1;
+  std::size_t figureIndex = 0;  // into `shooters`
   for (Projection projection : o.projections)
     for (int resolution : o.itemResolutions)
       for (int level : o.levels) {
@@ -144,7 +145,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
             if (ref.formFactor > 0)
               relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
           }
-          if (first && seesAnything && misplaced > worstError) worstError = misplaced, v.figureShooter = k;
+          if (first && seesAnything && misplaced > worstError) worstError = misplaced, figureIndex = k;
         }
         st.visibilityAgreement = st.texelPairs ? double(agree) / double(st.texelPairs) : 1.0;
         st.ffRelErrorMedian = percentile(relErrors, 0.5);
@@ -155,18 +156,15 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
         if (figureConfig && level == o.levels.back()) gpuSums = levelSums;  // object F: first config, highest L
         // Figure samples: the chosen shooter at the first configuration's lowest and highest level.
         if (figureConfig && (level == o.levels.front() || level == o.levels.back())) {
-          std::vector<ProbeSample> gpu = probe.fromShooter(shooters[v.figureShooter]);
+          std::vector<ProbeSample> gpu = probe.fromShooter(shooters[figureIndex]);
           std::vector<ProbeSampleView> view(gpu.size());
           for (std::size_t t = 0; t < gpu.size(); ++t) view[t] = {gpu[t].visible > 0.5f, gpu[t].formFactor};
           if (level == o.levels.front()) v.figureGpu.assign(2, view);
           else v.figureGpu[1] = view;
         }
       }
-  if (!v.figureGpu.empty()) {
-    v.figureShooter = shooters[v.figureShooter];
-    const std::vector<PairSample>& ref = reference[size_t(std::find(shooters.begin(), shooters.end(), v.figureShooter) - shooters.begin())];
-    for (const PairSample& p : ref) v.figureExact.push_back({p.facing, p.visible, p.formFactor});
-  }
+  v.figureShooter = shooters[figureIndex];
+  for (const PairSample& p : reference[figureIndex]) v.figureExact.push_back({p.facing, p.visible, p.formFactor});
   if (o.solution) compareSolution(scene, atlas, exact.visibility(), o, v);
   for (size_t a = 0; a < objects; ++a)
     for (size_t b = 0; b < objects; ++b) {
