@@ -12,6 +12,7 @@
 #include "gl/Shader.h"
 #include "src/Control.h"
 #include "src/ItemBuffer.h"
+#include "src/Report.h"
 #include "src/SceneLoader.h"
 
 namespace hemirad {
@@ -36,7 +37,11 @@ double msSince(Clock::time_point t0) { return std::chrono::duration<double, std:
 double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveStatus& status) {
   backend.finish();
   auto t0 = Clock::now();
-  for (unsigned batch = 1; !status.done; batch = std::min(batch * 2, 1024u)) status = solver.advance(batch);
+  for (unsigned batch = 1; !status.done;) {
+    auto b0 = Clock::now();
+    status = solver.advance(batch);
+    batch = nextBatch(batch, msSince(b0) * 1e-3);
+  }
   backend.finish();
   return msSince(t0);
 }
@@ -126,12 +131,6 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
   }
   c.trianglesPerSecond = 10.0 * double(items.triangles()) / (best * 1e-3);
   return c;
-}
-
-nlohmann::json objectsJson(const std::vector<ObjectRadiosity>& objects) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& o : objects) out.push_back({{"name", o.name}, {"mean_radiosity", {o.mean.x, o.mean.y, o.mean.z}}});
-  return out;
 }
 
 // Per-object relative differences of mean luminance between this run's rows and another bench

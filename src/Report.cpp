@@ -8,11 +8,15 @@
 
 namespace hemirad {
 
+nlohmann::json objectsJson(const std::vector<ObjectRadiosity>& objects) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& o : objects)
+    out.push_back({{"name", o.name}, {"area", o.area}, {"mean_radiosity", {o.mean.x, o.mean.y, o.mean.z}}});
+  return out;
+}
+
 nlohmann::json reportJson(const RunInfo& r) {
   using nlohmann::json;
-  json objects = json::array();
-  for (const auto& o : r.objects)
-    objects.push_back({{"name", o.name}, {"area", o.area}, {"mean_radiosity", {o.mean.x, o.mean.y, o.mean.z}}});
   return {
       {"backend", r.backend},
       {"renderer", r.renderer},
@@ -35,7 +39,7 @@ nlohmann::json reportJson(const RunInfo& r) {
         {"readback", r.timings.readback}}},
       {"radiosity_hash", fmt::format("{:016x}", r.radiosityHash)},
       {"convergence_history", r.convergenceHistory},
-      {"objects", objects},
+      {"objects", objectsJson(r.objects)},
   };
 }
 

@@ -25,6 +25,8 @@ struct RunInfo {
 };
 
 nlohmann::json reportJson(const RunInfo& run);
+// [{name, area, mean_radiosity: [r, g, b]}], DESIGN.md's report `objects`.
+nlohmann::json objectsJson(const std::vector<ObjectRadiosity>& objects);
 void writeReport(const std::string& path, const RunInfo& run);
 
 }  // namespace hemirad

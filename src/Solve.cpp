@@ -31,12 +31,6 @@ Image atlasImage(const Atlas& atlas, const std::vector<glm::vec4>& B) {
   return img;
 }
 
-// Shots per batch grow while a batch takes under ~50 ms, so the status readback (the only
-// CPU-GPU sync) stays rare on fast GPUs and progress stays live on slow ones.
-unsigned nextBatch(unsigned batch, double seconds) {
-  return seconds < 0.05 ? std::min(batch * 2, 1024u) : std::max(batch / 2, 1u);
-}
-
 }  // namespace
 
 int runSolve(const SolveOptions& o) {

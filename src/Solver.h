@@ -22,6 +22,12 @@ struct StopRule {
   double targetConvergence = 0;  // 0: none
 };
 
+// Shots per advance(): batches grow while one takes under ~50 ms, so the status readback (the
+// only CPU-GPU sync) stays rare on fast GPUs and progress stays live on slow ones.
+inline unsigned nextBatch(unsigned batch, double seconds) {
+  return seconds < 0.05 ? (batch < 512 ? batch * 2 : 1024) : (batch > 1 ? batch / 2 : 1);
+}
+
 class Solver {
  public:
   virtual ~Solver() = default;

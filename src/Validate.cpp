@@ -157,14 +157,12 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
         // Figure samples: the chosen shooter at the first configuration's lowest and highest level.
         if (figureConfig && (level == o.levels.front() || level == o.levels.back())) {
           std::vector<ProbeSample> gpu = probe.fromShooter(shooters[figureIndex]);
-          std::vector<ProbeSampleView> view(gpu.size());
-          for (std::size_t t = 0; t < gpu.size(); ++t) view[t] = {gpu[t].visible > 0.5f, gpu[t].formFactor};
-          if (level == o.levels.front()) v.figureGpu.assign(2, view);
-          else v.figureGpu[1] = view;
+          if (level == o.levels.front()) v.figureGpu.assign(2, gpu);
+          else v.figureGpu[1] = std::move(gpu);
         }
       }
   v.figureShooter = shooters[figureIndex];
-  for (const PairSample& p : reference[figureIndex]) v.figureExact.push_back({p.facing, p.visible, p.formFactor});
+  v.figureExact = reference[figureIndex];
   if (o.solution) compareSolution(scene, atlas, exact.visibility(), o, v);
   for (size_t a = 0; a < objects; ++a)
     for (size_t b = 0; b < objects; ++b) {

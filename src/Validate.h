@@ -7,6 +7,8 @@
 
 #include "gl/Backend.h"
 #include "src/Camera.h"
+#include "src/ExactReference.h"
+#include "src/FormFactorProbe.h"
 #include "src/ItemBuffer.h"
 #include "src/SolverState.h"
 #include "src/Solve.h"
@@ -42,15 +44,6 @@ struct ObjectFormFactor {
   double exact = 0, gpu = 0;
 };
 
-struct PairSampleView {
-  bool facing = false, visible = false;
-  double formFactor = 0;
-};
-struct ProbeSampleView {
-  bool visible = false;
-  double formFactor = 0;
-};
-
 // GPU radiosity (converged) against the dense exact solution, per object (luminance of B).
 struct SolutionError {
   std::string object;
@@ -67,8 +60,8 @@ struct Validation {
   // For the figures: the shooter whose visibility errors misplace the most form factor at the
   // first configuration's lowest level, and its exact and GPU samples at that configuration's lowest and highest level.
   std::size_t figureShooter = 0;
-  std::vector<PairSampleView> figureExact;
-  std::vector<std::vector<ProbeSampleView>> figureGpu;  // [0]: lowest level, [1]: highest
+  std::vector<PairSample> figureExact;
+  std::vector<std::vector<ProbeSample>> figureGpu;  // [0]: lowest level, [1]: highest
 };
 
 // The shooter elements (atlas texels): `count` spread evenly over all elements, or all.

@@ -25,8 +25,8 @@ std::vector<glm::vec4> classify(const Atlas& atlas, const Validation& v, int whi
   std::vector<glm::vec4> c(atlas.polygonOf.size(), display(kNone));
   for (std::size_t t = 0; t < c.size(); ++t) {
     if (atlas.polygonOf[t] == kNoPolygon) continue;
-    const PairSampleView& e = v.figureExact[t];
-    bool g = v.figureGpu[size_t(which)][t].visible;
+    const PairSample& e = v.figureExact[t];
+    bool g = v.figureGpu[size_t(which)][t].visible > 0.5f;
     glm::vec3 col = !e.facing ? kNotFacing : e.visible ? (g ? kBothVisible : kFalseHidden) : (g ? kFalseVisible : kBothHidden);
     if (t == v.figureShooter) col = kShooter;
     c[t] = display(col);
@@ -44,7 +44,7 @@ glm::vec3 ramp(double relError) {
 std::vector<glm::vec4> formFactorErrors(const Atlas& atlas, const Validation& v) {
   std::vector<glm::vec4> c(atlas.polygonOf.size(), display(kNone));
   for (std::size_t t = 0; t < c.size(); ++t) {
-    const PairSampleView& e = v.figureExact[t];
+    const PairSample& e = v.figureExact[t];
     if (atlas.polygonOf[t] == kNoPolygon) continue;
     if (!e.facing || e.formFactor <= 0) {
       c[t] = display(t == v.figureShooter ? kShooter : kNotFacing);
@@ -65,11 +65,11 @@ void writeAtlasImage(const std::string& path, const Atlas& atlas, const std::vec
   writePng(path, img, 1.0);
 }
 
-void writeViewImage(const std::string& path, const SolverState& state, const Camera& camera,
+void writeViewImage(const std::string& path, Renderer& renderer, const Atlas& atlas, const Camera& camera,
                     const std::vector<glm::vec4>& colours) {
-  gl::Texture values(GL_RGBA32F, state.atlas.width, state.atlas.height);
+  gl::Texture values(GL_RGBA32F, atlas.width, atlas.height);
   values.upload(GL_RGBA, GL_FLOAT, colours.data());
-  writePng(path, Renderer(state).render(camera, 640, 640, 2, values), 1.0);
+  writePng(path, renderer.render(camera, 640, 640, 2, values), 1.0);
 }
 
 }  // namespace
@@ -126,8 +126,9 @@ void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas
   writeAtlasImage(dir + fmt::format("/atlas_visibility_L{}.png", low), atlas, classify(atlas, v, 0));
   writeAtlasImage(dir + fmt::format("/atlas_visibility_L{}.png", high), atlas, classify(atlas, v, 1));
   writeAtlasImage(dir + fmt::format("/atlas_ff_error_L{}.png", high), atlas, formFactorErrors(atlas, v));
-  writeViewImage(dir + fmt::format("/view_visibility_L{}.png", low), state, camera, classify(atlas, v, 0));
-  writeViewImage(dir + fmt::format("/view_visibility_L{}.png", high), state, camera, classify(atlas, v, 1));
+  Renderer renderer(state);
+  writeViewImage(dir + fmt::format("/view_visibility_L{}.png", low), renderer, atlas, camera, classify(atlas, v, 0));
+  writeViewImage(dir + fmt::format("/view_visibility_L{}.png", high), renderer, atlas, camera, classify(atlas, v, 1));
 
   glm::dvec3 shooter(atlas.positionArea[v.figureShooter]);
   std::string html = fmt::format(
