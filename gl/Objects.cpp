@@ -57,9 +57,6 @@ Framebuffer::Framebuffer() { glCreateFramebuffers(1, &id_); }
 void Framebuffer::attach(GLenum attachment, const Texture& texture) {
   glNamedFramebufferTexture(id_, attachment, texture.id(), 0);
 }
-void Framebuffer::attachLayer(GLenum attachment, const Texture& texture, int layer) {
-  glNamedFramebufferTextureLayer(id_, attachment, texture.id(), 0, layer);
-}
 void Framebuffer::checkComplete(const char* what) const {
   GLenum status = glCheckNamedFramebufferStatus(id_, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) throw Error(fmt::format("{} framebuffer incomplete (0x{:04x})", what, status));

@@ -85,7 +85,6 @@ class Framebuffer : public Handle<deleteFramebuffer> {
  public:
   Framebuffer();
   void attach(GLenum attachment, const Texture& texture);
-  void attachLayer(GLenum attachment, const Texture& texture, int layer);
   void checkComplete(const char* what) const;  // throws gl::Error
   void bind() const;
 };

@@ -1,4 +1,4 @@
-// Validation probe (src/Validate.cpp): for one shooter, every receiver element's item-buffer
+// Validation probe (src/Validate.cpp): for one shooter (the first of the control block), every receiver element's item-buffer
 // visibility and form factor, exactly as gather.comp computes them, written out instead of
 // applied. r: visibility (0/1), g: F, b: 1 where the pair faces each other.
 #include "hemisphere.glsl"
@@ -14,12 +14,12 @@ void main() {
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(t, atlasSize))) return;
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
-  if (polygon == NO_POLYGON || polygon == control.shooterPolygon) {
+  if (polygon == NO_POLYGON || polygon == control.shooter[0].polygon) {
     imageStore(probe, t, vec4(0.0));
     return;
   }
   bool facing;
   float visible;
-  float F = shooterFormFactor(t, polygon, facing, visible);
+  float F = shooterFormFactor(0u, t, polygon, facing, visible);
   imageStore(probe, t, vec4(visible, F, facing ? 1.0 : 0.0, 0.0));
 }

@@ -1,6 +1,7 @@
-// One shot, gathered at every receiver texel (seed 003 §39.2): visibility from the item
-// buffer, the disc form factor, and B += rho dB_s F, dB += rho dB_s F. The shooter block's
-// own dB is reset here; its texels are coplanar with the shooter and receive nothing.
+// One pass, gathered at every receiver texel (seed 003 §39.2): for each shooter of the pass,
+// visibility from its item buffer, the disc form factor, and B += rho dB_s F, dB += rho dB_s F.
+// A shooter block's own dB is reset here (its texels are coplanar with it and receive nothing
+// from it, but do receive from the pass's other shooters).
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "control.glsl"
@@ -13,19 +14,23 @@ uniform ivec2 atlasSize;
 
 void main() {
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
-  if (control.done != 0u || any(greaterThanEqual(t, atlasSize))) return;  // once stopped, shots are empty
+  if (control.done != 0u || any(greaterThanEqual(t, atlasSize))) return;  // once stopped, passes are empty
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
   if (polygon == NO_POLYGON) return;
-  ivec4 r = control.shooterRect;
-  if (polygon == control.shooterPolygon && all(greaterThanEqual(t, r.xy)) && all(lessThan(t, r.xy + r.zw))) {
-    imageStore(deltaB, t, vec4(0.0));
-    return;
+  vec3 received = vec3(0.0);
+  bool shot = false;
+  for (uint s = 0u; s < control.count; ++s) {
+    if (inShooterBlock(s, t, polygon)) {
+      shot = true;
+      continue;
+    }
+    bool facing;
+    float visible;
+    float F = shooterFormFactor(s, t, polygon, facing, visible);
+    if (F > 0.0) received += control.shooter[s].deltaB.rgb * F;
   }
-  bool facing;
-  float visible;
-  float F = shooterFormFactor(t, polygon, facing, visible);
-  if (F <= 0.0) return;
-  vec3 delta = polygons[polygon].reflectance.rgb * control.shooterDeltaB.rgb * F;
+  if (!shot && received == vec3(0.0)) return;
+  vec3 delta = polygons[polygon].reflectance.rgb * received;
   imageStore(radiosity, t, imageLoad(radiosity, t) + vec4(delta, 0.0));
-  imageStore(deltaB, t, imageLoad(deltaB, t) + vec4(delta, 0.0));
+  imageStore(deltaB, t, (shot ? vec4(0.0) : imageLoad(deltaB, t)) + vec4(delta, 0.0));
 }

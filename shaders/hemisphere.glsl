@@ -35,8 +35,14 @@ float discFormFactor(float cosS, float cosR, float r2, float shooterArea) {
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
-// ---- Item-buffer projections. The item buffer is a 2D array texture: one layer for the
-// hemisphere, five for the hemicube (HEMICUBE defined), whose side faces use their upper half.
+// ---- Item-buffer projections. The item buffer is a 2D array texture: per shooter one layer
+// for the hemisphere, five for the hemicube (HEMICUBE defined), whose side faces use their
+// upper half.
+#ifdef HEMICUBE
+const int ITEM_FACES = 5;
+#else
+const int ITEM_FACES = 1;
+#endif
 
 #ifdef HEMICUBE
 // Face f's coordinates (a, b, c) of a shooter-frame point: it looks along +c with a 90-degree

@@ -1,5 +1,7 @@
-// Item buffer from the current shooter: the item mesh projected onto the hemisphere (seed 003)
-// or one hemicube face, with depth = distance / far, so occlusion is ordered along each ray.
+// Item buffers of the pass's shooters: instance i draws the item mesh from shooter
+// i / ITEM_FACES into layer i, projected onto the hemisphere (seed 003) or one hemicube face,
+// with depth = distance / far, so occlusion is ordered along each ray.
+#extension GL_ARB_shader_viewport_layer_array : require
 #include "hemisphere.glsl"
 #include "control.glsl"
 
@@ -7,15 +9,21 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in uint polygon;
 flat out uint vPolygon;
 uniform float farDistance;
-uniform int face;  // item-buffer layer: 0 for the hemisphere, 0-4 for the hemicube
 
 void main() {
-  vec3 local = shooterLocal(position, control.shooterPositionArea.xyz, control.shooterNormal.xyz);
+  uint shooter = uint(gl_InstanceID / ITEM_FACES);
+  int face = gl_InstanceID % ITEM_FACES;
+  gl_Layer = gl_InstanceID;
+  vPolygon = polygon;
+  if (shooter >= control.count) {  // a short pass, or the stop rule fired: draw nothing
+    gl_Position = vec4(0.0, 0.0, 0.0, -1.0);
+    gl_ClipDistance[0] = -1.0;
+    return;
+  }
+  vec3 local = shooterLocal(position, control.shooter[shooter].positionArea.xyz, control.shooter[shooter].normal.xyz);
   gl_Position = itemClipPosition(local, farDistance, face);
   // Only what lies above the shooter's plane is seen. The margin (float rounding of `local`)
   // also drops the shooter's coplanar neighbours, whose vertices would all land on the rim and
   // span the whole disc.
   gl_ClipDistance[0] = local.z - 1e-5 * farDistance;
-  vPolygon = polygon;
-  if (control.done != 0u) gl_Position = vec4(0.0, 0.0, 0.0, -1.0);  // once stopped, draw nothing
 }

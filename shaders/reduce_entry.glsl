@@ -1,11 +1,13 @@
-// The shooter reduction: argmax of unshot power over shooter blocks, and its sum (for the
-// convergence), folded in a fixed tree order so both are bitwise reproducible.
+// The shooter reduction: the `keep` blocks with the largest unshot power (seed 003's batching
+// shoots several a pass) and the total unshot power (for the convergence), folded in a fixed
+// order so both are bitwise reproducible. A workgroup ranks up to 1024 entries; the top `keep`
+// of every group contain the top `keep` of all, so levels of groups give the exact answer.
 // Needs scene.glsl and hemisphere.glsl (luminance) included first. Local size must be 256.
 
 struct Entry {
-  float best;   // largest power
-  uint index;   // its block; ties go to the lower index, so the choice is deterministic
-  float sum;    // total unshot power
+  float power;  // unshot power of the block
+  uint index;   // the block
+  float sum;    // total unshot power of the entries folded into this one
   float pad;
 };
 
@@ -14,11 +16,12 @@ layout(std430, binding = 2) readonly buffer In { Entry src[]; };
 layout(binding = 1, rgba32f) uniform readonly image2D deltaB;
 uniform uint count;       // entries (or blocks) to fold
 uniform bool fromBlocks;  // first level: compute the entries from the blocks
+uniform uint keep;        // entries kept per group: the shooters a pass takes
 
-Entry combine(Entry a, Entry b) {
-  bool takeB = b.best > a.best || (b.best == a.best && b.index < a.index);
-  return Entry(takeB ? b.best : a.best, takeB ? b.index : a.index, a.sum + b.sum, 0.0);
-}
+const uint GROUP_ENTRIES = 1024u;
+shared float rankPower[GROUP_ENTRIES];
+shared uint rankIndex[GROUP_ENTRIES];
+shared float groupSum[256];
 
 // Unshot power luminance(dB) * A of one block (a texel, or 2^k x 2^k texels with substructuring).
 float blockPower(ivec4 r) {
@@ -35,18 +38,55 @@ Entry loadEntry(uint i) {
   return Entry(p, i, p, 0.0);
 }
 
-shared Entry partial[256];
+// Slot a ranks before slot b: more power first, ties to the lower block (a total order).
+bool ranksBefore(uint a, uint b) {
+  return rankPower[a] > rankPower[b] || (rankPower[a] == rankPower[b] && rankIndex[a] < rankIndex[b]);
+}
 
-// Folds entries first, first + 256, ... below end, one per thread, then the workgroup's 256
-// partial results; the result is in partial[0] for every thread.
-void reduceGroup(uint first, uint end) {
-  Entry e = Entry(-1.0, 0xFFFFFFFFu, 0.0, 0.0);
-  for (uint i = first + gl_LocalInvocationID.x; i < end; i += 256u) e = combine(e, loadEntry(i));
-  partial[gl_LocalInvocationID.x] = e;
+void swapSlots(uint a, uint b) {
+  float p = rankPower[a];
+  uint i = rankIndex[a];
+  rankPower[a] = rankPower[b], rankIndex[a] = rankIndex[b];
+  rankPower[b] = p, rankIndex[b] = i;
+}
+
+void sync() {
+  memoryBarrierShared();
   barrier();
-  for (uint stride = 128u; stride > 0u; stride >>= 1) {
-    if (gl_LocalInvocationID.x < stride)
-      partial[gl_LocalInvocationID.x] = combine(partial[gl_LocalInvocationID.x], partial[gl_LocalInvocationID.x + stride]);
-    barrier();
+}
+
+// Ranks entries [first, end) (at most 1024): afterwards slots 0..keep-1 hold the best in order
+// and groupSum[0] the total, for every thread.
+void rankGroup(uint first, uint end) {
+  uint l = gl_LocalInvocationID.x;
+  float sum = 0.0;
+  for (uint k = 0u; k < GROUP_ENTRIES / 256u; ++k) {
+    uint slot = l + 256u * k, i = first + slot;
+    Entry e = i < end ? loadEntry(i) : Entry(-1.0, 0xFFFFFFFFu, 0.0, 0.0);
+    rankPower[slot] = e.power;
+    rankIndex[slot] = e.index;
+    sum += e.sum;
   }
+  groupSum[l] = sum;
+  if (keep == 1u)  // one shooter: a max tree is enough; first each thread's four slots into slot l
+    for (uint k = 1u; k < GROUP_ENTRIES / 256u; ++k)
+      if (ranksBefore(l + 256u * k, l)) swapSlots(l, l + 256u * k);
+  sync();
+  for (uint stride = 128u; stride > 0u; stride >>= 1) {
+    if (l < stride) {
+      groupSum[l] += groupSum[l + stride];
+      if (keep == 1u && ranksBefore(l + stride, l)) swapSlots(l, l + stride);
+    }
+    sync();
+  }
+  if (keep == 1u) return;
+  // Several shooters: bitonic sort of the 1024 slots, best first.
+  for (uint size = 2u; size <= GROUP_ENTRIES; size <<= 1)
+    for (uint stride = size >> 1; stride > 0u; stride >>= 1) {
+      for (uint p = l; p < GROUP_ENTRIES / 2u; p += 256u) {
+        uint a = 2u * p - (p & (stride - 1u)), b = a + stride;
+        if (((a & size) == 0u) == ranksBefore(b, a)) swapSlots(a, b);
+      }
+      sync();
+    }
 }

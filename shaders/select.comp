@@ -1,29 +1,41 @@
 // The last level of the shooter reduction (one workgroup, over the blocks themselves when
-// they are few), then the stop rule and the next shooter.
+// they are few), then the stop rule and the shooters of the next pass: the `keep` blocks with
+// the most unshot power (seed 003's batching), fewer when the shot budget or the power ends.
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "reduce_entry.glsl"
 #include "control.glsl"
 
 layout(local_size_x = 256) in;
+shared uint passShooters;
 
 void main() {
-  reduceGroup(0u, count);
-  if (gl_LocalInvocationID.x != 0u) return;
-  Entry w = partial[0];
-  float convergence = 1.0 - w.sum / control.emittedPower;
-  control.convergence = convergence;
-  control.unshotPower = w.sum;
-  if (control.shots < control.historyCapacity) control.history[control.shots] = convergence;
-  bool stop = control.done != 0u || w.best <= 0.0 ||
-              (control.maxShots != 0u && control.shots >= control.maxShots) ||
-              (control.targetConvergence > 0.0 && convergence >= control.targetConvergence);
-  if (stop) {
-    control.done = 1u;
-    return;
+  rankGroup(0u, count);
+  uint l = gl_LocalInvocationID.x;
+  if (l == 0u) {
+    float convergence = 1.0 - groupSum[0] / control.emittedPower;
+    control.convergence = convergence;
+    control.unshotPower = groupSum[0];
+    bool stop = control.done != 0u || rankPower[0] <= 0.0 ||
+                (control.maxShots != 0u && control.shots >= control.maxShots) ||
+                (control.targetConvergence > 0.0 && convergence >= control.targetConvergence);
+    uint n = 0u;
+    if (!stop) {
+      uint budget = control.maxShots != 0u ? min(keep, control.maxShots - control.shots) : keep;
+      while (n < budget && rankPower[n] > 0.0) ++n;
+    }
+    // The shots of one pass are simultaneous: they share the convergence at its start.
+    for (uint k = control.shots; k < control.shots + max(n, 1u) && k < control.historyCapacity; ++k)
+      control.history[k] = convergence;
+    control.done = stop ? 1u : 0u;
+    control.count = n;
+    control.shots += n;
+    passShooters = n;
   }
-  // The block shoots from its area-weighted centre with its area-weighted unshot radiosity.
-  ivec4 r = blockRect[w.index];
+  sync();
+  if (l >= passShooters) return;
+  // Shooter l shoots from its block's area-weighted centre with its area-weighted unshot radiosity.
+  ivec4 r = blockRect[rankIndex[l]];
   vec3 power = vec3(0.0), centre = vec3(0.0);
   float area = 0.0;
   uint polygon = NO_POLYGON;
@@ -36,10 +48,9 @@ void main() {
       area += pa.w;
       polygon = texelFetch(atlasPolygon, ivec2(x, y), 0).r;
     }
-  control.shooterPositionArea = vec4(centre / area, area);
-  control.shooterNormal = vec4(polygons[polygon].normal.xyz, 0.0);
-  control.shooterDeltaB = vec4(power / area, w.best);
-  control.shooterRect = r;
-  control.shooterPolygon = polygon;
-  control.shots += 1u;
+  control.shooter[l].positionArea = vec4(centre / area, area);
+  control.shooter[l].normal = vec4(polygons[polygon].normal.xyz, 0.0);
+  control.shooter[l].deltaB = vec4(power / area, rankPower[l]);
+  control.shooter[l].rect = r;
+  control.shooter[l].polygon = polygon;
 }

@@ -8,10 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "src/AtomicFile.h"
+#include "src/Ceilings.h"
 #include "src/Error.h"
-#include "gl/Shader.h"
 #include "src/Control.h"
-#include "src/ItemBuffer.h"
 #include "src/Report.h"
 #include "src/SceneLoader.h"
 
@@ -21,11 +20,12 @@ namespace {
 
 struct BenchRow {
   std::string scene;
-  std::size_t elements = 0, itemTriangles = 0;
+  std::size_t elements = 0, itemTriangles = 0, itemPixels = 0;
+  int shootersPerPass = 1;
   unsigned shots = 0;
   double convergence = 0, solveMs = 0, msPerShot = 0;
   PassTimings split;  // ms per shot, synchronised
-  double itemTrianglesPerSecond = 0, gatherUpdatesPerSecond = 0;
+  double itemTrianglesPerSecond = 0, itemPixelsPerSecond = 0, gatherUpdatesPerSecond = 0;
   std::uint64_t hash = 0;                // of the converged B: equal across runs on one backend
   std::vector<ObjectRadiosity> objects;  // for comparing backends (--compare)
 };
@@ -46,16 +46,15 @@ double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveSta
   return msSince(t0);
 }
 
-BenchRow benchOne(gl::RenderBackend& backend, const std::string& path, std::size_t elements, const BenchOptions& o) {
-  Scene scene = loadScene(path);
-  validateSolvable(scene);
-  Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, elements), backend.maxTextureSize());
+BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& atlas, int shootersPerPass,
+                  const BenchOptions& o) {
   BenchRow row;
-  row.scene = path;
   row.elements = atlas.elements;
+  row.shootersPerPass = shootersPerPass;
 
   SolverState state(scene, atlas);
   ProgressiveSettings settings = o.progressive;
+  settings.shootersPerPass = shootersPerPass;
   settings.stop = {0, o.converge};
   settings.timings = gl::TimerMode::Off;  // the timed run pays for no queries
   ProgressiveSolver solver(state, settings);
@@ -65,77 +64,33 @@ BenchRow benchOne(gl::RenderBackend& backend, const std::string& path, std::size
   row.convergence = status.convergence;
   row.msPerShot = row.shots ? row.solveMs / row.shots : 0;
   row.itemTriangles = solver.itemTriangles();
+  row.itemPixels = solver.itemPixels();
   std::vector<glm::vec4> B = state.readRadiosity();
   row.hash = radiosityHash(atlas, B);
   row.objects = objectRadiosity(scene, atlas, B);
 
-  // The split: a fresh solve timed pass by pass (waits at every pass end), over the first shots.
+  // The split: a fresh solve timed pass by pass (waits at every pass end), over the first shots
+  // (at least 8 passes).
   SolverState fresh(scene, atlas);
   settings.timings = gl::TimerMode::Synchronous;
-  settings.stop = {std::min(o.splitShots, std::max(row.shots, 1u)), 0};
+  settings.stop = {std::min(std::max(o.splitShots, 8u * shootersPerPass), std::max(row.shots, 1u)), 0};
   ProgressiveSolver timed(fresh, settings);
   SolveStatus s2;
   runToStop(backend, timed, s2);
   const PassTimings& t = timed.timings();
   double n = std::max(1u, s2.shots);
   row.split = {t.itemBuffer / n, t.gather / n, t.select / n, t.readback / n};
-  if (row.split.itemBuffer > 0) row.itemTrianglesPerSecond = double(row.itemTriangles) / (row.split.itemBuffer * 1e-3);
+  if (row.split.itemBuffer > 0) {
+    row.itemTrianglesPerSecond = double(row.itemTriangles) / (row.split.itemBuffer * 1e-3);
+    row.itemPixelsPerSecond = double(row.itemPixels) / (row.split.itemBuffer * 1e-3);
+  }
   if (row.split.gather > 0) row.gatherUpdatesPerSecond = double(row.elements) / (row.split.gather * 1e-3);
   return row;
 }
 
-// The device's ceilings for this kind of work: invocations/s of a load-and-store kernel over a
-// 4096^2 RGBA32F image, and triangles/s of the item buffer drawing the first scene's item mesh
-// at L = 6 (155,648 triangles for the Cornell box) from the middle of its top, facing down.
-// Best of 5 timed repetitions after a warm-up.
-struct Ceilings {
-  double invocationsPerSecond = 0, trianglesPerSecond = 0;
-};
-
-Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePath) {
-  Ceilings c;
-  const int side = 4096, repeats = 5;
-  gl::Texture values(GL_RGBA32F, side, side);
-  gl::Program kernel = gl::computeProgram("ceiling.comp");
-  kernel.use();
-  values.bindImage(0, GL_READ_WRITE);
-  double best = 1e300;
-  for (int r = 0; r <= repeats; ++r) {
-    backend.finish();
-    auto t0 = Clock::now();
-    for (int k = 0; k < 10; ++k) {
-      gl::Program::dispatch(side / 16, side / 16);
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    }
-    backend.finish();
-    if (r > 0) best = std::min(best, msSince(t0));
-  }
-  c.invocationsPerSecond = 10.0 * side * side / (best * 1e-3);
-
-  Scene scene = loadScene(scenePath);
-  ItemBuffer items(scene, 6, 512, 2.0 * glm::length(scene.boundsMax() - scene.boundsMin()));
-  ControlBlock control{};
-  glm::dvec3 lo = scene.boundsMin(), hi = scene.boundsMax();
-  control.shooterPositionArea[0] = float(0.5 * (lo.x + hi.x));  // the ceiling's centre, facing down
-  control.shooterPositionArea[1] = float(hi.y - 1e-3 * (hi.y - lo.y));
-  control.shooterPositionArea[2] = float(0.5 * (lo.z + hi.z));
-  control.shooterNormal[1] = -1.0f;
-  gl::Buffer controlBuffer(sizeof control, &control);
-  best = 1e300;
-  for (int r = 0; r <= repeats; ++r) {
-    backend.finish();
-    auto t0 = Clock::now();
-    for (int k = 0; k < 10; ++k) items.render(controlBuffer);
-    backend.finish();
-    if (r > 0) best = std::min(best, msSince(t0));
-  }
-  c.trianglesPerSecond = 10.0 * double(items.triangles()) / (best * 1e-3);
-  return c;
-}
-
 // Per-object relative differences of mean luminance between this run's rows and another bench
 // JSON's rows of the same scene and element count (e.g. an NVIDIA run against llvmpipe).
-void printComparison(const nlohmann::json& rows, const std::string& otherPath) {
+std::string comparisonTable(const nlohmann::json& rows, const std::string& otherPath) {
   std::ifstream in(otherPath);
   if (!in) fail("--compare {}: cannot be read", otherPath);
   nlohmann::json other;
@@ -144,22 +99,25 @@ void printComparison(const nlohmann::json& rows, const std::string& otherPath) {
   } catch (const std::exception& e) {
     fail("--compare {}: not a bench JSON: {}", otherPath, e.what());
   }
-  fmt::print("\nagainst {} ({}): per-object relative difference of mean luminance\n\n", otherPath,
+  std::string out = fmt::format("\nagainst {} ({}): per-object relative difference of mean luminance\n\n", otherPath,
              other.value("renderer", "?"));
-  fmt::print("| scene | elements | object | this | other | relative difference |\n|---|---|---|---|---|---|\n");
+  out += "| scene | elements | shooters/pass | object | this | other | relative difference |\n|---|---|---|---|---|---|---|\n";
   auto lum = [](const nlohmann::json& c) { return 0.2126 * double(c[0]) + 0.7152 * double(c[1]) + 0.0722 * double(c[2]); };
   for (const auto& a : rows)
     for (const auto& b : other.value("rows", nlohmann::json::array())) {
-      if (a["scene"] != b["scene"] || a["elements"] != b["elements"] || !b.contains("objects")) continue;
+      if (a["scene"] != b["scene"] || a["elements"] != b["elements"] || !b.contains("objects") ||
+          a["shooters_per_pass"] != b.value("shooters_per_pass", 1))
+        continue;
       for (const auto& oa : a["objects"])
         for (const auto& ob : b["objects"]) {
           if (oa["name"] != ob["name"]) continue;
           double x = lum(oa["mean_radiosity"]), y = lum(ob["mean_radiosity"]);
-          fmt::print("| {} | {} | {} | {:.6g} | {:.6g} | {:.2e} |\n", a["scene"].get<std::string>(),
-                     a["elements"].get<std::size_t>(), oa["name"].get<std::string>(), x, y,
+          out += fmt::format("| {} | {} | {} | {} | {:.6g} | {:.6g} | {:.2e} |\n", a["scene"].get<std::string>(),
+                     a["elements"].get<std::size_t>(), a["shooters_per_pass"].get<int>(), oa["name"].get<std::string>(), x, y,
                      y != 0 ? std::abs(x - y) / std::abs(y) : std::abs(x - y));
         }
     }
+  return out;
 }
 
 }  // namespace
@@ -174,6 +132,11 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   cmd->add_option("--item-subdiv", o.progressive.itemSubdivision, "Item-mesh level L (default 3)")->check(CLI::Range(0, 8));
   cmd->add_option("--item-res", o.progressive.itemResolution, "Item buffer resolution (default 512)")
       ->check(CLI::Range(16, 16384));
+  cmd->add_option("--shooters-per-pass", o.shootersPerPass,
+                  fmt::format("Shooters per pass, one row each (default 16; at most {})", kMaxPassShooters))
+      ->delimiter(',')
+      ->check(CLI::Range(1, int(kMaxPassShooters)));
+  cmd->add_option("--markdown", o.markdown, "Write the printed tables as markdown (e.g. into docs/bench)");
   cmd->add_option("--split-shots", o.splitShots, "Shots timed pass by pass for the split (default 64)")
       ->check(CLI::Range(1u, 1u << 20));
   cmd->add_option("--backend", o.backendName, "GL backend: osmesa (default), egl, auto")
@@ -188,45 +151,65 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
 
 int runBench(BenchOptions o) {
   if (!o.json.empty()) checkWritable(o.json, "--json");
+  if (!o.markdown.empty()) checkWritable(o.markdown, "--markdown");
   o.backend.kind = gl::parseBackendKind(o.backendName);
   auto backend = gl::createBackend(o.backend);
   std::time_t now = std::time(nullptr);
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
-  fmt::print("hemirad bench, {}, {} ({}), converge {}, shoot level {}, item mesh L{}, item buffer {}^2\n\n", date,
-             backend->name(), backend->renderer(), o.converge, o.progressive.shootLevel, o.progressive.itemSubdivision,
-             o.progressive.itemResolution);
+  std::string text;  // everything printed, for --markdown
+  auto say = [&text](const std::string& s) {
+    fmt::print("{}", s);
+    std::fflush(stdout);
+    text += s;
+  };
+  say(fmt::format("hemirad bench, {}, {} ({}), converge {}, shoot level {}, item mesh L{}, item buffer {}^2\n\n", date,
+                  backend->name(), backend->renderer(), o.converge, o.progressive.shootLevel,
+                  o.progressive.itemSubdivision, o.progressive.itemResolution));
   Ceilings ceiling;
   if (o.ceiling) {
     ceiling = measureCeilings(*backend, o.scenes.front());
-    fmt::print("ceilings: {:.3g} load-store invocations/s, {:.3g} item-buffer triangles/s (first scene, item mesh L6)\n\n",
-               ceiling.invocationsPerSecond, ceiling.trianglesPerSecond);
+    say(fmt::format("ceilings: {:.3g} load-store invocations/s, {:.3g} item-buffer triangles/s (first scene, item "
+                    "mesh L6), {:.3g} item-buffer fragments/s (fill)\n\n",
+                    ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.fragmentsPerSecond));
   }
-  fmt::print("| scene | elements | shots | time to {:.0f}% (ms) | ms/shot | item buffer ms | gather ms | select ms | "
-             "item tris | item tris/s | gather texels/s |{}\n|---|---|---|---|---|---|---|---|---|---|---|{}\n",
-             o.converge * 100, o.ceiling ? " item buffer / ceiling | gather / ceiling |" : "",
-             o.ceiling ? "---|---|" : "");
+  // Per-shot throughputs: item-buffer triangles and pixels (the shot's whole buffer; overdraw
+  // makes the fragments more) and gather texel updates, per second of their pass.
+  say(fmt::format("| scene | elements | shooters/pass | shots | time to {:.0f}% (ms) | ms/shot | item buffer ms | gather ms | "
+                  "select ms | item tris/s | item px/s | gather texels/s |{}\n|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
+                  o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
+                  o.ceiling ? "---|---|---|" : ""));
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& scene : o.scenes)
+  for (const auto& path : o.scenes) {
+    Scene scene = loadScene(path);
+    validateSolvable(scene);
     for (std::size_t n : o.elements) {
-      BenchRow r = benchOne(*backend, scene, n, o);
-      std::string fractions =
-          o.ceiling ? fmt::format(" {:.1f} % | {:.1f} % |", 100 * r.itemTrianglesPerSecond / ceiling.trianglesPerSecond,
-                                  100 * r.gatherUpdatesPerSecond / ceiling.invocationsPerSecond)
-                    : "";
-      fmt::print("| {} | {} | {} | {:.1f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {} | {:.3g} | {:.3g} |{}\n", r.scene,
-                 r.elements, r.shots, r.solveMs, r.msPerShot, r.split.itemBuffer, r.split.gather, r.split.select,
-                 r.itemTriangles, r.itemTrianglesPerSecond, r.gatherUpdatesPerSecond, fractions);
-      std::fflush(stdout);
-      rows.push_back({{"scene", r.scene}, {"elements", r.elements}, {"shots", r.shots}, {"convergence", r.convergence},
-                      {"time_to_converge_ms", r.solveMs}, {"ms_per_shot", r.msPerShot},
-                      {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
-                                             {"select", r.split.select}, {"readback", r.split.readback}}},
-                      {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},
-                      {"gather_texel_updates_per_s", r.gatherUpdatesPerSecond},
-                      {"radiosity_hash", fmt::format("{:016x}", r.hash)}, {"objects", objectsJson(r.objects)}});
+      Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, n), backend->maxTextureSize());
+      for (int k : o.shootersPerPass) {
+        BenchRow r = benchOne(*backend, scene, atlas, k, o);
+        r.scene = path;
+        std::string fractions =
+            o.ceiling ? fmt::format(" {:.1f} % | {:.1f} % | {:.1f} % |", 100 * r.itemTrianglesPerSecond / ceiling.trianglesPerSecond,
+                                    100 * r.itemPixelsPerSecond / ceiling.fragmentsPerSecond,
+                                    100 * r.gatherUpdatesPerSecond / ceiling.invocationsPerSecond)
+                      : "";
+        say(fmt::format("| {} | {} | {} | {} | {:.1f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
+                        r.scene, r.elements, r.shootersPerPass, r.shots, r.solveMs, r.msPerShot, r.split.itemBuffer,
+                        r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
+                        r.gatherUpdatesPerSecond, fractions));
+        rows.push_back({{"scene", r.scene}, {"elements", r.elements}, {"shooters_per_pass", r.shootersPerPass},
+                        {"shots", r.shots}, {"convergence", r.convergence}, {"time_to_converge_ms", r.solveMs},
+                        {"ms_per_shot", r.msPerShot},
+                        {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
+                                               {"select", r.split.select}, {"readback", r.split.readback}}},
+                        {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},
+                        {"item_pixels", r.itemPixels}, {"item_pixels_per_s", r.itemPixelsPerSecond},
+                        {"gather_texel_updates_per_s", r.gatherUpdatesPerSecond},
+                        {"radiosity_hash", fmt::format("{:016x}", r.hash)}, {"objects", objectsJson(r.objects)}});
+      }
     }
-  if (!o.compare.empty()) printComparison(rows, o.compare);
+  }
+  if (!o.compare.empty()) say(comparisonTable(rows, o.compare));
   if (!o.json.empty()) {
     nlohmann::json out = {{"date", date},
                           {"backend", backend->name()},
@@ -238,9 +221,11 @@ int runBench(BenchOptions o) {
                           {"rows", rows}};
     if (o.ceiling)
       out["ceilings"] = {{"load_store_invocations_per_s", ceiling.invocationsPerSecond},
-                         {"item_buffer_triangles_per_s", ceiling.trianglesPerSecond}};
+                         {"item_buffer_triangles_per_s", ceiling.trianglesPerSecond},
+                         {"item_buffer_fragments_per_s", ceiling.fragmentsPerSecond}};
     writeTextFile(o.json, out.dump(2) + "\n");
   }
+  if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
   return 0;
 }
 

@@ -15,10 +15,12 @@ struct BenchOptions {
   std::vector<std::size_t> elements{10000, 100000};
   double converge = 0.9;
   ProgressiveSettings progressive;  // shoot level, item mesh and buffer as for solve
+  std::vector<int> shootersPerPass{ProgressiveSettings{}.shootersPerPass};  // a row each
   unsigned splitShots = 64;         // shots timed pass by pass (synchronised) for the split
   gl::BackendOptions backend;
   std::string backendName = "osmesa";
   std::string json;
+  std::string markdown;  // the printed tables, as a markdown file
   bool ceiling = false;  // also measure the device's compute and raster ceilings
   std::string compare;   // another bench JSON to compare per-object radiosity with
 };

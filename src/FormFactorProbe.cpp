@@ -23,10 +23,12 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   const std::uint32_t polygon = a.polygonOf[s];
   const glm::dvec3 n = state_.scene.polygons()[polygon].normal;
   ControlBlock c{};
-  for (int k = 0; k < 4; ++k) c.shooterPositionArea[k] = a.positionArea[s][k];
-  c.shooterNormal[0] = float(n.x), c.shooterNormal[1] = float(n.y), c.shooterNormal[2] = float(n.z);
-  c.shooterRect[0] = int(s % a.width), c.shooterRect[1] = int(s / a.width), c.shooterRect[2] = c.shooterRect[3] = 1;
-  c.shooterPolygon = polygon;
+  c.count = 1;
+  ShooterRecord& shooter = c.shooter[0];
+  for (int k = 0; k < 4; ++k) shooter.positionArea[k] = a.positionArea[s][k];
+  shooter.normal[0] = float(n.x), shooter.normal[1] = float(n.y), shooter.normal[2] = float(n.z);
+  shooter.rect[0] = int(s % a.width), shooter.rect[1] = int(s / a.width), shooter.rect[2] = shooter.rect[3] = 1;
+  shooter.polygon = polygon;
   control_.upload(0, sizeof c, &c);
 
   glFinish();

@@ -26,24 +26,24 @@ gl::Defines projectionDefines(Projection p) {
 }
 }  // namespace
 
-ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance, Projection projection)
+ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance, Projection projection,
+                       int shooters)
     : faceResolution_(faceSide(resolution, projection)),
+      faces_(projection == Projection::Hemicube ? 5 : 1),
+      shooters_(shooters),
       defines_(projectionDefines(projection)),
       program_(gl::renderProgram("itembuffer.vert", "itembuffer.frag", defines_)),
-      id_(GL_R32UI, faceResolution_, faceResolution_, projection == Projection::Hemicube ? 5 : 1),
-      depth_(GL_DEPTH_COMPONENT32F, faceResolution_, faceResolution_, projection == Projection::Hemicube ? 5 : 1) {
+      id_(GL_R32UI, faceResolution_, faceResolution_, faces_ * shooters_),
+      depth_(GL_DEPTH_COMPONENT32F, faceResolution_, faceResolution_, faces_ * shooters_) {
   std::vector<ItemVertex> mesh = buildItemMesh(scene, subdivision);
   vertexCount_ = mesh.size();
   vertices_ = gl::Buffer(std::span<const ItemVertex>(mesh));
   vao_.vertexBuffer(vertices_, sizeof(ItemVertex));
   vao_.floatAttribute(0, 3, offsetof(ItemVertex, x));
   vao_.uintAttribute(1, offsetof(ItemVertex, polygon));
-  for (int layer = 0; layer < (projection == Projection::Hemicube ? 5 : 1); ++layer) {
-    gl::Framebuffer& f = faces_.emplace_back();
-    f.attachLayer(GL_COLOR_ATTACHMENT0, id_, layer);
-    f.attachLayer(GL_DEPTH_ATTACHMENT, depth_, layer);
-    f.checkComplete("item buffer");
-  }
+  target_.attach(GL_COLOR_ATTACHMENT0, id_);
+  target_.attach(GL_DEPTH_ATTACHMENT, depth_);
+  target_.checkComplete("item buffer");
   program_.set("farDistance", float(farDistance));
 }
 
@@ -58,13 +58,10 @@ void ItemBuffer::render(const gl::Buffer& control) {
   control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   program_.use();
   vao_.bind();
-  for (size_t face = 0; face < faces_.size(); ++face) {
-    glClearNamedFramebufferuiv(faces_[face].id(), GL_COLOR, 0, clearId);
-    glClearNamedFramebufferfv(faces_[face].id(), GL_DEPTH, 0, &far);
-    faces_[face].bind();
-    program_.set("face", int(face));
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertexCount_));
-  }
+  glClearNamedFramebufferuiv(target_.id(), GL_COLOR, 0, clearId);  // every layer
+  glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &far);
+  target_.bind();
+  glDrawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertexCount_), faces_ * shooters_);
   glDisable(GL_CLIP_DISTANCE0);
 }
 

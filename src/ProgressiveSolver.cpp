@@ -4,19 +4,21 @@
 #include <chrono>
 #include <cstddef>
 
+#include <fmt/format.h>
+
 #include "gl/Debug.h"
 #include "gl/Shader.h"
 #include "src/Control.h"
+#include "src/Error.h"
 
 namespace hemirad {
 
 namespace {
 
 constexpr unsigned kGatherGroup = 16;   // gather.comp local size (x and y)
-constexpr unsigned kReduceFold = 1024;  // entries folded per reduce.comp workgroup
-constexpr unsigned kSelectFold = 4096;  // at most this many left for select.comp's one workgroup
+constexpr unsigned kGroupEntries = 1024;  // entries ranked per reduction workgroup (reduce_entry.glsl)
 constexpr unsigned kUnlimitedHistory = 1u << 20;
-constexpr unsigned kTimingStride = 16;  // with GPU stamps, one shot in 16 is timed
+constexpr unsigned kTimingStride = 16;  // with GPU stamps, one pass in 16 is timed
 
 enum Slot { kSelect, kItemBuffer, kGather };
 
@@ -27,18 +29,23 @@ constexpr GLbitfield kAllBarriers =
 
 ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettings& settings)
     : state_(state), settings_(settings), timer_(settings.timings) {
+  if (settings.shootersPerPass < 1 || unsigned(settings.shootersPerPass) > kMaxPassShooters)
+    throw InputError(fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shootersPerPass));
+  const unsigned keep = unsigned(settings.shootersPerPass);
   reduce_ = gl::computeProgram("reduce.comp");
   select_ = gl::computeProgram("select.comp");
 
-  // Shooter blocks and the reduction levels above them.
+  // Shooter blocks and the reduction levels above them: each workgroup of a level ranks 1024
+  // entries and keeps its best `keep`, until select.comp's one workgroup can rank the rest.
   std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(settings.shootLevel);
   blockCount_ = blocks.size();
   blocks_ = gl::Buffer(std::span<const ShooterBlock>(blocks));
-  for (unsigned n = unsigned(blockCount_); n > kSelectFold; n = gl::groupsFor(n, kReduceFold))
-    levels_.emplace_back(gl::groupsFor(n, kReduceFold) * sizeof(float[4]));
+  unsigned left = unsigned(blockCount_);
+  for (; left > kGroupEntries; left = gl::groupsFor(left, kGroupEntries) * keep)
+    levels_.emplace_back(gl::groupsFor(left, kGroupEntries) * keep * sizeof(float[4]));
 
   itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, settings.itemResolution,
-                                             state.farDistance, settings.projection);
+                                             state.farDistance, settings.projection, settings.shootersPerPass);
   gather_ = gl::computeProgram("gather.comp", itemBuffer_->defines());
 
   // The control block: stop rule, convergence history.
@@ -49,14 +56,15 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   c.targetConvergence = float(stop.targetConvergence);
   c.emittedPower = float(state.emittedPower);
   c.historyCapacity = historyCapacity_;
+  c.shootersPerPass = keep;
   control_ = gl::Buffer(sizeof(ControlBlock) + historyCapacity_ * sizeof(float));
   control_.upload(0, sizeof c, &c);
 
   gather_.set("farDistance", float(state.farDistance));
   // select.comp folds what the parallel levels leave: the blocks themselves when there are none.
-  unsigned left = unsigned(blockCount_);
-  for (std::size_t l = 0; l < levels_.size(); ++l) left = gl::groupsFor(left, kReduceFold);
   select_.set("count", left);
+  select_.set("keep", keep);
+  reduce_.set("keep", keep);
   select_.set("fromBlocks", int(levels_.empty()));
   glProgramUniform2i(gather_.id(), gather_.location("atlasSize"), state.atlas.width, state.atlas.height);
   gl::checkErrors("progressive solver setup");
@@ -68,7 +76,7 @@ void ProgressiveSolver::selectPass() {
   state_.bindScene();
   state_.deltaB.bindImage(1, GL_READ_ONLY);
   blocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  // Many blocks: fold them 1024 to one in parallel first; the last fold runs in select.comp.
+  // Many blocks: rank them 1024 at a time in parallel first; the last ranking runs in select.comp.
   unsigned n = unsigned(blockCount_);
   bool fromBlocks = true;
   reduce_.use();
@@ -76,10 +84,10 @@ void ProgressiveSolver::selectPass() {
     level.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
     reduce_.set("count", n);
     reduce_.set("fromBlocks", int(fromBlocks));
-    gl::Program::dispatch(gl::groupsFor(n, kReduceFold));
+    gl::Program::dispatch(gl::groupsFor(n, kGroupEntries));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     level.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
-    n = gl::groupsFor(n, kReduceFold);
+    n = gl::groupsFor(n, kGroupEntries) * unsigned(settings_.shootersPerPass);
     fromBlocks = false;
   }
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
@@ -101,9 +109,10 @@ void ProgressiveSolver::gatherPass() {
 }
 
 SolveStatus ProgressiveSolver::advance(unsigned shots) {
-  for (unsigned k = 0; k < shots && !status_.done; ++k, ++enqueued_) {
-    // GPU stamps cost a query each (on llvmpipe as much as a pass): one shot in kTimingStride
-    // is timed and the totals are scaled; synchronised timing times every shot.
+  const unsigned passes = (shots + settings_.shootersPerPass - 1) / settings_.shootersPerPass;
+  for (unsigned k = 0; k < passes && !status_.done; ++k, ++enqueued_) {
+    // GPU stamps cost a query each (on llvmpipe as much as a pass): one pass in kTimingStride
+    // is timed and the totals are scaled; synchronised timing times every pass.
     const bool timed = settings_.timings == gl::TimerMode::Synchronous || enqueued_ % kTimingStride == 0;
     if (timed) timer_.mark(kSelect);
     selectPass();

@@ -1,10 +1,12 @@
 // hemirad: GPU progressive-refinement radiosity with a hemispherical item buffer.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <fmt/format.h>
 
 #include "gl/Backend.h"
 #include "src/Error.h"
 #include "src/Bench.h"
+#include "src/Control.h"
 #include "src/Solve.h"
 #include "src/Validate.h"
 
@@ -50,6 +52,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"stereographic", "hemicube"}));
   s->add_option("--shoot-level", pr.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 1)")
       ->check(CLI::Range(0, 8));
+  s->add_option("--shooters-per-pass", pr.shootersPerPass,
+                fmt::format("Seed 003's batching: the K best blocks shoot in one pass (default 16, at most {})",
+                            kMaxPassShooters))
+      ->check(CLI::Range(1, int(kMaxPassShooters)));
   s->add_flag_callback(
       "--sync-timings", [&pr] { pr.timings = gl::TimerMode::Synchronous; },
       "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)");

@@ -109,6 +109,8 @@ TEST_CASE("validate writes its report and figures, and bench its table and JSON"
   CHECK(bj["rows"][0]["shots"].get<int>() > 0);
   CHECK(bj["ceilings"]["load_store_invocations_per_s"].get<double>() > 0);
   CHECK(bj["ceilings"]["item_buffer_triangles_per_s"].get<double>() > 0);
+  CHECK(bj["ceilings"]["item_buffer_fragments_per_s"].get<double>() > 0);
+  CHECK(bj["rows"][0]["item_pixels"].get<int>() == 512 * 512);
   CHECK_THAT(b.output, Contains("gather / ceiling"));
   CHECK(bj["rows"][0]["radiosity_hash"].get<std::string>().size() == 16);
   // Comparing a run with its own earlier JSON: same backend, bitwise the same objects.

@@ -68,10 +68,12 @@ TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho sig
   // everywhere. The disc approximation hands on sigma < 1 (computed here on the CPU), so the
   // GPU solution must match E / (1 - rho sigma) tightly, and E / (1 - rho) to within what sigma
   // allows.
-  for (double rho : {0.3, 0.6}) {
+  // Batched passes (16 shooters from one unshot state) must reach the same answer.
+  for (auto [rho, shooters] : {std::pair{0.3, 1}, std::pair{0.6, 1}, std::pair{0.6, 16}}) {
     Scene s = furnace(rho, 1.0);
     ProgressiveSettings settings;
     settings.shootLevel = 0;
+    settings.shootersPerPass = shooters;
     settings.stop.targetConvergence = 0.9995;
     test::Solved r = test::solve(s, 1.0 / 12, settings);
     double sigma = 0, area = 0;
@@ -80,7 +82,7 @@ TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho sig
         sigma += discRowSum(s, r.atlas, t) * r.atlas.positionArea[t].w, area += r.atlas.positionArea[t].w;
     sigma /= area;
     double mean = test::object(r, "box").mean.x, exact = 1 / (1 - rho), disc = 1 / (1 - rho * sigma);
-    INFO("rho " << rho << ": mean B " << mean << " after " << r.status.shots << " shots; E/(1-rho) " << exact
+    INFO("rho " << rho << ", " << shooters << " shooters a pass: mean B " << mean << " after " << r.status.shots << " shots; E/(1-rho) " << exact
                 << ", E/(1-rho sigma) " << disc << " with sigma " << sigma);
     CHECK(mean == Approx(disc).epsilon(0.001));
     CHECK(mean == Approx(exact).epsilon(0.025));
@@ -92,12 +94,17 @@ TEST_CASE("Energy is conserved: in a closed box every shot delivers what its for
   // largest unshot power, so the first 100 shots are exactly the lamp's. Walls hold
   // B = rho * irradiance, so sum B A / rho is the power received; it must equal what the shots
   // handed on, sum_s sigma_s E A_s, and come within the disc approximation of the power shot (1).
+  // Passes of 20 shooters hand on the same: the lamp's 100 elements in 5 passes.
   const double rho = 0.5;
+  const int shooters = GENERATE(1, 20);
+  INFO(shooters << " shooters a pass");
   Scene s = cube(rho, 0.0, 1);
   ProgressiveSettings settings;
   settings.shootLevel = 0;  // element by element
+  settings.shootersPerPass = shooters;
   settings.stop.maxShots = 100;
   test::Solved r = test::solve(s, 0.1, settings);
+  REQUIRE(r.status.shots == 100);
   double received = 0, handedOn = 0, shot = 0;
   for (size_t t = 0; t < r.B.size(); ++t) {
     if (r.atlas.polygonOf[t] == kNoPolygon) continue;
@@ -118,9 +125,10 @@ TEST_CASE("Energy is conserved: in a closed box every shot delivers what its for
   CHECK(r.status.convergence == Approx(convergenceOf(s, r)).margin(1e-5));
 }
 
-TEST_CASE("Two solves of the same scene are bitwise identical", "[gl]") {
+TEST_CASE("Two solves of the same scene are bitwise identical, one shooter a pass or 16", "[gl]") {
   ProgressiveSettings settings;
   settings.shootLevel = 0;  // element by element
+  settings.shootersPerPass = GENERATE(1, 16);
   settings.stop.targetConvergence = 0.8;
   Scene s = loadScene(test::sourcePath("scenes/analytic/parallel_squares.obj"));
   test::Solved a = test::solve(s, 0.05, settings), b = test::solve(s, 0.05, settings);
@@ -129,8 +137,9 @@ TEST_CASE("Two solves of the same scene are bitwise identical", "[gl]") {
   CHECK(std::memcmp(a.B.data(), b.B.data(), a.B.size() * sizeof(glm::vec4)) == 0);
 }
 
-TEST_CASE("The shooter is the block with the largest unshot power, and --shots stops exactly", "[gl]") {
-  // Two lamps over a floor: the bright one (E 3) shoots all 25 of its elements before the dim one.
+TEST_CASE("The shooters are the blocks with the largest unshot power, and --shots stops exactly", "[gl]") {
+  // Two lamps over a floor: the bright one (E 3) shoots all 25 of its elements before the dim
+  // one, one a pass or 8 (8 + 8 + 8 + 1: the last pass is cut to the shot budget).
   Scene s;
   int o = s.addObject("scene");
   s.addPolygon(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1, 1), test::material(s, 0.5, 0.0), o);
@@ -138,6 +147,7 @@ TEST_CASE("The shooter is the block with the largest unshot power, and --shots s
   s.addPolygon(test::rectangle({0.5, 1, 0.5}, {1, 0, 0}, {0, 0, 1}, 0.5, 0.5), test::material(s, 0.0, 3.0), o);
   ProgressiveSettings settings;
   settings.shootLevel = 0;  // element by element
+  settings.shootersPerPass = GENERATE(1, 8);
   settings.stop.maxShots = 25;
   test::Solved r = test::solve(s, 0.1, settings);
   CHECK(r.status.shots == 25);
@@ -165,8 +175,9 @@ TEST_CASE("Substructured shooting converges to the per-texel solution", "[gl]") 
 }
 
 TEST_CASE("Scenes with many shooter blocks reduce in parallel levels and pick the same shooters", "[gl]") {
-  // 6,480 blocks at shoot level 0 (over the 4,096 that select.comp folds alone): a lamp of 400
-  // elements at E 3 over a floor of 6,080 must still shoot every lamp element first.
+  // 6,480 blocks at shoot level 0 (over the 1,024 that select.comp ranks alone): a lamp of 400
+  // elements at E 3 over a floor of 6,080 must still shoot every lamp element first, also 16 a
+  // pass, where each level's groups must hand on their best 16, not their best one.
   Scene s;
   int o = s.addObject("scene");
   s.addPolygon(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1, 0.95), test::material(s, 0.5, 0.0), o);
@@ -174,6 +185,7 @@ TEST_CASE("Scenes with many shooter blocks reduce in parallel levels and pick th
   ProgressiveSettings settings;
   settings.shootLevel = 0;
   settings.itemSubdivision = 1;
+  settings.shootersPerPass = GENERATE(1, 16);
   settings.stop.maxShots = 400;
   test::Solved r = test::solve(s, 0.0125, settings);
   REQUIRE(r.atlas.elements == 6480);
@@ -181,4 +193,21 @@ TEST_CASE("Scenes with many shooter blocks reduce in parallel levels and pick th
   for (size_t t = 0; t < r.dB.size(); ++t) lampShot += r.atlas.polygonOf[t] == 1 && r.dB[t].x == 0.0f;
   CHECK(lampShot == 400);
   CHECK(r.status.convergence == Approx(convergenceOf(s, r)).margin(1e-5));
+}
+
+TEST_CASE("Batched passes converge to the one-shooter solution", "[gl]") {
+  // Shooting 16 blocks from one unshot state changes the order of the shots, not the answer.
+  Scene s = loadScene(test::sourcePath("scenes/analytic/perpendicular_squares.obj"));
+  ProgressiveSettings one, batched;
+  one.shootLevel = batched.shootLevel = 0;
+  one.stop.targetConvergence = batched.stop.targetConvergence = 0.995;
+  batched.shootersPerPass = 16;
+  test::Solved a = test::solve(s, 1.0 / 16, one), b = test::solve(s, 1.0 / 16, batched);
+  for (const char* name : {"emitter", "receiver"}) {
+    double ra = test::object(a, name).mean.x, rb = test::object(b, name).mean.x;
+    INFO(name << ": one a pass " << ra << " (" << a.status.shots << " shots), 16 a pass " << rb << " ("
+              << b.status.shots << ")");
+    CHECK(rb == Approx(ra).epsilon(0.005));
+  }
+  CHECK(b.status.shots <= a.status.shots + 16 * 4);
 }
