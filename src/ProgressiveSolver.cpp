@@ -128,7 +128,7 @@ SolveStatus ProgressiveSolver::advance(unsigned shots) {
 SolveStatus ProgressiveSolver::readStatus() {
   auto t0 = std::chrono::steady_clock::now();
   ControlBlock c;
-  control_.read(0, sizeof c, &c);
+  control_.read(0, offsetof(ControlBlock, shooter), &c);  // the status header, not the shooters
   timings_.readback += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   timer_.collect(sampled_);
   const double scale = timed_ ? double(enqueued_) / timed_ : 0.0;
