@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <cstring>
 
 #include <fmt/format.h>
 
@@ -123,6 +124,34 @@ SolveStatus ProgressiveSolver::advance(unsigned shots) {
     if (timed) timer_.stop(), ++timed_;
   }
   return readStatus();
+}
+
+std::vector<std::uint8_t> ProgressiveSolver::saveState() const {
+  constexpr std::size_t header = offsetof(ControlBlock, shooter);
+  const std::size_t history = std::min(status_.shots + 1, historyCapacity_) * sizeof(float);
+  std::vector<std::uint8_t> bytes(header + history);
+  control_.read(0, header, bytes.data());
+  control_.read(sizeof(ControlBlock), history, bytes.data() + header);
+  return bytes;
+}
+
+SolveStatus ProgressiveSolver::restoreState(std::span<const std::uint8_t> bytes) {
+  constexpr std::size_t header = offsetof(ControlBlock, shooter);
+  ControlBlock c{};
+  if (bytes.size() < header || (bytes.size() - header) % sizeof(float) != 0)
+    throw InputError("checkpoint: progressive solver state is corrupt");
+  std::memcpy(&c, bytes.data(), header);
+  // This run's stop rule; the shots and history go on from the checkpoint's.
+  c.maxShots = settings_.stop.maxShots;
+  c.targetConvergence = float(settings_.stop.targetConvergence);
+  c.historyCapacity = historyCapacity_;
+  c.done = 0;
+  c.count = 0;
+  control_.upload(0, header, &c);
+  const std::size_t history = std::min<std::size_t>((bytes.size() - header) / sizeof(float), historyCapacity_);
+  control_.upload(sizeof(ControlBlock), history * sizeof(float), bytes.data() + header);
+  status_ = {c.shots, c.convergence, false};
+  return status_;
 }
 
 SolveStatus ProgressiveSolver::readStatus() {

@@ -37,6 +37,8 @@ class ProgressiveSolver final : public Solver {
   SolveStatus advance(unsigned shots) override;
   const PassTimings& timings() const override { return timings_; }
   std::vector<float> convergenceHistory() const override;
+  std::vector<std::uint8_t> saveState() const override;  // the control block's status and history
+  SolveStatus restoreState(std::span<const std::uint8_t> bytes) override;
   std::size_t itemTriangles() const { return itemBuffer_->triangles(); }
   std::size_t itemPixels() const { return itemBuffer_->pixelsPerShooter(); }
   std::size_t shooterBlocks() const { return blockCount_; }

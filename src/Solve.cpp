@@ -8,6 +8,8 @@
 #include "src/AtomicFile.h"
 #include "src/Atlas.h"
 #include "src/Camera.h"
+#include "src/Checkpoint.h"
+#include "src/Interrupt.h"
 #include "src/Error.h"
 #include "src/Image.h"
 #include "src/PlyWriter.h"
@@ -31,6 +33,26 @@ Image atlasImage(const Atlas& atlas, const std::vector<glm::vec4>& B) {
   return img;
 }
 
+// What a checkpoint must have been made from to be resumed by this solve.
+nlohmann::json checkpointIdentity(const Scene& scene, const Atlas& atlas, const SolveOptions& o, const Solver& solver) {
+  const ProgressiveSettings& p = o.progressive;
+  return {{"scene_hash", fmt::format("{:016x}", sceneHash(scene))},
+          {"algorithm", solver.algorithm()},
+          {"texel_size", atlas.texelSize},
+          {"atlas", {atlas.width, atlas.height}},
+          {"elements", atlas.elements},
+          {"item_subdivision", p.itemSubdivision},
+          {"item_resolution", p.itemResolution},
+          {"projection", projectionName(p.projection)},
+          {"shoot_level", p.shootLevel},
+          {"shooters_per_pass", p.shootersPerPass}};
+}
+
+Checkpoint takeCheckpoint(const SolverState& state, const Solver& solver, const nlohmann::json& identity,
+                          unsigned shots) {
+  return {identity, shots, state.readRadiosity(), state.readDeltaB(), solver.saveState()};
+}
+
 }  // namespace
 
 int runSolve(const SolveOptions& o) {
@@ -38,6 +60,9 @@ int runSolve(const SolveOptions& o) {
   for (auto [path, flag] : {std::pair{o.out, "--out"}, {o.image, "--image"}, {o.atlas, "--atlas"}, {o.ply, "--ply"},
                             {o.report, "--report"}})
     if (!path.empty()) checkWritable(path, flag);
+  if (!o.checkpoint.empty()) checkWritable(o.checkpoint, "--checkpoint");
+  std::optional<Checkpoint> resumed;
+  if (!o.resume.empty()) resumed = readCheckpoint(o.resume);
 
   Scene scene = loadScene(o.scene, o.load);
   for (const auto& w : scene.warnings) warn(w);
@@ -50,16 +75,41 @@ int runSolve(const SolveOptions& o) {
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
   SolverState state(scene, atlas);
   ProgressiveSolver solver(state, o.progressive);
-
-  Progress progress(o.progressive.stop, o.progress);
+  const nlohmann::json identity = checkpointIdentity(scene, atlas, o, solver);
   SolveStatus status;
+  if (resumed) {
+    checkResumable(o.resume, resumed->identity, identity);
+    state.restore(resumed->radiosity, resumed->deltaB);
+    status = solver.restoreState(resumed->solver);
+    resumed.reset();
+  }
+
+  // Shots run in batches between status readbacks; a signal or a due checkpoint is handled
+  // between batches, where the GPU state is whole. Batch sizes never change the result.
+  InterruptGuard interrupts;
+  Progress progress(o.progressive.stop, o.progress);
+  unsigned savedAt = status.shots;
   for (unsigned batch = 1; !status.done;) {
+    if (int signal = InterruptGuard::received()) {
+      progress.finish();
+      if (!o.checkpoint.empty()) writeCheckpoint(o.checkpoint, takeCheckpoint(state, solver, identity, status.shots));
+      fmt::print(stderr, "hemirad: interrupted by {} after {} shots (convergence {:.4f}); {}\n", signalName(signal),
+                 status.shots, status.convergence,
+                 o.checkpoint.empty() ? "no --checkpoint given, nothing saved"
+                                      : fmt::format("checkpoint written: resume with --resume {}", o.checkpoint));
+      return 128 + signal;
+    }
     auto t0 = std::chrono::steady_clock::now();
-    status = solver.advance(batch);
+    status = solver.advance(o.checkpointEvery ? std::min(batch, o.checkpointEvery) : batch);
     progress.update(status);
     batch = nextBatch(batch, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    if (!o.checkpoint.empty() && o.checkpointEvery && status.shots >= savedAt + o.checkpointEvery && !status.done) {
+      writeCheckpoint(o.checkpoint, takeCheckpoint(state, solver, identity, status.shots));
+      savedAt = status.shots;
+    }
   }
   progress.finish();
+  if (!o.checkpoint.empty()) writeCheckpoint(o.checkpoint, takeCheckpoint(state, solver, identity, status.shots));
   double solveMs = progress.elapsedSeconds() * 1e3;
 
   std::vector<glm::vec4> B = state.readRadiosity();

@@ -25,6 +25,9 @@ struct SolveOptions {
   int width = 512, height = 512, supersample = 2;
   double exposure = 0;  // stops over the automatic exposure
   std::string out, image, atlas, ply, report;
+  std::string checkpoint;           // written every checkpointEvery shots, at the end and on SIGINT/SIGTERM
+  unsigned checkpointEvery = 0;     // 0: only at the end and on a signal
+  std::string resume;               // a checkpoint to continue from
   bool progress = true;
 };
 

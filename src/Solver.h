@@ -1,6 +1,8 @@
 // The seam between the CLI and the radiosity algorithms. Each algorithm advances a
 // SolverState shot by shot (or iteration by iteration) and says where it stands.
 #pragma once
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,11 @@ class Solver {
   virtual const PassTimings& timings() const = 0;
   // Convergence after 0, 1, 2, ... shots.
   virtual std::vector<float> convergenceHistory() const = 0;
+  // The algorithm's own state beyond B and dB (shot count, history, ...), for checkpoints:
+  // restoreState() on a solver built with the same settings continues bitwise where the saved
+  // one stood. The stop rule is this solver's, so a resumed solve may be given a new one.
+  virtual std::vector<std::uint8_t> saveState() const = 0;
+  virtual SolveStatus restoreState(std::span<const std::uint8_t> bytes) = 0;
 };
 
 }  // namespace hemirad

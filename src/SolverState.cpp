@@ -1,6 +1,9 @@
 #include "src/SolverState.h"
 
 #include <cstring>
+#include <string>
+
+#include "src/Error.h"
 
 namespace hemirad {
 
@@ -52,6 +55,14 @@ static std::vector<glm::vec4> readRgba(const gl::Texture& t) {
 }
 std::vector<glm::vec4> SolverState::readRadiosity() const { return readRgba(radiosity); }
 std::vector<glm::vec4> SolverState::readDeltaB() const { return readRgba(deltaB); }
+
+void SolverState::restore(const std::vector<glm::vec4>& B, const std::vector<glm::vec4>& dB) {
+  const std::size_t n = std::size_t(atlas.width) * atlas.height;
+  if (B.size() != n || dB.size() != n)
+    throw InputError("checkpoint holds " + std::to_string(B.size()) + " elements, the atlas " + std::to_string(n));
+  radiosity.upload(GL_RGBA, GL_FLOAT, B.data());
+  deltaB.upload(GL_RGBA, GL_FLOAT, dB.data());
+}
 
 std::vector<ObjectRadiosity> objectRadiosity(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B) {
   std::vector<ObjectRadiosity> out(scene.objects.size());

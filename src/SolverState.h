@@ -32,6 +32,8 @@ class SolverState {
   void bindScene() const;
   std::vector<glm::vec4> readRadiosity() const;  // atlas order, row 0 first
   std::vector<glm::vec4> readDeltaB() const;
+  // Replaces B and dB (a checkpoint's), atlas order; throws InputError if the sizes differ.
+  void restore(const std::vector<glm::vec4>& B, const std::vector<glm::vec4>& dB);
 };
 
 // Area-weighted mean B per object (DESIGN.md's report `mean_radiosity`), from a B readback.

@@ -73,6 +73,14 @@ int main(int argc, char** argv) {
   s->add_option("--atlas", solve.atlas, "Radiosity atlas, one texel per element (.exr)");
   s->add_option("--ply", solve.ply, "Mesh with per-vertex radiosity (.ply)");
   s->add_option("--report", solve.report, "Report (.json)");
+  auto* checkpoint = s->add_option("--checkpoint", solve.checkpoint,
+                                   "Write the solve's state here (atomically) at the end, on SIGINT/SIGTERM and every "
+                                   "--checkpoint-every shots");
+  s->add_option("--checkpoint-every", solve.checkpointEvery, "Also checkpoint every N shots")
+      ->check(CLI::Range(1u, 1u << 30))
+      ->needs(checkpoint);
+  s->add_option("--resume", solve.resume, "Continue from a checkpoint of the same scene and parameters")
+      ->check(CLI::ExistingFile);
   bool quiet = false;
   s->add_flag("--quiet", quiet, "No progress bar");
 

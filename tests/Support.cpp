@@ -47,7 +47,11 @@ const ObjectRadiosity& object(const Solved& s, const std::string& name) {
 }
 
 Run hemirad(const std::string& args, const std::string& env) {
-  std::string cmd = env + " " + HEMIRAD_BINARY + " " + args + " 2>&1";
+  return shell(env + " " + HEMIRAD_BINARY + " " + args);
+}
+
+Run shell(const std::string& script) {
+  std::string cmd = "HEMIRAD='" + std::string(HEMIRAD_BINARY) + "'; { " + script + "\n} 2>&1";
   Run run;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return run;

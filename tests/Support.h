@@ -35,6 +35,8 @@ struct Run {
 };
 // Runs `hemirad ARGS` through the shell (ARGS as typed), optionally with environment prefix.
 Run hemirad(const std::string& args, const std::string& env = "");
+// Runs a shell script; `$HEMIRAD` in it names the hemirad binary under test.
+Run shell(const std::string& script);
 std::string sourcePath(const std::string& relative);  // a path in the source tree
 std::string tempPath(const std::string& name);        // a fresh path in the test temp folder
 

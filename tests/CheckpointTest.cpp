@@ -1,0 +1,113 @@
+// Checkpoint and resume through the CLI: a solve stopped by a signal, or killed in the middle
+// of writing a checkpoint, resumes to the bitwise result of an uninterrupted solve; a
+// checkpoint of another scene or other parameters, or a damaged one, is refused.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/Support.h"
+
+using namespace hemirad;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// Cornell box at ~2,500 elements to 0.9: about 600 shots, a few seconds on llvmpipe.
+std::string solveArgs() { return "solve " + test::sourcePath("scenes/cornell/cornell.obj") + " --elements 2500 --quiet"; }
+
+nlohmann::json report(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
+
+// The uninterrupted solve's report, computed once.
+const nlohmann::json& uninterrupted() {
+  static nlohmann::json r = [] {
+    std::string path = test::tempPath("uninterrupted.json");
+    test::Run run = test::hemirad(solveArgs() + " --report " + path);
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    return report(path);
+  }();
+  return r;
+}
+
+// Resumes from `checkpoint` and returns the report.
+nlohmann::json resume(const std::string& checkpoint) {
+  std::string path = test::tempPath("resumed.json");
+  test::Run run = test::hemirad(solveArgs() + " --resume " + checkpoint + " --report " + path);
+  INFO(run.output);
+  REQUIRE(run.exitCode == 0);
+  return report(path);
+}
+
+}  // namespace
+
+TEST_CASE("A solve stopped by SIGTERM checkpoints and resumes to the bitwise result of an uninterrupted solve",
+          "[cli][checkpoint]") {
+  std::string ck = test::tempPath("term.ckpt");
+  // Signal the solve once its first periodic checkpoint exists: it is then well under way.
+  test::Run run = test::shell("$HEMIRAD " + solveArgs() + " --checkpoint " + ck +
+                              " --checkpoint-every 50 & p=$!\n"
+                              "while [ ! -e " + ck + " ] && kill -0 $p 2>/dev/null; do sleep 0.02; done\n"
+                              "kill -TERM $p; wait $p; echo \"exit $?\"");
+  INFO(run.output);
+  CHECK_THAT(run.output, Contains("exit 143"));
+  CHECK_THAT(run.output, Contains("interrupted by SIGTERM after"));
+  REQUIRE(std::filesystem::exists(ck));
+  nlohmann::json resumed = resume(ck);
+  CHECK(resumed["radiosity_hash"] == uninterrupted()["radiosity_hash"]);
+  CHECK(resumed["shots"] == uninterrupted()["shots"]);
+  CHECK(resumed["convergence_history"] == uninterrupted()["convergence_history"]);
+}
+
+TEST_CASE("A kill in the middle of a checkpoint write leaves the previous checkpoint whole and resumable",
+          "[cli][checkpoint]") {
+  std::string ck = test::tempPath("killed.ckpt");
+  // The test hook SIGKILLs the process half way through its third checkpoint write.
+  test::Run run = test::hemirad(solveArgs() + " --checkpoint " + ck + " --checkpoint-every 100",
+                                "HEMIRAD_TEST_KILL_IN_CHECKPOINT=3");
+  INFO(run.output);
+  CHECK(run.exitCode == 128 + 9);  // the shell's status for a child killed by SIGKILL
+  REQUIRE(std::filesystem::exists(ck));
+  nlohmann::json resumed = resume(ck);  // the second checkpoint, at >= 200 shots
+  CHECK(resumed["radiosity_hash"] == uninterrupted()["radiosity_hash"]);
+  // Nothing beside it looks like a complete checkpoint: the half-written one has a .tmp name.
+  for (const auto& f : std::filesystem::directory_iterator(std::filesystem::path(ck).parent_path()))
+    if (f.path().extension() == ".ckpt" && f.path() != ck) CHECK_THAT(f.path().stem().string(), Contains(".tmp"));
+}
+
+TEST_CASE("A finished solve's checkpoint resumes to the same result with no more shots", "[cli][checkpoint]") {
+  std::string ck = test::tempPath("final.ckpt");
+  test::Run run = test::hemirad(solveArgs() + " --checkpoint " + ck);
+  INFO(run.output);
+  REQUIRE(run.exitCode == 0);
+  nlohmann::json resumed = resume(ck);
+  CHECK(resumed["radiosity_hash"] == uninterrupted()["radiosity_hash"]);
+  CHECK(resumed["shots"] == uninterrupted()["shots"]);
+}
+
+TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint is refused", "[cli][checkpoint]") {
+  std::string ck = test::tempPath("refuse.ckpt");
+  REQUIRE(test::hemirad(solveArgs() + " --shots 32 --checkpoint " + ck).exitCode == 0);
+  auto refused = [](const test::Run& r, const std::string& why) {
+    INFO(r.output);
+    CHECK(r.exitCode == 2);
+    CHECK_THAT(r.output, Contains("hemirad: error: --resume") && Contains(why));
+  };
+  refused(test::hemirad("solve " + test::sourcePath("scenes/cornell_subdivided/cornell_x2.obj") +
+                        " --elements 2500 --quiet --resume " + ck),
+          "another scene");
+  refused(test::hemirad(solveArgs() + " --item-res 256 --resume " + ck), "item_resolution = 512, this run has 256");
+  refused(test::hemirad(solveArgs() + " --shooters-per-pass 4 --resume " + ck), "shooters_per_pass");
+  std::string cut = test::tempPath("cut.ckpt");
+  {
+    std::ifstream in(ck, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  }
+  refused(test::hemirad(solveArgs() + " --resume " + cut), "truncated or corrupt");
+  refused(test::hemirad(solveArgs() + " --resume " + test::sourcePath("scenes/cornell/cornell.obj")),
+          "not a hemirad checkpoint");
+  test::Run needs = test::hemirad(solveArgs() + " --checkpoint-every 10");
+  CHECK(needs.exitCode == 2);
+  CHECK_THAT(needs.output, Contains("--checkpoint"));
+}
