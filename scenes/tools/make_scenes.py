@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the shipped scenes (scenes/cornell, scenes/analytic). Run from the repository root.
+"""Writes the shipped scenes (scenes/cornell, cornell_subdivided, four_boxes, analytic). Run from
+the repository root.
 
 Every face is emitted counter-clockwise around its front normal: room faces face the room's
 centre, block faces face away from their block's centre.
@@ -88,10 +89,10 @@ def subdivide(faces, n):
                 out.append([at(i / n, j / n), at((i + 1) / n, j / n), at((i + 1) / n, (j + 1) / n), at(i / n, (j + 1) / n)])
     return out
 
-def cornell_subdivided(folder, n):
-    """The Cornell box with every face split n x n: n^2 times the polygons (and lights)."""
-    src = open("scenes/cornell/cornell.obj").read().splitlines()
-    o = Obj("../cornell/cornell.mtl")
+def subdivided(src_obj, mtl, n):
+    """The scene in src_obj (quads only) with every face split n x n, as an Obj using mtl."""
+    src = open(src_obj).read().splitlines()
+    o = Obj(mtl)
     verts, name, mtl, faces = [], None, None, []
     def flush():
         if name:
@@ -110,11 +111,97 @@ def cornell_subdivided(folder, n):
         elif t[0] == "f":
             faces.append([verts[int(k) - 1] for k in t[1:]])
     flush()
+    return o
+
+def cornell_subdivided(folder, n):
+    """The Cornell box with every face split n x n: n^2 times the polygons (and lights)."""
+    o = subdivided("scenes/cornell/cornell.obj", "../cornell/cornell.mtl", n)
     o.write(os.path.join(folder, f"cornell_x{n}.obj"), [
         f"The Cornell box with every face split {n} x {n} (as the thesis's subdivided environments).",
         "Written by scenes/tools/make_scenes.py."])
     with open(os.path.join(folder, f"cornell_x{n}.camera"), "w") as fh:
         fh.write("eye=278,273,-800 target=278,273,0 up=0,1,0 fov=39.3\n")
+
+FOUR_BOXES_CAMERA = "eye=150,450,40 target=278,150,559.2 up=0,1,0 fov=60"
+
+def four_boxes(folder):
+    """The thesis's multiple-enclosure environment: four closed Cornell rooms in a 2 x 2 grid,
+    each with its own ceiling light and blocks, joined by doorways in the walls they share
+    (walls 10 units thick), the camera inside room 0 looking at its doorway into room 2."""
+    X, Y, Z, T = 556.0, 548.8, 559.2, 10.0
+    lx0, lx1, lz0, lz1 = 213.0, 343.0, 227.0, 332.0
+    DW, DH = 160.0, 300.0  # doorway width and height
+    o = Obj("four_boxes.mtl")
+    jambs = []
+    def wall_x(x, z0, z1, door, towards):
+        # The wall in the plane x, spanning z0..z1, with a centred doorway if door.
+        if not door:
+            return [orient([[x, 0, z0], [x, 0, z1], [x, Y, z1], [x, Y, z0]], towards=towards)]
+        d0, d1 = (z0 + z1 - DW) / 2, (z0 + z1 + DW) / 2
+        return [orient(f, towards=towards) for f in (
+            [[x, 0, z0], [x, 0, d0], [x, Y, d0], [x, Y, z0]], [[x, 0, d1], [x, 0, z1], [x, Y, z1], [x, Y, d1]],
+            [[x, DH, d0], [x, DH, d1], [x, Y, d1], [x, Y, d0]])]
+    def wall_z(z, x0, x1, door, towards):
+        if not door:
+            return [orient([[x0, 0, z], [x1, 0, z], [x1, Y, z], [x0, Y, z]], towards=towards)]
+        d0, d1 = (x0 + x1 - DW) / 2, (x0 + x1 + DW) / 2
+        return [orient(f, towards=towards) for f in (
+            [[x0, 0, z], [d0, 0, z], [d0, Y, z], [x0, Y, z]], [[d1, 0, z], [x1, 0, z], [x1, Y, z], [d1, Y, z]],
+            [[d0, DH, z], [d1, DH, z], [d1, Y, z], [d0, Y, z]])]
+    def doorway(axis, w, c):
+        # The tunnel through a shared wall (plane `axis` = w .. w + T), centred at c along the wall.
+        d0, d1 = c - DW / 2, c + DW / 2
+        mid = [w + T / 2, DH / 2, c] if axis == "x" else [c, DH / 2, w + T / 2]
+        def p(n, t, y):  # n along the wall's normal, t along the wall
+            return [n, y, t] if axis == "x" else [t, y, n]
+        for f in ([p(w, d0, 0), p(w + T, d0, 0), p(w + T, d0, DH), p(w, d0, DH)],
+                  [p(w, d1, 0), p(w + T, d1, 0), p(w + T, d1, DH), p(w, d1, DH)],
+                  [p(w, d0, DH), p(w + T, d0, DH), p(w + T, d1, DH), p(w, d1, DH)],
+                  [p(w, d0, 0), p(w + T, d0, 0), p(w + T, d1, 0), p(w, d1, 0)]):
+            jambs.append(orient(f, towards=mid))
+    for j in range(2):
+        for i in range(2):
+            k, ox, oz = 2 * j + i, i * (X + T), j * (Z + T)
+            mid = [ox + X / 2, Y / 2, oz + Z / 2]
+            o.group(f"room{k}_floor", "white", [orient(rect(ox, ox + X, oz, oz + Z, 0), towards=mid)])
+            ceiling = [rect(ox, ox + X, oz, oz + lz0, Y), rect(ox, ox + X, oz + lz1, oz + Z, Y),
+                       rect(ox, ox + lx0, oz + lz0, oz + lz1, Y), rect(ox + lx1, ox + X, oz + lz0, oz + lz1, Y)]
+            o.group(f"room{k}_ceiling", "white", [orient(f, towards=mid) for f in ceiling])
+            o.group(f"room{k}_light", "light", [orient(rect(ox + lx0, ox + lx1, oz + lz0, oz + lz1, Y), towards=mid)])
+            o.group(f"room{k}_red_wall", "red", wall_x(ox + X, oz, oz + Z, i == 0, mid))
+            o.group(f"room{k}_green_wall", "green", wall_x(ox, oz, oz + Z, i == 1, mid))
+            o.group(f"room{k}_back_wall", "white", wall_z(oz + Z, ox, ox + X, j == 0, mid))
+            o.group(f"room{k}_front_wall", "white", wall_z(oz, ox, ox + X, j == 1, mid))
+            def block(name, top, h):
+                top = [[x + ox, y, z + oz] for x, y, z in top]
+                c = centre(top)
+                c[1] = h / 2
+                faces = [orient([[x, h, z] for x, _, z in top], away=c)]
+                for m in range(4):
+                    a, b = top[m], top[(m + 1) % 4]
+                    faces.append(orient([[a[0], 0, a[2]], [b[0], 0, b[2]], [b[0], h, b[2]], [a[0], h, a[2]]], away=c))
+                o.group(f"room{k}_{name}", "white", faces)
+            block("short_block", [[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]], 165.0)
+            block("tall_block", [[423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406]], 330.0)
+    for j in range(2):
+        doorway("x", X, j * (Z + T) + Z / 2)
+    for i in range(2):
+        doorway("z", Z, i * (X + T) + X / 2)
+    o.group("doorways", "white", jambs)
+    o.write(os.path.join(folder, "four_boxes.obj"), [
+        "Four closed Cornell rooms (2 x 2, room k = 2 j + i at x = i (556 + 10), z = j (559.2 + 10)),",
+        "each lit by its own ceiling light, joined by 160 x 300 doorways through their 10-unit shared",
+        "walls: the thesis's multiple-enclosure environment. Written by scenes/tools/make_scenes.py."])
+    with open(os.path.join(folder, "four_boxes.mtl"), "w") as fh:
+        fh.write(open("scenes/cornell/cornell.mtl").read())
+    with open(os.path.join(folder, "four_boxes.camera"), "w") as fh:
+        fh.write("# Inside room 0, by its front wall, looking through the doorway into room 2.\n" + FOUR_BOXES_CAMERA + "\n")
+    o = subdivided(os.path.join(folder, "four_boxes.obj"), "four_boxes.mtl", 2)
+    o.write(os.path.join(folder, "four_boxes_x2.obj"), [
+        "four_boxes with every face split 2 x 2 (the thesis's subdivided multiple-enclosure environment).",
+        "Written by scenes/tools/make_scenes.py."])
+    with open(os.path.join(folder, "four_boxes_x2.camera"), "w") as fh:
+        fh.write(FOUR_BOXES_CAMERA + "\n")
 
 def analytic(folder):
     mtl = ("newmtl emitter\nKd 0 0 0\nKe 1 1 1\n\n"
@@ -148,4 +235,6 @@ if __name__ == "__main__":
     os.makedirs("scenes/cornell_subdivided", exist_ok=True)
     cornell_subdivided("scenes/cornell_subdivided", 2)
     cornell_subdivided("scenes/cornell_subdivided", 4)
+    os.makedirs("scenes/four_boxes", exist_ok=True)
+    four_boxes("scenes/four_boxes")
     analytic("scenes/analytic")
