@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
+
 #include "gl/Debug.h"
 #include "gl/GL.h"
 
@@ -44,10 +46,11 @@ std::unique_ptr<RenderBackend> createBackend(const BackendOptions& options) {
     case BackendKind::OSMesa: return createOSMesaBackend(options);
     case BackendKind::Egl: return createEglBackend(options, false);
     case BackendKind::Auto:
-      // A hardware EGL device when there is one, else the software path.
+      // A hardware EGL device when there is one, else the software path, saying why.
       try {
         return createEglBackend(options, true);
-      } catch (const Error&) {
+      } catch (const Error& e) {
+        std::fprintf(stderr, "hemirad: warning: --backend auto: %s; falling back to osmesa\n", e.what());
         return createOSMesaBackend(options);
       }
   }

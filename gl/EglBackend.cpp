@@ -6,7 +6,9 @@
 #include <dlfcn.h>
 #include <fmt/format.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "gl/Backend.h"
@@ -17,6 +19,7 @@ namespace {
 
 struct EglApi {
   void* lib = nullptr;
+  std::string error;  // why dlopen failed
   PFNEGLGETPROCADDRESSPROC getProcAddress = nullptr;
   template <class F>
   F get(const char* name) const {
@@ -29,7 +32,14 @@ struct EglApi {
 EglApi& api() {
   static EglApi a = [] {
     EglApi r;
-    r.lib = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+    // HEMIRAD_EGL_LIBRARY names the library file to open instead (tests point it at nothing).
+    const char* custom = std::getenv("HEMIRAD_EGL_LIBRARY");
+    r.lib = dlopen(custom && *custom ? custom : "libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (!r.lib) {
+      const char* e = dlerror();
+      r.error = custom && *custom ? fmt::format("cannot load HEMIRAD_EGL_LIBRARY={}: {}", custom, e ? e : "")
+                                  : "libEGL.so.1 not found (install libegl1, or set HEMIRAD_EGL_LIBRARY)";
+    }
     if (r.lib) r.getProcAddress = reinterpret_cast<PFNEGLGETPROCADDRESSPROC>(dlsym(r.lib, "eglGetProcAddress"));
     return r;
   }();
@@ -50,7 +60,8 @@ class EglBackend final : public RenderBackend {
  public:
   EglBackend(const BackendOptions& options, bool hardwareOnly) {
     const EglApi& a = api();
-    if (!a.lib || !a.getProcAddress) throw Error("egl: libEGL.so.1 not found (install libegl1)");
+    if (!a.lib) throw Error("egl: " + a.error);
+    if (!a.getProcAddress) throw Error("egl: the EGL library has no eglGetProcAddress");
     auto getPlatformDisplay = a.get<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
     auto queryDevices = a.get<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
     auto queryDeviceString = a.get<PFNEGLQUERYDEVICESTRINGEXTPROC>("eglQueryDeviceStringEXT");
@@ -87,8 +98,10 @@ class EglBackend final : public RenderBackend {
     // No config and no surface: rendering goes to FBOs (EGL_KHR_no_config_context, surfaceless_context).
     context_ = createContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
     if (context_ == EGL_NO_CONTEXT) {
+      auto getError = a.get<PFNEGLGETERRORPROC>("eglGetError");
+      EGLint code = getError ? getError() : 0;
       terminate_(display_);
-      throw Error("egl: could not create a GL 4.5 core context");
+      throw Error(fmt::format("egl: could not create a GL 4.5 core context (EGL error 0x{:04x})", code));
     }
     if (!makeCurrent_(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
       destroyContext_(display_, context_);

@@ -7,6 +7,9 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "gl/Backend.h"
 
@@ -16,6 +19,7 @@ namespace {
 
 struct OSMesaApi {
   void* lib = nullptr;
+  std::string error;  // why dlopen failed
   decltype(&OSMesaCreateContextAttribs) createContextAttribs = nullptr;
   decltype(&OSMesaMakeCurrent) makeCurrent = nullptr;
   decltype(&OSMesaDestroyContext) destroyContext = nullptr;
@@ -25,9 +29,20 @@ struct OSMesaApi {
 OSMesaApi& api() {
   static OSMesaApi a = [] {
     OSMesaApi r;
-    for (const char* name : {"libOSMesa.so.8", "libOSMesa.so"})
-      if ((r.lib = dlopen(name, RTLD_NOW | RTLD_LOCAL))) break;
-    if (!r.lib) return r;
+    // HEMIRAD_OSMESA_LIBRARY names the library file to open instead (tests point it at nothing).
+    const char* custom = std::getenv("HEMIRAD_OSMESA_LIBRARY");
+    std::vector<std::string> names{"libOSMesa.so.8", "libOSMesa.so"};
+    if (custom && *custom) names = {custom};
+    for (const auto& name : names) {
+      if ((r.lib = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL))) break;
+      const char* e = dlerror();
+      if (r.error.empty() && e) r.error = e;
+    }
+    if (!r.lib) {
+      r.error = custom && *custom ? fmt::format("cannot load HEMIRAD_OSMESA_LIBRARY={}: {}", custom, r.error)
+                                  : "libOSMesa.so.8 not found (install libosmesa6, or set HEMIRAD_OSMESA_LIBRARY)";
+      return r;
+    }
     r.createContextAttribs = reinterpret_cast<decltype(r.createContextAttribs)>(dlsym(r.lib, "OSMesaCreateContextAttribs"));
     r.makeCurrent = reinterpret_cast<decltype(r.makeCurrent)>(dlsym(r.lib, "OSMesaMakeCurrent"));
     r.destroyContext = reinterpret_cast<decltype(r.destroyContext)>(dlsym(r.lib, "OSMesaDestroyContext"));
@@ -43,7 +58,7 @@ class OSMesaBackend final : public RenderBackend {
  public:
   explicit OSMesaBackend(const BackendOptions& options) {
     OSMesaApi& a = api();
-    if (!a.lib) throw Error("osmesa: libOSMesa.so.8 not found (install libosmesa6)");
+    if (!a.lib) throw Error("osmesa: " + a.error);
     if (!a.createContextAttribs || !a.makeCurrent || !a.destroyContext || !a.getProcAddress)
       throw Error("osmesa: libOSMesa lacks OSMesaCreateContextAttribs (Mesa too old)");
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE,

@@ -2,9 +2,42 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <functional>
+#include <string>
+
 #include "gl/Backend.h"
+#include "gl/Debug.h"
 
 namespace hemirad::gl {
+
+namespace {
+std::string formatBytes(double bytes) {
+  return bytes >= 1 << 30 ? fmt::format("{:.2f} GiB", bytes / (1 << 30)) : fmt::format("{:.1f} MiB", bytes / (1 << 20));
+}
+
+std::string formatName(GLenum f, int& bytesPerTexel) {
+  switch (f) {
+    case GL_RGBA32F: bytesPerTexel = 16; return "GL_RGBA32F";
+    case GL_R32UI: bytesPerTexel = 4; return "GL_R32UI";
+    case GL_R32F: bytesPerTexel = 4; return "GL_R32F";
+    case GL_DEPTH_COMPONENT32F: bytesPerTexel = 4; return "GL_DEPTH_COMPONENT32F";
+    case GL_RGBA8: bytesPerTexel = 4; return "GL_RGBA8";
+    default: bytesPerTexel = 16; return fmt::format("format 0x{:04x}", f);
+  }
+}
+
+// Storage allocation is where a GPU runs out of memory: GL_OUT_OF_MEMORY (or any error) there is
+// thrown at once, naming the allocation, instead of surfacing later as garbage.
+void checkAllocation(const std::function<std::string()>& what) {
+  GLenum e = glGetError();
+  if (e == GL_NO_ERROR) return;
+  std::string detail = takeDebugError();
+  if (!detail.empty()) detail = ": " + detail;
+  if (e == GL_OUT_OF_MEMORY) throw Error(fmt::format("out of GPU memory allocating {}{}", what(), detail));
+  throw Error(fmt::format("GL error 0x{:04x} ({}) allocating {}{}", e, errorName(e), what(), detail));
+}
+}  // namespace
 
 void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
 void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
@@ -17,6 +50,7 @@ void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
 Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
   glCreateBuffers(1, &id_);
   glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes ? bytes : 4), data, GL_DYNAMIC_STORAGE_BIT);
+  checkAllocation([&] { return fmt::format("a buffer of {} bytes ({})", bytes, formatBytes(double(bytes))); });
 }
 void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
   glNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
@@ -35,6 +69,12 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
     glTextureStorage3D(id_, 1, internalFormat, width, height, layers);
   else
     glTextureStorage2D(id_, 1, internalFormat, width, height);
+  checkAllocation([&] {
+    int texel = 0;
+    std::string name = formatName(internalFormat, texel);
+    return fmt::format("a {} x {}{} {} texture ({})", width, height, layers ? fmt::format(" x {}", layers) : "", name,
+                       formatBytes(double(texel) * width * height * std::max(layers, 1)));
+  });
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

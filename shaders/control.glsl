@@ -3,15 +3,20 @@
 // the batch returns at once (draws and dispatches stay direct: on NVIDIA, indirect arguments
 // written by the previous pass cost ~1 ms of latency a shot). Mirrored by src/Control.h (std430).
 
-const uint MAX_PASS_SHOOTERS = 64u;
+const uint MAX_PASS_SHOOTERS = 128u;  // 64 radiosity and 64 importance shooters
+
+// Slot s holds a shooter of this pass.
+#define activeShooter(s) ((s) < control.count || ((s) >= control.shootersPerPass && (s) < control.shootersPerPass + control.importanceCount))
 
 struct Shooter {
   vec4 positionArea;  // area-weighted centre of the block, its area
   vec4 normal;
-  vec4 deltaB;        // rgb area-weighted unshot radiosity of the block, a: its power
+  vec4 shot;          // what it shoots, area-weighted over the block: unshot radiosity (rgb) or
+                      // unshot importance (a), the other part 0
   ivec4 rect;         // atlas x, y, w, h of the shooting block
   uint polygon;
-  uint pad0, pad1, pad2;
+  float power;        // the ranking key it was chosen by
+  uint pad0, pad1;
 };
 
 layout(std430, binding = 3) buffer Control {
@@ -24,8 +29,9 @@ layout(std430, binding = 3) buffer Control {
   float convergence;        // after `shots` shots
   float unshotPower;
   uint historyCapacity;
-  uint shootersPerPass;     // the most shooters a pass takes
-  uint pad0, pad1;
+  uint shootersPerPass;     // K: radiosity shooters are shooter[0, count), importance shooters
+  uint importanceCount;     //    (importance-driven solves) shooter[K, K + importanceCount)
+  uint importanceShots;     // importance shots so far
   Shooter shooter[MAX_PASS_SHOOTERS];
   float history[];          // convergence after k shots, k = 0..shots (per pass: see select.comp)
 } control;

@@ -1,7 +1,8 @@
 // One pass, gathered at every receiver texel (seed 003 §39.2): for each shooter of the pass,
 // visibility from its item buffer, the disc form factor, and B += rho dB_s F, dB += rho dB_s F.
 // A shooter block's own dB is reset here (its texels are coplanar with it and receive nothing
-// from it, but do receive from the pass's other shooters).
+// from it, but do receive from the pass's other shooters). Importance (alpha: I in B, dI in
+// dB) travels the same way from importance shooters, reflected by luminance(rho) (seed 004).
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "control.glsl"
@@ -17,20 +18,23 @@ void main() {
   if (control.done != 0u || any(greaterThanEqual(t, atlasSize))) return;  // once stopped, passes are empty
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
   if (polygon == NO_POLYGON) return;
-  vec3 received = vec3(0.0);
-  bool shot = false;
-  for (uint s = 0u; s < control.count; ++s) {
+  vec4 received = vec4(0.0);
+  vec4 keep = vec4(1.0);  // 0 in the channels this texel's own block shoots this pass
+  for (uint s = 0u; s < control.shootersPerPass + control.importanceCount; ++s) {
+    if (!activeShooter(s)) continue;
+    vec4 shot = control.shooter[s].shot;
     if (inShooterBlock(s, t, polygon)) {
-      shot = true;
+      keep *= s < control.shootersPerPass ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(1.0, 1.0, 1.0, 0.0);
       continue;
     }
     bool facing;
     float visible;
     float F = shooterFormFactor(s, t, polygon, facing, visible);
-    if (F > 0.0) received += control.shooter[s].deltaB.rgb * F;
+    if (F > 0.0) received += shot * F;
   }
-  if (!shot && received == vec3(0.0)) return;
-  vec3 delta = polygons[polygon].reflectance.rgb * received;
-  imageStore(radiosity, t, imageLoad(radiosity, t) + vec4(delta, 0.0));
-  imageStore(deltaB, t, (shot ? vec4(0.0) : imageLoad(deltaB, t)) + vec4(delta, 0.0));
+  if (keep == vec4(1.0) && received == vec4(0.0)) return;
+  vec3 rho = polygons[polygon].reflectance.rgb;
+  vec4 delta = vec4(rho, luminance(rho)) * received;
+  imageStore(radiosity, t, imageLoad(radiosity, t) + delta);
+  imageStore(deltaB, t, imageLoad(deltaB, t) * keep + delta);
 }

@@ -15,7 +15,7 @@ void main() {
   int face = gl_InstanceID % ITEM_FACES;
   gl_Layer = gl_InstanceID;
   vPolygon = polygon;
-  if (shooter >= control.count) {  // a short pass, or the stop rule fired: draw nothing
+  if (!activeShooter(shooter)) {  // a short pass, or the stop rule fired: draw nothing
     gl_Position = vec4(0.0, 0.0, 0.0, -1.0);
     gl_ClipDistance[0] = -1.0;
     return;

@@ -13,30 +13,40 @@ struct Entry {
 
 layout(std430, binding = 1) readonly buffer Blocks { ivec4 blockRect[]; };  // atlas x, y, w, h
 layout(std430, binding = 2) readonly buffer In { Entry src[]; };
-layout(binding = 1, rgba32f) uniform readonly image2D deltaB;
+layout(binding = 0, rgba32f) uniform readonly image2D radiosity;  // a: importance I
+layout(binding = 1, rgba32f) uniform readonly image2D deltaB;     // a: unshot importance dI
 uniform uint count;       // entries (or blocks) to fold
 uniform bool fromBlocks;  // first level: compute the entries from the blocks
 uniform uint keep;        // entries kept per group: the shooters a pass takes
+// What blocks are ranked by: 0 unshot power; 1 unshot power x (the block's largest importance +
+// importanceFloor), the importance-driven choice (seed 004 §4.2.4, a max-map over the block);
+// 2 |unshot importance| x area, for the importance shooters.
+uniform uint rankBy;
+uniform float importanceFloor;
 
 const uint GROUP_ENTRIES = 1024u;
 shared float rankPower[GROUP_ENTRIES];
 shared uint rankIndex[GROUP_ENTRIES];
 shared float groupSum[256];
 
-// Unshot power luminance(dB) * A of one block (a texel, or 2^k x 2^k texels with substructuring).
-float blockPower(ivec4 r) {
-  float power = 0.0;
+// One block (a texel, or 2^k x 2^k texels with substructuring): its ranking key and its unshot
+// power luminance(dB) * A.
+Entry blockEntry(uint i) {
+  ivec4 r = blockRect[i];
+  float power = 0.0, importance = 0.0, largest = 0.0;
   for (int y = r.y; y < r.y + r.w; ++y)
-    for (int x = r.x; x < r.x + r.z; ++x)
-      power += luminance(imageLoad(deltaB, ivec2(x, y)).rgb) * texelFetch(atlasPositionArea, ivec2(x, y), 0).w;
-  return power;
+    for (int x = r.x; x < r.x + r.z; ++x) {
+      vec4 d = imageLoad(deltaB, ivec2(x, y));
+      float area = texelFetch(atlasPositionArea, ivec2(x, y), 0).w;
+      power += luminance(d.rgb) * area;
+      importance += d.a * area;
+      if (rankBy == 1u) largest = max(largest, imageLoad(radiosity, ivec2(x, y)).a);
+    }
+  float key = rankBy == 0u ? power : rankBy == 1u ? power * (largest + importanceFloor) : abs(importance);
+  return Entry(key, i, power, 0.0);
 }
 
-Entry loadEntry(uint i) {
-  if (!fromBlocks) return src[i];
-  float p = blockPower(blockRect[i]);
-  return Entry(p, i, p, 0.0);
-}
+Entry loadEntry(uint i) { return fromBlocks ? blockEntry(i) : src[i]; }
 
 // Slot a ranks before slot b: more power first, ties to the lower block (a total order).
 bool ranksBefore(uint a, uint b) {

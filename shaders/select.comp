@@ -1,18 +1,29 @@
 // The last level of the shooter reduction (one workgroup, over the blocks themselves when
-// they are few), then the stop rule and the shooters of the next pass: the `keep` blocks with
-// the most unshot power (seed 003's batching), fewer when the shot budget or the power ends.
+// they are few), then the stop rule and the shooters of the next pass: the `keep` blocks that
+// rank first (seed 003's batching), fewer when the shot budget or the power ends. With
+// importanceShooters (importance-driven solves, after the radiosity selection of the same
+// pass) it picks the pass's importance shooters instead, into slots keep, keep + 1, ...
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "reduce_entry.glsl"
 #include "control.glsl"
 
 layout(local_size_x = 256) in;
+uniform bool importanceShooters;
+uniform float importanceThreshold;  // below this |dI| A a block is not worth an importance shot
 shared uint passShooters;
 
 void main() {
   rankGroup(0u, count);
   uint l = gl_LocalInvocationID.x;
-  if (l == 0u) {
+  if (l == 0u && importanceShooters) {
+    uint n = 0u;
+    if (control.done == 0u)
+      while (n < keep && rankPower[n] > importanceThreshold) ++n;
+    control.importanceCount = n;
+    control.importanceShots += n;
+    passShooters = n;
+  } else if (l == 0u) {
     float convergence = 1.0 - groupSum[0] / control.emittedPower;
     control.convergence = convergence;
     control.unshotPower = groupSum[0];
@@ -29,28 +40,33 @@ void main() {
       control.history[k] = convergence;
     control.done = stop ? 1u : 0u;
     control.count = n;
+    control.importanceCount = 0u;
     control.shots += n;
     passShooters = n;
   }
   sync();
   if (l >= passShooters) return;
-  // Shooter l shoots from its block's area-weighted centre with its area-weighted unshot radiosity.
+  // The shooter shoots from its block's area-weighted centre with its area-weighted unshot
+  // radiosity (or importance).
   ivec4 r = blockRect[rankIndex[l]];
-  vec3 power = vec3(0.0), centre = vec3(0.0);
+  vec4 unshot = vec4(0.0);
+  vec3 centre = vec3(0.0);
   float area = 0.0;
   uint polygon = NO_POLYGON;
   for (int y = r.y; y < r.y + r.w; ++y)
     for (int x = r.x; x < r.x + r.z; ++x) {
       vec4 pa = texelFetch(atlasPositionArea, ivec2(x, y), 0);
       if (pa.w <= 0.0) continue;
-      power += imageLoad(deltaB, ivec2(x, y)).rgb * pa.w;
+      unshot += imageLoad(deltaB, ivec2(x, y)) * pa.w;
       centre += pa.xyz * pa.w;
       area += pa.w;
       polygon = texelFetch(atlasPolygon, ivec2(x, y), 0).r;
     }
-  control.shooter[l].positionArea = vec4(centre / area, area);
-  control.shooter[l].normal = vec4(polygons[polygon].normal.xyz, 0.0);
-  control.shooter[l].deltaB = vec4(power / area, rankPower[l]);
-  control.shooter[l].rect = r;
-  control.shooter[l].polygon = polygon;
+  uint slot = importanceShooters ? keep + l : l;
+  control.shooter[slot].positionArea = vec4(centre / area, area);
+  control.shooter[slot].normal = vec4(polygons[polygon].normal.xyz, 0.0);
+  control.shooter[slot].shot = importanceShooters ? vec4(0.0, 0.0, 0.0, unshot.a / area) : vec4(unshot.rgb / area, 0.0);
+  control.shooter[slot].rect = r;
+  control.shooter[slot].polygon = polygon;
+  control.shooter[slot].power = rankPower[l];
 }

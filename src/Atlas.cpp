@@ -1,8 +1,12 @@
 #include "src/Atlas.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numeric>
+#include <string>
 
 #include "src/Error.h"
 
@@ -13,6 +17,14 @@ namespace {
 constexpr int kGutter = 1;
 // Cuts smaller than this fraction of a texel are numerical slivers, not elements.
 constexpr double kMinCutFraction = 1e-9;
+// Over any GPU's texture size; keeps cell counts far from int overflow (fuzzed slivers).
+constexpr double kMaxChartSide = 1 << 20;
+// Memory per atlas texel: four GPU textures (centre+area, polygon id, B, dB: 52 bytes, host memory
+// on llvmpipe) and the CPU's copies (atlas, emission, read-backs, output images), rounded up.
+constexpr double kBytesPerTexel = 128;
+// Above this many elements the texel size is not refined by counting cut cells (a clip per cell:
+// minutes at 10^8); such counts are over the limits anyway, or within a few % of right.
+constexpr std::size_t kMaxCountedElements = std::size_t(1) << 24;
 
 struct ChartShape {
   PlaneFrame frame;
@@ -32,7 +44,11 @@ ChartShape chartShape(const ScenePolygon& p, double ts) {
     lo = glm::min(lo, q), hi = glm::max(hi, q);
   }
   glm::dvec2 extent = hi - lo;
-  c.size = glm::max(glm::ivec2(glm::ceil(extent / ts - 1e-9)), glm::ivec2(1));
+  glm::dvec2 cells = glm::ceil(extent / ts - 1e-9);
+  if (!(cells.x <= kMaxChartSide && cells.y <= kMaxChartSide))
+    fail("a polygon {:.4g} long needs over {} texels at texel size {}; use a larger --texel-size",
+         std::max(extent.x, extent.y), kMaxChartSide, ts);
+  c.size = glm::max(glm::ivec2(cells), glm::ivec2(1));
   c.corner = lo - (glm::dvec2(c.size) * ts - extent) * 0.5;
   return c;
 }
@@ -46,49 +62,102 @@ void forEachCut(const ChartShape& c, double ts, Fn&& fn) {
     }
 }
 
+std::vector<ChartShape> chartShapes(const Scene& scene, double ts) {
+  std::vector<ChartShape> shapes;
+  for (auto& p : scene.polygons()) shapes.push_back(chartShape(p, ts));
+  return shapes;
+}
+
+struct Layout {
+  bool packed = false;           // within maxSize on both sides
+  double width = 0, height = 0;  // texels (if not packed: as far as packing got)
+  std::vector<glm::ivec2> origins;
+};
+
+// Shelf packing, tallest first, into an atlas about as wide as high; the order is fixed, so the
+// layout is deterministic. Stops as soon as a side would exceed maxSize.
+Layout pack(const std::vector<ChartShape>& shapes, int maxSize) {
+  Layout l;
+  double paddedArea = 0, widest = 0;
+  for (auto& s : shapes) {
+    paddedArea += double(s.size.x + 2 * kGutter) * (s.size.y + 2 * kGutter);
+    widest = std::max(widest, double(s.size.x + 2 * kGutter));
+  }
+  l.width = std::max(widest, std::ceil(std::sqrt(paddedArea)));
+  l.height = std::ceil(paddedArea / std::max(l.width, 1.0));
+  if (l.width > maxSize || paddedArea > double(maxSize) * maxSize) return l;
+  std::vector<int> order(shapes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return shapes[a].size.y > shapes[b].size.y; });
+  l.origins.resize(shapes.size());
+  int width = int(l.width), x = 0, y = 0, shelf = 0;
+  for (int id : order) {
+    glm::ivec2 padded = shapes[id].size + 2 * kGutter;
+    if (x + padded.x > width) x = 0, y += shelf, shelf = 0;
+    if (y + padded.y > maxSize) return l.height = y + padded.y, l;
+    l.origins[id] = glm::ivec2(x, y) + kGutter;
+    x += padded.x;
+    shelf = std::max(shelf, padded.y);
+  }
+  l.height = y + shelf;
+  l.packed = true;
+  return l;
+}
+
+bool fits(const Layout& l, double maxBytes) { return l.packed && l.width * l.height * kBytesPerTexel <= maxBytes; }
+
+std::string bytesText(double b) {
+  return b >= double(1 << 30) ? fmt::format("{:.1f} GiB", b / (1 << 30)) : fmt::format("{:.1f} MiB", b / (1 << 20));
+}
+
+// This machine's memory (or its cgroup's limit, if less): on llvmpipe, the GPU's memory too.
+double hostMemoryBytes() {
+  double bytes = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE)), limit = 0;
+  if (std::ifstream cgroup("/sys/fs/cgroup/memory.max"); cgroup >> limit && limit > 0) bytes = std::min(bytes, limit);
+  return bytes;
+}
+
+// The error for an atlas over a limit, with the texel size that fits (found by packing, 5 % steps).
+[[noreturn]] void failOverLimit(const Scene& scene, double ts, const Layout& l, int maxSize, double maxBytes) {
+  const double texels = l.width * l.height;
+  std::string limit = !l.packed ? fmt::format("over the GPU's limit of {} texels a side (GL_MAX_TEXTURE_SIZE)", maxSize)
+                                : fmt::format("{} of memory, over the memory limit of {}",
+                                              bytesText(texels * kBytesPerTexel), bytesText(maxBytes));
+  double fit = ts * std::sqrt(std::max({1.0, texels / (double(maxSize) * maxSize), texels * kBytesPerTexel / maxBytes}));
+  for (int i = 0; i < 200 && !fits(pack(chartShapes(scene, fit), maxSize), maxBytes); ++i) fit *= 1.05;
+  double elements = scene.totalArea() / (fit * fit);
+  double digits = std::pow(10.0, std::floor(std::log10(std::max(elements, 1.0))) - 1);  // two significant
+  fail("texel size {:.4g} needs a {:.0f} x {:.0f} texel atlas, {}; use --texel-size {:.4g} or larger (or --elements {:.0f} "
+       "or fewer)",
+       ts, l.width, l.height, limit, fit, std::max(1.0, std::floor(elements / digits) * digits));
+}
+
 }  // namespace
 
-Atlas buildAtlas(const Scene& scene, double ts, int maxSize) {
+Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes) {
   if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
   const auto& polys = scene.polygons();
   Atlas atlas;
   atlas.texelSize = ts;
-  std::vector<ChartShape> shapes;
-  for (auto& p : polys) shapes.push_back(chartShape(p, ts));
-
-  // Shelf packing, tallest first; the order is fixed, so the layout is deterministic.
-  std::vector<int> order(polys.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return shapes[a].size.y > shapes[b].size.y; });
-  double paddedArea = 0;
-  int widest = 0;
-  for (auto& s : shapes) {
-    paddedArea += double(s.size.x + 2 * kGutter) * (s.size.y + 2 * kGutter);
-    widest = std::max(widest, s.size.x + 2 * kGutter);
-  }
-  int width = std::max(widest, int(std::ceil(std::sqrt(paddedArea))));
-  if (width > maxSize || paddedArea > double(maxSize) * maxSize)
-    fail("texel size {} needs an atlas over {} texels wide (the limit); use --texel-size {:.4g} or larger", ts, maxSize,
-         ts * std::sqrt(paddedArea) / maxSize * 1.1);
+  const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
+  // Charts cover at least the scene's area: far over the texture limit, say so before cutting
+  // the scene into more cells than any GPU holds.
+  if (double least = scene.totalArea() / (ts * ts); least > double(maxSize) * maxSize)
+    failOverLimit(scene, ts, {false, std::sqrt(least), std::sqrt(least), {}}, maxSize, memory);
+  std::vector<ChartShape> shapes = chartShapes(scene, ts);
+  Layout layout = pack(shapes, maxSize);
+  if (!fits(layout, memory)) failOverLimit(scene, ts, layout, maxSize, memory);
   atlas.charts.resize(polys.size());
-  int x = 0, y = 0, shelf = 0;
-  for (int id : order) {
-    glm::ivec2 padded = shapes[id].size + 2 * kGutter;
-    if (x + padded.x > width) x = 0, y += shelf, shelf = 0;
+  for (size_t id = 0; id < polys.size(); ++id) {
     Chart& c = atlas.charts[id];
-    c.polygon = id;
-    c.origin = glm::ivec2(x, y) + kGutter;
+    c.polygon = int(id);
+    c.origin = layout.origins[id];
     c.size = shapes[id].size;
     c.frame = shapes[id].frame;
     c.corner = shapes[id].corner;
-    x += padded.x;
-    shelf = std::max(shelf, padded.y);
   }
-  atlas.width = width;
-  atlas.height = y + shelf;
-  if (atlas.height > maxSize)
-    fail("texel size {} needs an atlas {} texels high, over the limit {}; use --texel-size {:.4g} or larger", ts,
-         atlas.height, maxSize, ts * std::sqrt(double(atlas.height) / maxSize) * 1.1);
+  atlas.width = int(layout.width);
+  atlas.height = int(layout.height);
 
   size_t texels = size_t(atlas.width) * atlas.height;
   atlas.positionArea.assign(texels, glm::vec4(0.0f));
@@ -103,16 +172,25 @@ Atlas buildAtlas(const Scene& scene, double ts, int maxSize) {
       ++atlas.elements;
     });
   }
+  if (atlas.elements == 0 && !polys.empty())
+    fail("texel size {} leaves no element: every polygon is a sliver under {} of a texel; use a smaller --texel-size",
+         ts, kMinCutFraction);
   return atlas;
 }
 
 double texelSizeForElements(const Scene& scene, std::size_t elements) {
   if (elements == 0) fail("--elements must be positive");
+  if (scene.polygons().empty()) fail("{}: the scene has no faces with area", scene.path);
   double ts = std::sqrt(scene.totalArea() / double(elements));
+  // A thin sliver gets at least one element per texel of its length: start where its length
+  // alone gives no more than `elements`, or the first count below walks billions of cells.
+  for (auto& p : scene.polygons())
+    for (auto& v : p.vertices) ts = std::max(ts, glm::length(v - p.vertices.front()) / double(elements));
   // Partial texels add elements; a few fixed-point steps on the real count settle it.
-  for (int iter = 0; iter < 4; ++iter) {
+  for (int iter = 0; iter < 4 && elements <= kMaxCountedElements; ++iter) {
     size_t count = 0;
     for (auto& p : scene.polygons()) forEachCut(chartShape(p, ts), ts, [&](int, int, const Poly2&) { ++count; });
+    if (count == 0) break;  // only slivers: buildAtlas says so
     ts *= std::sqrt(double(count) / double(elements));
   }
   return ts;

@@ -47,8 +47,9 @@ class Atlas {
   glm::vec3 sample(const std::vector<glm::vec4>& values, int polygon, glm::dvec2 coord) const;
 };
 
-// Builds the atlas; throws InputError if it would exceed maxSize texels on a side.
-Atlas buildAtlas(const Scene& scene, double texelSize, int maxSize = 16384);
+// Builds the atlas; throws InputError, naming the limit and a texel size that fits, if it would
+// exceed maxSize texels on a side or need more than maxBytes of memory (0: this machine's).
+Atlas buildAtlas(const Scene& scene, double texelSize, int maxSize = 16384, std::size_t maxBytes = 0);
 // The texel size that gives about `elements` elements (partial texels counted).
 double texelSizeForElements(const Scene& scene, std::size_t elements);
 

@@ -5,23 +5,26 @@
 
 namespace hemirad {
 
-inline constexpr unsigned kMaxPassShooters = 64;  // MAX_PASS_SHOOTERS in control.glsl
+inline constexpr unsigned kMaxPassShooters = 64;  // radiosity shooters a pass; as many importance ones
+inline constexpr unsigned kShooterSlots = 2 * kMaxPassShooters;  // MAX_PASS_SHOOTERS in control.glsl
 
 struct ShooterRecord {
   float positionArea[4];
   float normal[4];
-  float deltaB[4];
+  float shot[4];
   std::int32_t rect[4];
-  std::uint32_t polygon, pad[3];
+  std::uint32_t polygon;
+  float power;
+  std::uint32_t pad[2];
 };
 static_assert(sizeof(ShooterRecord) == 80);
 
 struct ControlBlock {
   std::uint32_t shots, maxShots, done, count;
   float targetConvergence, emittedPower, convergence, unshotPower;
-  std::uint32_t historyCapacity, shootersPerPass, pad[2];
-  ShooterRecord shooter[kMaxPassShooters];
+  std::uint32_t historyCapacity, shootersPerPass, importanceCount, importanceShots;
+  ShooterRecord shooter[kShooterSlots];
 };
-static_assert(sizeof(ControlBlock) == 48 + 80 * kMaxPassShooters);
+static_assert(sizeof(ControlBlock) == 48 + 80 * kShooterSlots);
 
 }  // namespace hemirad

@@ -45,8 +45,11 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   for (; left > kGroupEntries; left = gl::groupsFor(left, kGroupEntries) * keep)
     levels_.emplace_back(gl::groupsFor(left, kGroupEntries) * keep * sizeof(float[4]));
 
+  // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
   itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, settings.itemResolution,
-                                             state.farDistance, settings.projection, settings.shootersPerPass);
+                                             state.farDistance, settings.projection,
+                                             settings.shootersPerPass * (settings.importance ? 2 : 1));
+  if (settings.importance) view_ = std::make_unique<ImportanceView>(state);
   gather_ = gl::computeProgram("gather.comp", itemBuffer_->defines());
 
   // The control block: stop rule, convergence history.
@@ -67,6 +70,14 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   select_.set("keep", keep);
   reduce_.set("keep", keep);
   select_.set("fromBlocks", int(levels_.empty()));
+  // Importance is a view fraction per unit area: 1 / (total area) if spread evenly. An
+  // importance shot is not worth it below a millionth of the view's importance.
+  double area = 0;
+  for (const auto& pa : state.atlas.positionArea) area += pa.w;
+  const float floor = float(settings.importanceFloor / area);
+  reduce_.set("importanceFloor", floor);
+  select_.set("importanceFloor", floor);
+  select_.set("importanceThreshold", 1e-6f);
   glProgramUniform2i(gather_.id(), gather_.location("atlasSize"), state.atlas.width, state.atlas.height);
   gl::checkErrors("progressive solver setup");
 }
@@ -75,12 +86,26 @@ ProgressiveSolver::~ProgressiveSolver() = default;
 
 void ProgressiveSolver::selectPass() {
   state_.bindScene();
+  state_.radiosity.bindImage(0, GL_READ_ONLY);
   state_.deltaB.bindImage(1, GL_READ_ONLY);
   blocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  rankPass(settings_.importance ? 1 : 0, false);
+  if (settings_.importance) rankPass(2, true);
+}
+
+void ProgressiveSolver::look(const Camera& camera, double aspect) {
+  if (!view_) throw std::logic_error("look() needs an importance-driven solver");
+  view_->look(camera, aspect);
+}
+
+// One ranking of the blocks (reduce_entry.glsl's rankBy) and the selection from it.
+void ProgressiveSolver::rankPass(unsigned rankBy, bool importanceShooters) {
   // Many blocks: rank them 1024 at a time in parallel first; the last ranking runs in select.comp.
   unsigned n = unsigned(blockCount_);
   bool fromBlocks = true;
   reduce_.use();
+  reduce_.set("rankBy", rankBy);
   for (gl::Buffer& level : levels_) {
     level.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
     reduce_.set("count", n);
@@ -91,8 +116,9 @@ void ProgressiveSolver::selectPass() {
     n = gl::groupsFor(n, kGroupEntries) * unsigned(settings_.shootersPerPass);
     fromBlocks = false;
   }
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   select_.use();  // its count and input kind are fixed per scene: set in the constructor
+  select_.set("rankBy", rankBy);
+  select_.set("importanceShooters", int(importanceShooters));
   gl::Program::dispatch(1);
   glMemoryBarrier(kAllBarriers);
 }
@@ -126,19 +152,25 @@ SolveStatus ProgressiveSolver::advance(unsigned shots) {
   return readStatus();
 }
 
+// State bytes: the control block's header, the convergence history, then (importance-driven)
+// the direct importance R per atlas texel.
 std::vector<std::uint8_t> ProgressiveSolver::saveState() const {
   constexpr std::size_t header = offsetof(ControlBlock, shooter);
   const std::size_t history = std::min(status_.shots + 1, historyCapacity_) * sizeof(float);
-  std::vector<std::uint8_t> bytes(header + history);
+  std::vector<float> direct = view_ ? view_->readDirect() : std::vector<float>{};
+  std::vector<std::uint8_t> bytes(header + history + direct.size() * sizeof(float));
   control_.read(0, header, bytes.data());
   control_.read(sizeof(ControlBlock), history, bytes.data() + header);
+  if (!direct.empty())  // memcpy from an empty vector's null data() is UB (UBSan, ci/sanitize)
+    std::memcpy(bytes.data() + header + history, direct.data(), direct.size() * sizeof(float));
   return bytes;
 }
 
 SolveStatus ProgressiveSolver::restoreState(std::span<const std::uint8_t> bytes) {
   constexpr std::size_t header = offsetof(ControlBlock, shooter);
+  const std::size_t direct = view_ ? state_.atlas.positionArea.size() * sizeof(float) : 0;
   ControlBlock c{};
-  if (bytes.size() < header || (bytes.size() - header) % sizeof(float) != 0)
+  if (bytes.size() < header + direct || (bytes.size() - header - direct) % sizeof(float) != 0)
     throw InputError("checkpoint: progressive solver state is corrupt");
   std::memcpy(&c, bytes.data(), header);
   // This run's stop rule; the shots and history go on from the checkpoint's.
@@ -146,11 +178,18 @@ SolveStatus ProgressiveSolver::restoreState(std::span<const std::uint8_t> bytes)
   c.targetConvergence = float(settings_.stop.targetConvergence);
   c.historyCapacity = historyCapacity_;
   c.done = 0;
-  c.count = 0;
+  c.count = c.importanceCount = 0;
   control_.upload(0, header, &c);
-  const std::size_t history = std::min<std::size_t>((bytes.size() - header) / sizeof(float), historyCapacity_);
+  const std::size_t history =
+      std::min<std::size_t>((bytes.size() - header - direct) / sizeof(float), historyCapacity_);
   control_.upload(sizeof(ControlBlock), history * sizeof(float), bytes.data() + header);
+  if (view_) {
+    std::vector<float> r(state_.atlas.positionArea.size());
+    std::memcpy(r.data(), bytes.data() + bytes.size() - direct, direct);
+    view_->restoreDirect(r);
+  }
   status_ = {c.shots, c.convergence, false};
+  importanceShots_ = c.importanceShots;
   return status_;
 }
 
@@ -166,6 +205,7 @@ SolveStatus ProgressiveSolver::readStatus() {
   timings_.gather = sampled_[kGather] * scale;
   gl::checkErrors("progressive shot");
   status_ = {c.shots, c.convergence, c.done != 0};
+  importanceShots_ = c.importanceShots;
   return status_;
 }
 

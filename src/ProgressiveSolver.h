@@ -8,6 +8,8 @@
 
 #include "gl/Objects.h"
 #include "gl/Timer.h"
+#include "src/Camera.h"
+#include "src/ImportanceView.h"
 #include "src/ItemBuffer.h"
 #include "src/Solver.h"
 #include "src/SolverState.h"
@@ -23,6 +25,12 @@ struct ProgressiveSettings {
   // unshot state, so a pass's fixed costs (reduction, launches, barriers) are shared by K shots.
   // 16: the fastest on the H100 and llvmpipe at 10k elements (docs/bench), 1 % more shots.
   int shootersPerPass = 16;
+  // Importance-driven shooting (seed 004 §4.2, `--algorithm importance`): each pass also
+  // shoots importance from as many blocks, and radiosity shooters are ranked by unshot power x
+  // (largest importance in the block + importanceFloor / total area). The floor lets power
+  // nobody looks at be shot in the end, so the solve still converges everywhere.
+  bool importance = false;
+  double importanceFloor = 0.01;
   // Per-pass times: GPU stamps on a sample of the passes, every shot synchronised, or none.
   gl::TimerMode timings = gl::TimerMode::Gpu;
   StopRule stop;
@@ -32,7 +40,12 @@ class ProgressiveSolver final : public Solver {
  public:
   ProgressiveSolver(SolverState& state, const ProgressiveSettings& settings);
   ~ProgressiveSolver() override;
-  std::string algorithm() const override { return "progressive"; }
+  std::string algorithm() const override { return settings_.importance ? "importance" : "progressive"; }
+  // Importance-driven solves: the user's view (aspect width / height) that drives them, again
+  // whenever it moves; the importance already shot is corrected by the difference.
+  void look(const Camera& camera, double aspect);
+  unsigned importanceShots() const { return importanceShots_; }
+  std::vector<float> directImportance() const { return view_ ? view_->readDirect() : std::vector<float>{}; }
   // Runs passes of up to shootersPerPass shots until `shots` more have been enqueued.
   SolveStatus advance(unsigned shots) override;
   const PassTimings& timings() const override { return timings_; }
@@ -45,6 +58,7 @@ class ProgressiveSolver final : public Solver {
 
  private:
   void selectPass();
+  void rankPass(unsigned rankBy, bool importanceShooters);
   void gatherPass();
   SolveStatus readStatus();
 
@@ -53,6 +67,8 @@ class ProgressiveSolver final : public Solver {
   gl::Program reduce_, select_, gather_;
   gl::Buffer blocks_, control_;
   std::unique_ptr<ItemBuffer> itemBuffer_;
+  std::unique_ptr<ImportanceView> view_;  // importance-driven solves only
+  unsigned importanceShots_ = 0;
   std::vector<gl::Buffer> levels_;  // outputs of the parallel reduction levels (large scenes)
   std::size_t blockCount_ = 0;
   unsigned historyCapacity_ = 0;

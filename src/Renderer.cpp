@@ -1,39 +1,12 @@
 #include "src/Renderer.h"
 
-#include <cstddef>
-
 #include "gl/Debug.h"
 #include "gl/Shader.h"
 
 namespace hemirad {
 
-namespace {
-struct CameraVertex {
-  float position[3];
-  float atlas[2];
-  std::uint32_t polygon;
-};
-}  // namespace
-
-Renderer::Renderer(const SolverState& state) : state_(state) {
-  program_ = gl::renderProgram("camera.vert", "camera.frag");
-  std::vector<CameraVertex> verts;
-  const auto& polys = state.scene.polygons();
-  for (std::uint32_t id = 0; id < polys.size(); ++id) {
-    const Poly3& v = polys[id].vertices;
-    auto vertex = [&](const glm::dvec3& p) {
-      glm::dvec2 a = state.atlas.atlasCoord(int(id), p);
-      verts.push_back({{float(p.x), float(p.y), float(p.z)}, {float(a.x), float(a.y)}, id});
-    };
-    for (size_t k = 1; k + 1 < v.size(); ++k) vertex(v[0]), vertex(v[k]), vertex(v[k + 1]);
-  }
-  vertexCount_ = verts.size();
-  vertices_ = gl::Buffer(std::span<const CameraVertex>(verts));
-  vao_.vertexBuffer(vertices_, sizeof(CameraVertex));
-  vao_.floatAttribute(0, 3, offsetof(CameraVertex, position));
-  vao_.floatAttribute(1, 2, offsetof(CameraVertex, atlas));
-  vao_.uintAttribute(2, offsetof(CameraVertex, polygon));
-}
+Renderer::Renderer(const SolverState& state)
+    : state_(state), program_(gl::renderProgram("camera.vert", "camera.frag")), mesh_(state.scene, state.atlas) {}
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample) {
   return render(camera, width, height, supersample, state_.radiosity);
@@ -50,8 +23,7 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, black);
   glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
 
-  double reach = glm::length(camera.target - camera.eye) + state_.farDistance;
-  glm::mat4 vp = camera.viewProjection(double(width) / height, reach * 1e-5, reach);
+  glm::mat4 vp = CameraMesh::viewProjection(camera, double(width) / height, state_.farDistance);
   fbo.bind();
   glViewport(0, 0, w, h);
   glEnable(GL_DEPTH_TEST);
@@ -62,8 +34,7 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   atlasValues.bindUnit(2);
   program_.set("viewProjection", &vp[0][0]);
   program_.use();
-  vao_.bind();
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertexCount_));
+  mesh_.draw();
   gl::checkErrors("camera render");
 
   std::vector<float> rgba(size_t(w) * h * 4);

@@ -5,6 +5,7 @@
 
 #include "gl/Objects.h"
 #include "src/Camera.h"
+#include "src/CameraMesh.h"
 #include "src/Image.h"
 #include "src/SolverState.h"
 
@@ -21,9 +22,7 @@ class Renderer {
  private:
   const SolverState& state_;
   gl::Program program_;
-  gl::Buffer vertices_;
-  gl::VertexArray vao_;
-  std::size_t vertexCount_ = 0;
+  CameraMesh mesh_;
 };
 
 }  // namespace hemirad

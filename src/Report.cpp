@@ -31,6 +31,8 @@ nlohmann::json reportJson(const RunInfo& r) {
       {"item_resolution", r.itemResolution},
       {"item_triangles", r.itemTriangles},
       {"shoot_level", r.shootLevel},
+      {"shooters_per_pass", r.shootersPerPass},
+      {"importance_shots", r.importanceShots},
       {"timings_ms",
        {{"total", r.totalMs},
         {"item_buffer", r.timings.itemBuffer},

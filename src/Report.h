@@ -13,7 +13,8 @@ namespace hemirad {
 struct RunInfo {
   std::string backend, renderer, algorithm, scene;
   double texelSize = 0;
-  int itemSubdivision = 0, itemResolution = 0, shootLevel = 0;
+  int itemSubdivision = 0, itemResolution = 0, shootLevel = 0, shootersPerPass = 0;
+  unsigned importanceShots = 0;  // importance-driven solves
   std::size_t elements = 0, itemTriangles = 0;
   int atlasWidth = 0, atlasHeight = 0;
   SolveStatus status;

@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -31,10 +32,39 @@ std::string trim(std::string s) {
   return b == std::string::npos ? "" : s.substr(b, e - b + 1);
 }
 
+// Face indices, checked before tinyobjloader reads them with atoi: 0 and words would fail with a
+// bare parse error, numbers beyond int wrap round into valid-looking indices. A positive index
+// past the vertices so far may be a forward reference: it goes to `ahead`, checked at the end.
+void checkFaceIndices(std::istringstream& ss, const std::string& path, int no, long long vertices,
+                      std::vector<std::pair<int, long long>>& ahead) {
+  std::string word;
+  while (ss >> word) {
+    size_t start = 0;
+    for (int part = 0; start <= word.size(); ++part) {  // v, v/vt, v//vn, v/vt/vn
+      size_t slash = word.find('/', start);
+      std::string index = word.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+      start = slash == std::string::npos ? word.size() + 1 : slash + 1;
+      if (index.empty() && part > 0) continue;
+      char* end = nullptr;
+      errno = 0;
+      long long i = std::strtoll(index.c_str(), &end, 10);
+      if (index.empty() || end == index.c_str() || *end != '\0')
+        fail("{}:{}: face index '{}' is not a number", path, no, index.empty() ? word : index);
+      if (errno == ERANGE || i > INT32_MAX || i < INT32_MIN) fail("{}:{}: face index {} is out of range", path, no, index);
+      if (i == 0) fail("{}:{}: face index 0 (OBJ indices start at 1)", path, no);
+      if (part == 0 && i < 0 && -i > vertices)
+        fail("{}:{}: relative vertex index {} reaches before the first vertex ({} so far)", path, no, i, vertices);
+      if (part == 0 && i > vertices) ahead.emplace_back(no, i);
+    }
+  }
+}
+
 ObjLines scanLines(const std::string& path) {
   std::ifstream in(path);
   ObjLines lines;
   std::string line;
+  long long vertices = 0;
+  std::vector<std::pair<int, long long>> ahead;  // (line, vertex index) past the vertices before it
   for (int no = 1; std::getline(in, line); ++no) {
     std::istringstream ss(line);
     std::string key;
@@ -50,30 +80,101 @@ ObjLines scanLines(const std::string& path) {
         if (!std::isfinite(x)) fail("{}:{}: vertex coordinate is not a finite number", path, no);
         p = end;
       }
+      ++vertices;
     } else if (key == "f") {
       lines.faces.push_back(no);
+      checkFaceIndices(ss, path, no, vertices, ahead);
     } else if (key == "usemtl") {
       lines.usemtl.emplace_back(trim(line.substr(line.find("usemtl") + 6)), no);
     } else if (key == "mtllib") {
       lines.mtllib.emplace_back(trim(line.substr(line.find("mtllib") + 6)), no);
     }
   }
+  for (auto [no, index] : ahead)
+    if (index > vertices) fail("{}:{}: face refers to vertex {} but the file has {} vertices", path, no, index, vertices);
   return lines;
+}
+
+// Kd, Ka and Ke values must be finite numbers: tinyobjloader reads a word that is no number
+// ("nan", "inf") as 0, so `Kd nan 0 0` would be a silent black material.
+void scanMaterialNumbers(const std::string& objPath, const ObjLines& lines) {
+  for (const auto& mtllib : lines.mtllib) {
+    std::istringstream split(mtllib.first);
+    std::string name, line;
+    while (split >> name) {
+      std::string mtlPath = (std::filesystem::path(objPath).parent_path() / name).string();
+      std::ifstream in(mtlPath);
+      for (int no = 1; std::getline(in, line); ++no) {
+        std::istringstream ss(line);
+        std::string key, word;
+        ss >> key;
+        if (key != "Kd" && key != "Ka" && key != "Ke") continue;
+        for (int i = 0; i < 3 && ss >> word; ++i) {
+          char* end = nullptr;
+          double x = std::strtod(word.c_str(), &end);
+          if (*end != '\0' || !std::isfinite(x)) fail("{}:{}: {} value '{}' is not a finite number", name, no, key, word);
+        }
+      }
+    }
+  }
+}
+
+// Where each material's newmtl, Kd, Ka and Ke are ("FILE:LINE"), which tinyobjloader does not
+// keep. Also refuses a material library that is there but is no readable file (a folder).
+struct MtlLines {
+  std::map<std::string, std::vector<std::string>> newmtl;              // every definition of a name
+  std::map<std::pair<std::string, std::string>, std::string> values;  // (name, key): its line
+  std::string fallback;
+  std::string at(const std::string& name, const std::string& key) const {
+    if (auto v = values.find({name, key}); v != values.end()) return v->second;
+    // Kd before any newmtl makes an entry for "" with no definition (fuzzer crasher, tests/fuzz).
+    if (auto d = newmtl.find(name); d != newmtl.end() && !d->second.empty()) return d->second.front();
+    return fallback;
+  }
+};
+
+MtlLines scanMaterialLines(const std::string& objPath, const ObjLines& lines) {
+  namespace fs = std::filesystem;
+  MtlLines out;
+  out.fallback = lines.mtllib.empty() ? objPath : lines.mtllib.front().first;
+  for (const auto& [names, mtllibLine] : lines.mtllib) {
+    std::istringstream split(names);
+    std::string name, line, current;
+    while (split >> name) {
+      fs::path mtlPath = fs::path(objPath).parent_path() / name;
+      std::error_code ec;
+      if (fs::exists(mtlPath, ec) && (!fs::is_regular_file(mtlPath, ec) || !std::ifstream(mtlPath)))
+        fail("{}:{}: material library '{}' is not a readable file", objPath, mtllibLine, name);
+      std::ifstream in(mtlPath);
+      for (int no = 1; std::getline(in, line); ++no) {
+        std::istringstream ss(line);
+        std::string key;
+        ss >> key;
+        std::string where = fmt::format("{}:{}", mtlPath.string(), no);
+        if (key == "newmtl") out.newmtl[current = trim(line.substr(line.find("newmtl") + 6))].push_back(where);
+        // A second definition of a name is refused before its values are read.
+        if ((key == "Kd" || key == "Ka" || key == "Ke") && out.newmtl[current].size() == 1) out.values[{current, key}] = where;
+      }
+    }
+  }
+  return out;
 }
 
 bool finite3(const double* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
-Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, const std::string& mtlName) {
+Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, const MtlLines& mtl) {
   const double* e = options.emission == EmissionSource::Ka ? m.ambient : m.emission;
   Material out{m.name, {m.diffuse[0], m.diffuse[1], m.diffuse[2]}, {e[0], e[1], e[2]}};
   const char* eKey = options.emission == EmissionSource::Ka ? "Ka" : "Ke";
-  if (!finite3(m.diffuse) || !finite3(e)) fail("{}: material '{}': Kd or {} is not a finite number", mtlName, m.name, eKey);
+  const std::string kd = mtl.at(m.name, "Kd"), ek = mtl.at(m.name, eKey);
+  if (!finite3(m.diffuse)) fail("{}: material '{}': Kd is not a finite number", kd, m.name);
+  if (!finite3(e)) fail("{}: material '{}': {} is not a finite number", ek, m.name, eKey);
   for (int c = 0; c < 3; ++c) {
     if (out.reflectance[c] >= 1.0)
-      fail("{}: material '{}': reflectance Kd {} is >= 1 (no energy would ever be absorbed)", mtlName, m.name,
+      fail("{}: material '{}': reflectance Kd {} is >= 1 (no energy would ever be absorbed)", kd, m.name,
            out.reflectance[c]);
-    if (out.reflectance[c] < 0.0) fail("{}: material '{}': reflectance Kd {} is negative", mtlName, m.name, out.reflectance[c]);
-    if (out.emission[c] < 0.0) fail("{}: material '{}': emission {} {} is negative", mtlName, m.name, eKey, out.emission[c]);
+    if (out.reflectance[c] < 0.0) fail("{}: material '{}': reflectance Kd {} is negative", kd, m.name, out.reflectance[c]);
+    if (out.emission[c] < 0.0) fail("{}: material '{}': emission {} {} is negative", ek, m.name, eKey, out.emission[c]);
   }
   return out;
 }
@@ -83,9 +184,11 @@ Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, co
 Scene loadScene(const std::string& path, const LoadOptions& options) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) fail("{}: no such file", path);
+  if (!fs::exists(path, ec)) fail("{}: no such file", path);
+  if (!fs::is_regular_file(path, ec)) fail("{}: is not a readable file (a folder?)", path);
   if (!std::ifstream(path)) fail("{}: cannot be read", path);
   ObjLines lines = scanLines(path);
+  const MtlLines mtl = scanMaterialLines(path, lines);
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // polygons keep their planarity
@@ -101,14 +204,19 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
     std::string name = lines.mtllib.empty() ? "" : lines.mtllib.front().first;
     fail("{}:{}: material library '{}' not found next to the OBJ", path, line, name);
   }
+  scanMaterialNumbers(path, lines);
 
   Scene scene;
   scene.path = path;
-  std::string mtlName = lines.mtllib.empty() ? path : lines.mtllib.front().first;
   std::map<std::string, int> materialIds;
   for (const auto& m : reader.GetMaterials()) {
-    if (materialIds.count(m.name)) fail("{}: material '{}' is defined twice", mtlName, m.name);
-    materialIds[m.name] = scene.addMaterial(toMaterial(m, options, mtlName));
+    if (materialIds.count(m.name)) {
+      auto d = mtl.newmtl.find(m.name);
+      bool known = d != mtl.newmtl.end() && d->second.size() > 1;
+      fail("{}: material '{}' is defined twice{}", known ? d->second[1] : mtl.fallback, m.name,
+           known ? " (first at " + d->second[0] + ")" : "");
+    }
+    materialIds[m.name] = scene.addMaterial(toMaterial(m, options, mtl));
   }
   for (const auto& [name, line] : lines.usemtl)
     if (!materialIds.count(name)) fail("{}:{}: unknown material '{}' (not in the MTL file)", path, line, name);

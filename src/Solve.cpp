@@ -75,6 +75,7 @@ int runSolve(const SolveOptions& o) {
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
   SolverState state(scene, atlas);
   ProgressiveSolver solver(state, o.progressive);
+  const double aspect = double(o.width) / o.height;
   const nlohmann::json identity = checkpointIdentity(scene, atlas, o, solver);
   SolveStatus status;
   if (resumed) {
@@ -83,6 +84,7 @@ int runSolve(const SolveOptions& o) {
     status = solver.restoreState(resumed->solver);
     resumed.reset();
   }
+  if (o.progressive.importance) solver.look(camera, aspect);  // after a restore: no change
 
   // Shots run in batches between status readbacks; a signal or a due checkpoint is handled
   // between batches, where the GPU state is whole. Batch sizes never change the result.
@@ -133,6 +135,8 @@ int runSolve(const SolveOptions& o) {
   run.itemSubdivision = o.progressive.itemSubdivision;
   run.itemResolution = o.progressive.itemResolution;
   run.shootLevel = o.progressive.shootLevel;
+  run.shootersPerPass = o.progressive.shootersPerPass;
+  run.importanceShots = solver.importanceShots();
   run.elements = atlas.elements;
   run.itemTriangles = solver.itemTriangles();
   run.atlasWidth = atlas.width;

@@ -1,6 +1,8 @@
 // hemirad: GPU progressive-refinement radiosity with a hemispherical item buffer.
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fmt/format.h>
 
 #include "gl/Backend.h"
@@ -20,7 +22,15 @@ void addSceneFlags(CLI::App* cmd, std::string& scene, LoadOptions& load, Discret
   cmd->add_option("--emission", load.emission, "MTL key that gives emission: ke (default) or ka (the thesis)")
       ->transform(CLI::CheckedTransformer(emission, CLI::ignore_case));
   auto* ts = cmd->add_option("--texel-size", d.texelSize, "Element (texel) side in scene units")
-                 ->check(CLI::PositiveNumber);
+                 ->check(CLI::Validator(
+                     [](std::string& v) {
+                       char* end = nullptr;
+                       double x = std::strtod(v.c_str(), &end);
+                       return end != v.c_str() && *end == '\0' && x > 0 && std::isfinite(x)
+                                  ? std::string()
+                                  : "must be a positive number of scene units, not '" + v + "'";
+                     },
+                     "SIZE > 0"));
   cmd->add_option("--elements", d.elements, "Choose the texel size for about N elements (default 10000)")
       ->check(CLI::Range(std::size_t(1), std::size_t(1) << 28))
       ->excludes(ts);
@@ -52,6 +62,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"stereographic", "hemicube"}));
   s->add_option("--shoot-level", pr.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 1)")
       ->check(CLI::Range(0, 8));
+  s->add_option_function<std::string>(
+       "--algorithm", [&pr](const std::string& a) { pr.importance = a == "importance"; },
+       "progressive (default) or importance: shooters ranked by unshot power x importance from the camera (seed 004)")
+      ->check(CLI::IsMember({"progressive", "importance"}));
   s->add_option("--shooters-per-pass", pr.shootersPerPass,
                 fmt::format("Seed 003's batching: the K best blocks shoot in one pass (default 16, at most {})",
                             kMaxPassShooters))
@@ -61,7 +75,7 @@ int main(int argc, char** argv) {
       "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)");
   s->add_option("--backend", backend, "GL backend: osmesa (default), egl, auto")
       ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
-  s->add_option("--gpu", solve.backend.gpu, "EGL device index")->check(CLI::NonNegativeNumber);
+  s->add_option("--gpu", solve.backend.gpu, "EGL device index")->check(CLI::Range(0, 1023));
   s->add_flag("--gl-debug", solve.backend.debug, "Report GL errors through KHR_debug");
   s->add_option("--camera", solve.camera, "eye=x,y,z,target=x,y,z,up=x,y,z,fov=degrees (default: SCENE.camera)");
   s->add_option("--width", solve.width, "Image width (default 512)")->check(CLI::Range(1, 16384));

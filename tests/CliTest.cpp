@@ -92,7 +92,7 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
   auto hashOf = [](const std::string& flags, const std::string& env) {
     std::string report = test::tempPath("det" + std::to_string(std::hash<std::string>{}(flags + env)) + ".json");
     test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
-                                      " --elements 2000 --shots 160 --quiet " + flags + " --report " + report,
+                                      " --elements 1500 --shots 96 --quiet " + flags + " --report " + report,
                                   env);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
@@ -103,11 +103,10 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
   CHECK(a == b);
   CHECK(a == one);
   CHECK(a == three);
-  for (const char* flags : {"--shooters-per-pass 1", "--hemisphere hemicube"}) {
+  for (const char* flags : {"--shooters-per-pass 1", "--hemisphere hemicube", "--algorithm importance"}) {
     INFO(flags);
-    std::string x = hashOf(flags, ""), y = hashOf(flags, ""), single = hashOf(flags, "LP_NUM_THREADS=1");
+    std::string x = hashOf(flags, ""), single = hashOf(flags, "LP_NUM_THREADS=1");
     CHECK(x != a);  // a different path, so a different (but reproducible) result
-    CHECK(x == y);
     CHECK(x == single);
   }
 }

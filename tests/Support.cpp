@@ -1,5 +1,8 @@
 #include "tests/Support.h"
 
+#include "cpu/Hemisphere.h"
+#include "src/Renderer.h"
+
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -26,13 +29,16 @@ gl::RenderBackend& backend() {
   return *b;
 }
 
-Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings) {
+Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings, const Camera* camera) {
   backend();
   Solved out;
   out.atlas = buildAtlas(scene, texelSize);
   SolverState state(scene, out.atlas);
   ProgressiveSolver solver(state, settings);
+  if (settings.importance) solver.look(*camera, 1.0);
   while (!out.status.done) out.status = solver.advance(64);
+  if (settings.importance) out.direct = solver.directImportance();
+  if (camera) out.view = Renderer(state).render(*camera, 128, 128, 1);
   out.B = state.readRadiosity();
   out.dB = state.readDeltaB();
   out.objects = objectRadiosity(scene, out.atlas, out.B);
@@ -44,6 +50,27 @@ const ObjectRadiosity& object(const Solved& s, const std::string& name) {
   for (const auto& o : s.objects)
     if (o.name == name) return o;
   throw std::runtime_error("no object " + name);
+}
+
+double discRowSum(const Scene& scene, const Atlas& a, size_t s) {
+  glm::dvec3 ps(a.positionArea[s]), ns = scene.polygons()[a.polygonOf[s]].normal;
+  double As = a.positionArea[s].w, sum = 0;
+  for (size_t j = 0; j < a.polygonOf.size(); ++j) {
+    if (a.polygonOf[j] == kNoPolygon || a.polygonOf[j] == a.polygonOf[s]) continue;
+    glm::dvec3 d = glm::dvec3(a.positionArea[j]) - ps;
+    double r2 = glm::dot(d, d);
+    glm::dvec3 w = d / std::sqrt(r2);
+    sum += cpu::discFormFactor(glm::dot(ns, w), -glm::dot(scene.polygons()[a.polygonOf[j]].normal, w), r2, As) *
+           a.positionArea[j].w / As;
+  }
+  return sum;
+}
+
+double meanDiscRowSum(const Scene& scene, const Atlas& a) {
+  double sigma = 0, area = 0;
+  for (std::size_t t = 0; t < a.polygonOf.size(); ++t)
+    if (a.polygonOf[t] != kNoPolygon) sigma += discRowSum(scene, a, t) * a.positionArea[t].w, area += a.positionArea[t].w;
+  return sigma / area;
 }
 
 Run hemirad(const std::string& args, const std::string& env) {

@@ -7,6 +7,8 @@
 
 #include "gl/Backend.h"
 #include "src/Atlas.h"
+#include "src/Camera.h"
+#include "src/Image.h"
 #include "src/ProgressiveSolver.h"
 #include "src/Scene.h"
 
@@ -18,7 +20,9 @@ int material(Scene& scene, double rho, double emission);
 
 struct Solved {
   Atlas atlas;
-  std::vector<glm::vec4> B, dB;
+  std::vector<glm::vec4> B, dB;  // alpha: importance I and unshot importance dI
+  std::vector<float> direct;     // importance-driven: R per atlas texel
+  Image view;                    // with a camera: the solution seen from it, 128 x 128
   SolveStatus status;
   std::vector<ObjectRadiosity> objects;
   std::uint64_t hash = 0;
@@ -26,8 +30,17 @@ struct Solved {
 
 // The backend shared by the [gl] tests (OSMesa; HEMIRAD_TEST_BACKEND=egl picks EGL).
 gl::RenderBackend& backend();
-Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings);
+// With `camera`: importance-driven solves look from it, and the result is rendered from it.
+Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings,
+             const Camera* camera = nullptr);
 const ObjectRadiosity& object(const Solved& s, const std::string& name);
+
+// What the disc form factor of DESIGN.md hands on from element `s` in a convex scene (no
+// occlusion): sum over receivers j of F_js A_j / A_s. Exact form factors give 1 in a closed box;
+// the disc approximation gives a little less near edges.
+double discRowSum(const Scene& scene, const Atlas& atlas, std::size_t s);
+// Its area-weighted mean over the elements: sigma in E / (1 - rho sigma).
+double meanDiscRowSum(const Scene& scene, const Atlas& atlas);
 
 struct Run {
   int exitCode = -1;

@@ -1,0 +1,26 @@
+// Direct importance from the user's view (seed 004 §4.2.3, §4.2.6): R' = the fraction of the
+// view's pixels showing the element, per unit of its area, and the change dR = R' - R added to
+// the importance I (alpha of B) and the unshot importance dI (alpha of dB), so a camera move
+// re-shoots only the difference.
+#include "scene.glsl"
+
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(binding = 0, rgba32f) uniform image2D radiosity;
+layout(binding = 1, rgba32f) uniform image2D deltaB;
+layout(binding = 2, r32ui) uniform readonly uimage2D pixels;
+layout(binding = 3, r32f) uniform image2D direct;
+uniform ivec2 atlasSize;
+uniform float viewPixels;
+
+void main() {
+  ivec2 t = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(t, atlasSize))) return;
+  float area = texelFetch(atlasPositionArea, t, 0).w;
+  if (area <= 0.0) return;
+  float r = float(imageLoad(pixels, t).r) / (viewPixels * area);
+  float dR = r - imageLoad(direct, t).r;
+  if (dR == 0.0) return;
+  imageStore(direct, t, vec4(r));
+  imageStore(radiosity, t, imageLoad(radiosity, t) + vec4(0.0, 0.0, 0.0, dR));
+  imageStore(deltaB, t, imageLoad(deltaB, t) + vec4(0.0, 0.0, 0.0, dR));
+}

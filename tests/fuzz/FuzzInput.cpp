@@ -1,0 +1,67 @@
+#include "tests/fuzz/FuzzInput.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "src/Atlas.h"
+#include "src/Error.h"
+#include "src/SceneLoader.h"
+
+namespace hemirad::fuzz {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Bounds the atlas (the loader does not) so a valid but huge scene is a refusal, not an OOM.
+constexpr std::size_t kElements = 200;
+constexpr int kMaxAtlasSize = 2048;
+
+// One folder per process, removed at exit; /dev/shm keeps the fuzzer's writes off the disk.
+struct TempFolder {
+  fs::path dir;
+  TempFolder() {
+    std::error_code ec;
+    fs::path base = fs::is_directory("/dev/shm", ec) && access("/dev/shm", W_OK) == 0 ? fs::path("/dev/shm")
+                                                                                      : fs::temp_directory_path();
+    dir = base / ("hemirad-fuzz-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+  }
+  ~TempFolder() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+void writeFile(const fs::path& path, std::string_view text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(text.data(), std::streamsize(text.size()));
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace
+
+Outcome loadFuzzInput(std::string_view input) {
+  static TempFolder folder;
+  size_t cut = input.find(kMtlSeparator);
+  std::string_view obj = input.substr(0, cut);
+  std::string_view mtl = cut == std::string_view::npos ? std::string_view() : input.substr(cut + kMtlSeparator.size());
+  writeFile(folder.dir / "scene.mtl", mtl);
+  writeFile(folder.dir / "scene.obj", "mtllib scene.mtl\n" + std::string(obj));
+
+  Outcome out;
+  try {
+    Scene scene = loadScene((folder.dir / "scene.obj").string());
+    Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, kElements), kMaxAtlasSize);
+    validateSolvable(scene);
+    out.loaded = true;
+    out.elements = atlas.elements;
+  } catch (const InputError& e) {
+    out.error = e.what();
+  }
+  return out;
+}
+
+}  // namespace hemirad::fuzz
