@@ -38,6 +38,21 @@ class Obj:
 def rect(x0, x1, z0, z1, y):
     return [[x0, y, z0], [x1, y, z0], [x1, y, z1], [x0, y, z1]]
 
+# The Cornell box's blocks: top quads (x, y, z) and heights.
+SHORT_BLOCK = [[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]]
+TALL_BLOCK = [[423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406]]
+
+def block_faces(top, h, ox=0.0, oz=0.0):
+    """A block standing on y = 0 under the quad `top`, moved by (ox, 0, oz): top and four sides."""
+    top = [[x + ox, y, z + oz] for x, y, z in top]
+    c = centre(top)
+    c[1] = h / 2
+    faces = [orient([[x, h, z] for x, _, z in top], away=c)]
+    for i in range(4):
+        a, b = top[i], top[(i + 1) % 4]
+        faces.append(orient([[a[0], 0, a[2]], [b[0], 0, b[2]], [b[0], h, b[2]], [a[0], h, a[2]]], away=c))
+    return faces
+
 def cornell(folder):
     # Cornell's published box (graphics.cornell.edu/online/box/data.html), squared so every wall
     # is planar (the published walls are off-plane by up to 3.2 units), with a hole in the
@@ -53,16 +68,8 @@ def cornell(folder):
     o.group("back_wall", "white", [orient([[0, 0, Z], [X, 0, Z], [X, Y, Z], [0, Y, Z]], towards=mid)])
     o.group("left_wall", "red", [orient([[X, 0, 0], [X, 0, Z], [X, Y, Z], [X, Y, 0]], towards=mid)])
     o.group("right_wall", "green", [orient([[0, 0, 0], [0, 0, Z], [0, Y, Z], [0, Y, 0]], towards=mid)])
-    def block(name, top, h):
-        c = centre(top)
-        c[1] = h / 2
-        faces = [orient([[x, h, z] for x, _, z in top], away=c)]
-        for i in range(4):
-            a, b = top[i], top[(i + 1) % 4]
-            faces.append(orient([[a[0], 0, a[2]], [b[0], 0, b[2]], [b[0], h, b[2]], [a[0], h, a[2]]], away=c))
-        o.group(name, "white", faces)
-    block("short_block", [[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]], 165.0)
-    block("tall_block", [[423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406]], 330.0)
+    o.group("short_block", "white", block_faces(SHORT_BLOCK, 165.0))
+    o.group("tall_block", "white", block_faces(TALL_BLOCK, 330.0))
     o.write(os.path.join(folder, "cornell.obj"), [
         "Cornell box: Cornell's published geometry (units: mm), walls squared to be planar,",
         "ceiling split around the light. Written by scenes/tools/make_scenes.py."])
@@ -172,17 +179,8 @@ def four_boxes(folder):
             o.group(f"room{k}_green_wall", "green", wall_x(ox, oz, oz + Z, i == 1, mid))
             o.group(f"room{k}_back_wall", "white", wall_z(oz + Z, ox, ox + X, j == 0, mid))
             o.group(f"room{k}_front_wall", "white", wall_z(oz, ox, ox + X, j == 1, mid))
-            def block(name, top, h):
-                top = [[x + ox, y, z + oz] for x, y, z in top]
-                c = centre(top)
-                c[1] = h / 2
-                faces = [orient([[x, h, z] for x, _, z in top], away=c)]
-                for m in range(4):
-                    a, b = top[m], top[(m + 1) % 4]
-                    faces.append(orient([[a[0], 0, a[2]], [b[0], 0, b[2]], [b[0], h, b[2]], [a[0], h, a[2]]], away=c))
-                o.group(f"room{k}_{name}", "white", faces)
-            block("short_block", [[130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]], 165.0)
-            block("tall_block", [[423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406]], 330.0)
+            o.group(f"room{k}_short_block", "white", block_faces(SHORT_BLOCK, 165.0, ox, oz))
+            o.group(f"room{k}_tall_block", "white", block_faces(TALL_BLOCK, 330.0, ox, oz))
     for j in range(2):
         doorway("x", X, j * (Z + T) + Z / 2)
     for i in range(2):
