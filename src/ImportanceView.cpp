@@ -72,8 +72,6 @@ std::vector<float> ImportanceView::readDirect() const {
   return out;
 }
 
-}  // namespace hemirad
-
-namespace hemirad {
 void ImportanceView::restoreDirect(const std::vector<float>& direct) { direct_.upload(GL_RED, GL_FLOAT, direct.data()); }
+
 }  // namespace hemirad
