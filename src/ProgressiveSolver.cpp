@@ -48,8 +48,8 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
   itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, settings.itemResolution,
                                              state.farDistance, settings.projection,
-                                             settings.shootersPerPass * (settings.importance ? 2 : 1));
-  if (settings.importance) view_ = std::make_unique<ImportanceView>(state);
+                                             settings.shootersPerPass * (settings.importanceDriven() ? 2 : 1));
+  if (settings.importanceDriven()) view_ = std::make_unique<ImportanceView>(state);
   gather_ = gl::computeProgram("gather.comp", itemBuffer_->defines());
 
   // The control block: stop rule, convergence history.
@@ -90,8 +90,8 @@ void ProgressiveSolver::selectPass() {
   state_.deltaB.bindImage(1, GL_READ_ONLY);
   blocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  rankPass(settings_.importance ? 1 : 0, false);
-  if (settings_.importance) rankPass(2, true);
+  rankPass(settings_.importanceDriven() ? 1 : 0, false);
+  if (settings_.importanceDriven()) rankPass(2, true);
 }
 
 void ProgressiveSolver::look(const Camera& camera, double aspect) {

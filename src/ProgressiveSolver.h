@@ -29,8 +29,9 @@ struct ProgressiveSettings {
   // shoots importance from as many blocks, and radiosity shooters are ranked by unshot power x
   // (largest importance in the block + importanceFloor / total area). The floor lets power
   // nobody looks at be shot in the end, so the solve still converges everywhere.
-  bool importance = false;
+  Algorithm algorithm = Algorithm::Progressive;
   double importanceFloor = 0.01;
+  bool importanceDriven() const { return algorithm != Algorithm::Progressive; }
   // Per-pass times: GPU stamps on a sample of the passes, every shot synchronised, or none.
   gl::TimerMode timings = gl::TimerMode::Gpu;
   StopRule stop;
@@ -40,7 +41,7 @@ class ProgressiveSolver final : public Solver {
  public:
   ProgressiveSolver(SolverState& state, const ProgressiveSettings& settings);
   ~ProgressiveSolver() override;
-  std::string algorithm() const override { return settings_.importance ? "importance" : "progressive"; }
+  std::string algorithm() const override { return algorithmName(settings_.algorithm); }
   // Importance-driven solves: the user's view (aspect width / height) that drives them, again
   // whenever it moves; the importance already shot is corrected by the difference.
   void look(const Camera& camera, double aspect);

@@ -84,7 +84,7 @@ int runSolve(const SolveOptions& o) {
     status = solver.restoreState(resumed->solver);
     resumed.reset();
   }
-  if (o.progressive.importance) solver.look(camera, aspect);  // after a restore: no change
+  if (o.progressive.importanceDriven()) solver.look(camera, aspect);  // after a restore: no change
 
   // Shots run in batches between status readbacks; a signal or a due checkpoint is handled
   // between batches, where the GPU state is whole. Batch sizes never change the result.

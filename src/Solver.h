@@ -8,6 +8,16 @@
 
 namespace hemirad {
 
+// The algorithms behind `--algorithm`. Importance- and perspective-driven shooting (seed 004)
+// run on the progressive solver; stochastic iteration and instant radiosity will join here.
+enum class Algorithm { Progressive, Importance, Perspective };
+Algorithm parseAlgorithm(const std::string& name);  // throws InputError
+const char* algorithmName(Algorithm a);
+inline const std::vector<std::string>& algorithmNames() {
+  static const std::vector<std::string> names{"progressive", "importance", "perspective"};
+  return names;
+}
+
 struct SolveStatus {
   unsigned shots = 0;
   double convergence = 0;  // DESIGN.md: 1 - sum |dB| A / sum E A (luminance)

@@ -63,9 +63,10 @@ int main(int argc, char** argv) {
   s->add_option("--shoot-level", pr.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 1)")
       ->check(CLI::Range(0, 8));
   s->add_option_function<std::string>(
-       "--algorithm", [&pr](const std::string& a) { pr.importance = a == "importance"; },
-       "progressive (default) or importance: shooters ranked by unshot power x importance from the camera (seed 004)")
-      ->check(CLI::IsMember({"progressive", "importance"}));
+       "--algorithm", [&pr](const std::string& a) { pr.algorithm = parseAlgorithm(a); },
+       "progressive (default); importance: shooters ranked by unshot power x importance from the camera; "
+       "perspective: importance-driven, and only what the view sees receives (seed 004)")
+      ->check(CLI::IsMember(algorithmNames()));
   s->add_option("--shooters-per-pass", pr.shootersPerPass,
                 fmt::format("Seed 003's batching: the K best blocks shoot in one pass (default 16, at most {})",
                             kMaxPassShooters))

@@ -16,7 +16,7 @@ Camera sceneCamera(const std::string& relative) { return resolveCamera(load(rela
 
 ProgressiveSettings importanceDriven(unsigned maxShots, double converge = 0) {
   ProgressiveSettings s;
-  s.importance = true;
+  s.algorithm = Algorithm::Importance;
   s.stop = {maxShots, converge};
   return s;
 }

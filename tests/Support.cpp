@@ -35,9 +35,9 @@ Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& se
   out.atlas = buildAtlas(scene, texelSize);
   SolverState state(scene, out.atlas);
   ProgressiveSolver solver(state, settings);
-  if (settings.importance) solver.look(*camera, 1.0);
+  if (settings.importanceDriven()) solver.look(*camera, 1.0);
   while (!out.status.done) out.status = solver.advance(64);
-  if (settings.importance) out.direct = solver.directImportance();
+  if (settings.importanceDriven()) out.direct = solver.directImportance();
   if (camera) out.view = Renderer(state).render(*camera, 128, 128, 1);
   out.B = state.readRadiosity();
   out.dB = state.readDeltaB();
