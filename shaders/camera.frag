@@ -3,6 +3,9 @@
 #include "scene.glsl"
 
 layout(binding = 2) uniform sampler2D radiosity;
+// Seed 004's display-only ambient term (ambient.comp): rho_j A is added to what is shown.
+layout(std430, binding = 5) readonly buffer Ambient { vec4 ambient; };
+uniform bool addAmbient;
 in vec2 vAtlas;
 flat in uint vPolygon;
 layout(location = 0) out vec4 color;
@@ -28,5 +31,7 @@ void main() {
       if (texelFetch(atlasPolygon, t, 0).r == vPolygon) sum = texelFetch(radiosity, t, 0).rgb, weight = 1.0;
     }
   }
-  color = vec4(weight > 0.0 ? sum / weight : vec3(0.0), 1.0);
+  vec3 b = weight > 0.0 ? sum / weight : vec3(0.0);
+  if (addAmbient) b += polygons[vPolygon].reflectance.rgb * ambient.rgb;
+  color = vec4(b, 1.0);
 }

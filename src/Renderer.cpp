@@ -6,7 +6,43 @@
 namespace hemirad {
 
 Renderer::Renderer(const SolverState& state)
-    : state_(state), program_(gl::renderProgram("camera.vert", "camera.frag")), mesh_(state.scene, state.atlas) {}
+    : state_(state),
+      program_(gl::renderProgram("camera.vert", "camera.frag")),
+      ambientProgram_(gl::computeProgram("ambient.comp")),
+      ambientTerm_(sizeof(glm::vec4)),
+      mesh_(state.scene, state.atlas) {
+  // Seed 004: a unit of light meets rho_avg (area-weighted) at each bounce, so all of them
+  // together hand on R = 1 + rho_avg + rho_avg^2 + ... = 1 / (1 - rho_avg).
+  glm::dvec3 rhoArea(0.0);
+  double area = 0;
+  for (std::size_t t = 0; t < state.atlas.polygonOf.size(); ++t) {
+    if (state.atlas.polygonOf[t] == kNoPolygon) continue;
+    const double a = state.atlas.positionArea[t].w;
+    rhoArea += a * state.scene.materials[state.scene.polygons()[state.atlas.polygonOf[t]].material].reflectance;
+    area += a;
+  }
+  const glm::dvec3 rhoAvg = area > 0 ? rhoArea / area : glm::dvec3(0.0);
+  const glm::vec3 interreflection(1.0 / (1.0 - glm::min(rhoAvg, glm::dvec3(0.999))));
+  glProgramUniform3fv(ambientProgram_.id(), ambientProgram_.location("interreflection"), 1, &interreflection[0]);
+  ambientProgram_.set("totalArea", float(area));
+}
+
+void Renderer::updateAmbient() {
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  state_.bindScene();
+  state_.deltaB.bindImage(1, GL_READ_ONLY);
+  ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  ambientProgram_.use();
+  gl::Program::dispatch(1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+glm::vec3 Renderer::ambientTerm() {
+  updateAmbient();
+  glm::vec4 a;
+  ambientTerm_.read(0, sizeof a, &a);
+  return glm::vec3(a);
+}
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample) {
   return render(camera, width, height, supersample, state_.radiosity);
@@ -32,6 +68,10 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   state_.bindScene();
   atlasValues.bindUnit(2);
+  const bool ambient = ambient_ && &atlasValues == &state_.radiosity;
+  if (ambient) updateAmbient();
+  ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  program_.set("addAmbient", int(ambient));
   program_.set("viewProjection", &vp[0][0]);
   program_.use();
   mesh_.draw();

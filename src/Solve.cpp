@@ -55,6 +55,14 @@ Checkpoint takeCheckpoint(const SolverState& state, const Solver& solver, const 
 
 }  // namespace
 
+void addAmbientFlag(CLI::App* cmd, bool& ambient) {
+  static const std::map<std::string, bool> onOff{{"on", true}, {"off", false}};
+  cmd->add_option("--ambient", ambient,
+                  "Seed 004's ambient term R x (area-averaged unshot radiosity) x rho on the camera images: on "
+                  "(default) or off. Never in B, the report, the atlas or the PLY")
+      ->transform(CLI::CheckedTransformer(onOff, CLI::ignore_case));
+}
+
 int runSolve(const SolveOptions& o) {
   auto start = std::chrono::steady_clock::now();
   for (auto [path, flag] : {std::pair{o.out, "--out"}, {o.image, "--image"}, {o.atlas, "--atlas"}, {o.ply, "--ply"},
@@ -118,7 +126,9 @@ int runSolve(const SolveOptions& o) {
   Image view;
   double scale = 1;
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty()) {
-    view = Renderer(state).render(camera, o.width, o.height, o.supersample);
+    Renderer renderer(state);
+    renderer.setAmbient(o.ambient);
+    view = renderer.render(camera, o.width, o.height, o.supersample);
     scale = exposureScale(view, o.exposure);
   }
   if (!o.out.empty()) writeExr(o.out, view);

@@ -1,5 +1,6 @@
 // `hemirad solve` and `hemirad info`: the commands, apart from flag parsing (src/main.cpp).
 #pragma once
+#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
@@ -24,6 +25,7 @@ struct SolveOptions {
   std::optional<std::string> camera;
   int width = 512, height = 512, supersample = 2;
   double exposure = 0;  // stops over the automatic exposure
+  bool ambient = true;  // seed 004's ambient term on the camera images (never on B, report, atlas, PLY)
   std::string out, image, atlas, ply, report;
   std::string checkpoint;           // written every checkpointEvery shots, at the end and on SIGINT/SIGTERM
   unsigned checkpointEvery = 0;     // 0: only at the end and on a signal
@@ -32,6 +34,8 @@ struct SolveOptions {
 };
 
 int runSolve(const SolveOptions& options);
+// `--ambient on|off` (default on): seed 004's ambient term on previews; shared with `view`.
+void addAmbientFlag(CLI::App* cmd, bool& ambient);
 
 struct InfoOptions {
   std::string scene;

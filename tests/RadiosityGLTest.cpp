@@ -8,19 +8,7 @@
 using namespace hemirad;
 
 namespace {
-// A closed unit cube, faces inward, every face emitting E with reflectance rho; face
-// `lampFace` (if any) is instead a black lamp: rho 0, E 1.
-Scene cube(double rho, double E, int lampFace = -1) {
-  Scene s;
-  int wall = test::material(s, rho, E), lamp = test::material(s, 0.0, 1.0), o = s.addObject("box");
-  const glm::dvec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1), O(0.0);
-  const Poly3 faces[6] = {test::rectangle(O, Z, X, 1, 1), test::rectangle(Y, X, Z, 1, 1),   // floor, ceiling
-                          test::rectangle(O, X, Y, 1, 1), test::rectangle(Z, Y, X, 1, 1),   // z = 0, z = 1
-                          test::rectangle(O, Y, Z, 1, 1), test::rectangle(X, Z, Y, 1, 1)};  // x = 0, x = 1
-  for (int i = 0; i < 6; ++i) s.addPolygon(faces[i], i == lampFace ? lamp : wall, o);
-  return s;
-}
-Scene furnace(double rho, double E) { return cube(rho, E); }
+Scene furnace(double rho, double E) { return test::cube(rho, E); }
 
 // 1 - sum luminance(dB) A / sum luminance(E) A, from a readback.
 double convergenceOf(const Scene& s, const test::Solved& r) {
@@ -80,7 +68,7 @@ TEST_CASE("Energy is conserved: in a closed box every shot delivers what its for
   const double rho = 0.5;
   const int shooters = GENERATE(1, 20);
   INFO(shooters << " shooters a pass");
-  Scene s = cube(rho, 0.0, 1);
+  Scene s = test::cube(rho, 0.0, 1);
   ProgressiveSettings settings;
   settings.shootLevel = 0;  // element by element
   settings.shootersPerPass = shooters;

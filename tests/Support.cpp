@@ -19,6 +19,17 @@ int material(Scene& scene, double rho, double emission) {
   return scene.addMaterial({"m" + std::to_string(scene.materials.size()), glm::dvec3(rho), glm::dvec3(emission)});
 }
 
+Scene cube(double rho, double E, int lampFace) {
+  Scene s;
+  int wall = material(s, rho, E), lamp = material(s, 0.0, 1.0), o = s.addObject("box");
+  const glm::dvec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1), O(0.0);
+  const Poly3 faces[6] = {rectangle(O, Z, X, 1, 1), rectangle(Y, X, Z, 1, 1),   // floor, ceiling
+                          rectangle(O, X, Y, 1, 1), rectangle(Z, Y, X, 1, 1),   // z = 0, z = 1
+                          rectangle(O, Y, Z, 1, 1), rectangle(X, Z, Y, 1, 1)};  // x = 0, x = 1
+  for (int i = 0; i < 6; ++i) s.addPolygon(faces[i], i == lampFace ? lamp : wall, o);
+  return s;
+}
+
 gl::RenderBackend& backend() {
   static std::unique_ptr<gl::RenderBackend> b = [] {
     gl::BackendOptions o;

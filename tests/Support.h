@@ -17,6 +17,9 @@ namespace hemirad::test {
 // A w x h rectangle at `origin`, spanned by unit axes u and v; its front faces u x v.
 Poly3 rectangle(glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v, double w, double h);
 int material(Scene& scene, double rho, double emission);
+// A closed unit cube, faces inward, every face emitting E with reflectance rho; face
+// `lampFace` (0 floor, 1 ceiling, ...; -1 none) is instead a black lamp: rho 0, E 1.
+Scene cube(double rho, double E, int lampFace = -1);
 
 struct Solved {
   Atlas atlas;
