@@ -16,7 +16,8 @@ struct Shooter {
   ivec4 rect;         // atlas x, y, w, h of the shooting block
   uint polygon;
   float power;        // the ranking key it was chosen by
-  uint pad0, pad1;
+  uint block;         // its index among the shooter blocks
+  uint pad;
 };
 
 layout(std430, binding = 3) buffer Control {

@@ -3,10 +3,17 @@
 // A shooter block's own dB is reset here (its texels are coplanar with it and receive nothing
 // from it, but do receive from the pass's other shooters). Importance (alpha: I in B, dI in
 // dB) travels the same way from importance shooters, reflected by luminance(rho) (seed 004).
+// Perspective-driven solves (seed 004 §5) restrict who receives radiosity: viewMode 1 only
+// surfaces in view; viewMode 2 (deferred passes) only surfaces becoming visible, each receiving
+// its stored table entry from the pass's blocks instead of their unshot radiosity.
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "control.glsl"
 #include "visibility.glsl"
+#ifdef PERSPECTIVE
+#include "perspective.glsl"
+uniform uint viewMode;
+#endif
 
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 0, rgba32f) uniform image2D radiosity;
@@ -15,18 +22,32 @@ uniform ivec2 atlasSize;
 
 void main() {
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
-  if (control.done != 0u || any(greaterThanEqual(t, atlasSize))) return;  // once stopped, passes are empty
+  // Once stopped, passes are empty.
+  if (control.count + control.importanceCount == 0u || any(greaterThanEqual(t, atlasSize))) return;
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
   if (polygon == NO_POLYGON) return;
+#ifdef PERSPECTIVE
+  bool deferred = viewMode == 2u;
+  uint entering = surfaceView[polygon].y;
+  if (deferred && entering == 0u) return;
+  bool receivesRadiosity = viewMode == 0u || deferred || surfaceView[polygon].x != 0u;
+#else
+  const bool deferred = false, receivesRadiosity = true;
+#endif
   vec4 received = vec4(0.0);
   vec4 keep = vec4(1.0);  // 0 in the channels this texel's own block shoots this pass
   for (uint s = 0u; s < control.shootersPerPass + control.importanceCount; ++s) {
     if (!activeShooter(s)) continue;
     vec4 shot = control.shooter[s].shot;
-    if (inShooterBlock(s, t, polygon)) {
-      keep *= s < control.shootersPerPass ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(1.0, 1.0, 1.0, 0.0);
+#ifdef PERSPECTIVE
+    uint b = control.shooter[s].block;
+    if (deferred) shot = vec4(shotSoFar[b].rgb - snapshot[(entering - 1u) * blockCount + b].rgb, 0.0);
+#endif
+    if (inShooterBlock(s, t, polygon)) {  // (a deferred pass shoots table entries, not the block's dB)
+      if (!deferred) keep *= s < control.shootersPerPass ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(1.0, 1.0, 1.0, 0.0);
       continue;
     }
+    if (s < control.shootersPerPass && !receivesRadiosity) continue;
     bool facing;
     float visible;
     float F = shooterFormFactor(s, t, polygon, facing, visible);

@@ -7,6 +7,10 @@
 #include "scene.glsl"
 #include "reduce_entry.glsl"
 #include "control.glsl"
+#include "shooter_block.glsl"
+#ifdef PERSPECTIVE
+#include "perspective.glsl"
+#endif
 
 layout(local_size_x = 256) in;
 uniform bool importanceShooters;
@@ -49,24 +53,15 @@ void main() {
   // The shooter shoots from its block's area-weighted centre with its area-weighted unshot
   // radiosity (or importance).
   ivec4 r = blockRect[rankIndex[l]];
-  vec4 unshot = vec4(0.0);
-  vec3 centre = vec3(0.0);
-  float area = 0.0;
-  uint polygon = NO_POLYGON;
-  for (int y = r.y; y < r.y + r.w; ++y)
-    for (int x = r.x; x < r.x + r.z; ++x) {
-      vec4 pa = texelFetch(atlasPositionArea, ivec2(x, y), 0);
-      if (pa.w <= 0.0) continue;
-      unshot += imageLoad(deltaB, ivec2(x, y)) * pa.w;
-      centre += pa.xyz * pa.w;
-      area += pa.w;
-      polygon = texelFetch(atlasPolygon, ivec2(x, y), 0).r;
-    }
   uint slot = importanceShooters ? keep + l : l;
-  control.shooter[slot].positionArea = vec4(centre / area, area);
-  control.shooter[slot].normal = vec4(polygons[polygon].normal.xyz, 0.0);
+  describeShooter(slot, r, rankIndex[l]);
+  vec4 unshot = vec4(0.0);
+  for (int y = r.y; y < r.y + r.w; ++y)
+    for (int x = r.x; x < r.x + r.z; ++x) unshot += imageLoad(deltaB, ivec2(x, y)) * texelFetch(atlasPositionArea, ivec2(x, y), 0).w;
+  float area = control.shooter[slot].positionArea.w;
   control.shooter[slot].shot = importanceShooters ? vec4(0.0, 0.0, 0.0, unshot.a / area) : vec4(unshot.rgb / area, 0.0);
-  control.shooter[slot].rect = r;
-  control.shooter[slot].polygon = polygon;
   control.shooter[slot].power = rankPower[l];
+#ifdef PERSPECTIVE
+  if (!importanceShooters) shotSoFar[rankIndex[l]] += control.shooter[slot].shot;  // one writer per block
+#endif
 }

@@ -33,8 +33,10 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   if (settings.shootersPerPass < 1 || unsigned(settings.shootersPerPass) > kMaxPassShooters)
     throw InputError(fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shootersPerPass));
   const unsigned keep = unsigned(settings.shootersPerPass);
+  const bool perspective = settings.algorithm == Algorithm::Perspective;
+  const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
   reduce_ = gl::computeProgram("reduce.comp");
-  select_ = gl::computeProgram("select.comp");
+  select_ = gl::computeProgram("select.comp", defines);
 
   // Shooter blocks and the reduction levels above them: each workgroup of a level ranks 1024
   // entries and keeps its best `keep`, until select.comp's one workgroup can rank the rest.
@@ -50,7 +52,14 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
                                              state.farDistance, settings.projection,
                                              settings.shootersPerPass * (settings.importanceDriven() ? 2 : 1));
   if (settings.importanceDriven()) view_ = std::make_unique<ImportanceView>(state);
-  gather_ = gl::computeProgram("gather.comp", itemBuffer_->defines());
+  gl::Defines gatherDefines = itemBuffer_->defines();
+  gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
+  gather_ = gl::computeProgram("gather.comp", gatherDefines);
+  if (perspective) {
+    perspective_ = std::make_unique<PerspectiveView>(
+        state, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : unsigned(blockCount_));
+    gather_.set("blockCount", unsigned(blockCount_));
+  }
 
   // The control block: stop rule, convergence history.
   const StopRule& stop = settings.stop;
@@ -90,6 +99,7 @@ void ProgressiveSolver::selectPass() {
   state_.deltaB.bindImage(1, GL_READ_ONLY);
   blocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  if (perspective_) perspective_->bind();
   rankPass(settings_.importanceDriven() ? 1 : 0, false);
   if (settings_.importanceDriven()) rankPass(2, true);
 }
@@ -97,6 +107,30 @@ void ProgressiveSolver::selectPass() {
 void ProgressiveSolver::look(const Camera& camera, double aspect) {
   if (!view_) throw std::logic_error("look() needs an importance-driven solver");
   view_->look(camera, aspect);
+  if (perspective_) {
+    perspective_->look(camera, aspect, status_.shots);
+    deliverStored();
+  }
+}
+
+// Seed 004 §5.5.3: one item buffer per block with entries for the surfaces entering the view,
+// up to K a pass, each entering surface receiving its own entry (gather.comp, viewMode 2).
+void ProgressiveSolver::deliverStored() {
+  const std::size_t blocks = perspective_->deliveries();
+  const unsigned K = unsigned(settings_.shootersPerPass);
+  for (std::size_t first = 0; first < blocks; first += K) {
+    perspective_->describeDeliveries(first, unsigned(std::min<std::size_t>(K, blocks - first)), blocks_, control_);
+    itemBuffer_->render(control_);
+    gatherPass(2);
+  }
+  perspective_->finishDeliveries();
+  deliveryShots_ += unsigned(blocks);
+  // What was delivered is unshot again: a stopped solve goes on (unless its shots are spent).
+  if (blocks && status_.done && !budgetSpent()) {
+    const std::uint32_t notDone = 0;
+    control_.upload(offsetof(ControlBlock, done), sizeof notDone, &notDone);
+    status_.done = false;
+  }
 }
 
 // One ranking of the blocks (reduce_entry.glsl's rankBy) and the selection from it.
@@ -123,8 +157,12 @@ void ProgressiveSolver::rankPass(unsigned rankBy, bool importanceShooters) {
   glMemoryBarrier(kAllBarriers);
 }
 
-void ProgressiveSolver::gatherPass() {
+void ProgressiveSolver::gatherPass(unsigned viewMode) {
   state_.bindScene();
+  if (perspective_) {
+    perspective_->bind();
+    gather_.set("viewMode", viewMode);
+  }
   state_.radiosity.bindImage(0, GL_READ_WRITE);
   state_.deltaB.bindImage(1, GL_READ_WRITE);
   itemBuffer_->bindForLookup();
@@ -136,7 +174,33 @@ void ProgressiveSolver::gatherPass() {
 }
 
 SolveStatus ProgressiveSolver::advance(unsigned shots) {
-  const unsigned passes = (shots + settings_.shootersPerPass - 1) / settings_.shootersPerPass;
+  const unsigned K = unsigned(settings_.shootersPerPass);
+  unsigned passes = (shots + K - 1) / K;
+  if (!perspective_) {
+    runPasses(passes);
+    return readStatus();
+  }
+  // Perspective-driven: the area of interest grows at fixed shot counts, so passes stop there
+  // (every pass but a solve's last shoots K) whatever the batch sizes asked for.
+  while (passes > 0 && !status_.done) {
+    const unsigned toStep = perspective_->shotsToNextStep(status_.shots);
+    const unsigned run = toStep == PerspectiveView::kNoStep ? passes : std::clamp((toStep + K - 1) / K, 1u, passes);
+    runPasses(run);
+    passes -= run;
+    readStatus();
+    perspective_->grow(status_.shots);
+    deliverStored();
+    // Out of unshot light (or at the target) with entries still held back: the area of
+    // interest becomes the whole scene, so the solve ends where progressive refinement does.
+    if (status_.done && !budgetSpent() && !perspective_->wholeScene()) {
+      perspective_->showAll();
+      deliverStored();
+    }
+  }
+  return status_;
+}
+
+void ProgressiveSolver::runPasses(unsigned passes) {
   for (unsigned k = 0; k < passes && !status_.done; ++k, ++enqueued_) {
     // GPU stamps cost a query each (on llvmpipe as much as a pass): one pass in kTimingStride
     // is timed and the totals are scaled; synchronised timing times every pass.
@@ -146,10 +210,9 @@ SolveStatus ProgressiveSolver::advance(unsigned shots) {
     if (timed) timer_.mark(kItemBuffer);
     itemBuffer_->render(control_);
     if (timed) timer_.mark(kGather);
-    gatherPass();
+    gatherPass(1);
     if (timed) timer_.stop(), ++timed_;
   }
-  return readStatus();
 }
 
 // State bytes: the control block's header, the convergence history, then (importance-driven)

@@ -11,6 +11,7 @@
 #include "src/Camera.h"
 #include "src/ImportanceView.h"
 #include "src/ItemBuffer.h"
+#include "src/PerspectiveView.h"
 #include "src/Solver.h"
 #include "src/SolverState.h"
 
@@ -32,6 +33,10 @@ struct ProgressiveSettings {
   Algorithm algorithm = Algorithm::Progressive;
   double importanceFloor = 0.01;
   bool importanceDriven() const { return algorithm != Algorithm::Progressive; }
+  // Perspective-driven shooting (seed 004 §5): after each camera move the simulated field of
+  // view grows to the whole scene over this many shots (0: as many as the scene has shooter
+  // blocks, about one sweep of it). The thesis counted seconds; shots keep runs reproducible.
+  unsigned fovDecayShots = 0;
   // Per-pass times: GPU stamps on a sample of the passes, every shot synchronised, or none.
   gl::TimerMode timings = gl::TimerMode::Gpu;
   StopRule stop;
@@ -46,6 +51,11 @@ class ProgressiveSolver final : public Solver {
   // whenever it moves; the importance already shot is corrected by the difference.
   void look(const Camera& camera, double aspect);
   unsigned importanceShots() const { return importanceShots_; }
+  // Perspective-driven solves: item buffers rendered to hand stored entries to surfaces entering
+  // the view, and the area of interest now.
+  unsigned deliveryShots() const { return deliveryShots_; }
+  unsigned fovDecayShots() const { return perspective_ ? perspective_->decayShots() : 0; }
+  const PerspectiveView* perspective() const { return perspective_.get(); }
   std::vector<float> directImportance() const { return view_ ? view_->readDirect() : std::vector<float>{}; }
   // Runs passes of up to shootersPerPass shots until `shots` more have been enqueued.
   SolveStatus advance(unsigned shots) override;
@@ -60,7 +70,10 @@ class ProgressiveSolver final : public Solver {
  private:
   void selectPass();
   void rankPass(unsigned rankBy, bool importanceShooters);
-  void gatherPass();
+  void gatherPass(unsigned viewMode);
+  void runPasses(unsigned passes);
+  void deliverStored();  // after the area of interest changed
+  bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
   SolveStatus readStatus();
 
   SolverState& state_;
@@ -69,7 +82,8 @@ class ProgressiveSolver final : public Solver {
   gl::Buffer blocks_, control_;
   std::unique_ptr<ItemBuffer> itemBuffer_;
   std::unique_ptr<ImportanceView> view_;  // importance-driven solves only
-  unsigned importanceShots_ = 0;
+  std::unique_ptr<PerspectiveView> perspective_;  // perspective-driven solves only
+  unsigned importanceShots_ = 0, deliveryShots_ = 0;
   std::vector<gl::Buffer> levels_;  // outputs of the parallel reduction levels (large scenes)
   std::size_t blockCount_ = 0;
   unsigned historyCapacity_ = 0;

@@ -33,6 +33,8 @@ nlohmann::json reportJson(const RunInfo& r) {
       {"shoot_level", r.shootLevel},
       {"shooters_per_pass", r.shootersPerPass},
       {"importance_shots", r.importanceShots},
+      {"delivery_shots", r.deliveryShots},
+      {"fov_decay_shots", r.fovDecayShots},
       {"timings_ms",
        {{"total", r.totalMs},
         {"item_buffer", r.timings.itemBuffer},

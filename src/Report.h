@@ -15,6 +15,8 @@ struct RunInfo {
   double texelSize = 0;
   int itemSubdivision = 0, itemResolution = 0, shootLevel = 0, shootersPerPass = 0;
   unsigned importanceShots = 0;  // importance-driven solves
+  unsigned deliveryShots = 0;    // perspective-driven solves: item buffers that delivered stored entries
+  unsigned fovDecayShots = 0;    // ... and their decay interval
   std::size_t elements = 0, itemTriangles = 0;
   int atlasWidth = 0, atlasHeight = 0;
   SolveStatus status;

@@ -69,6 +69,9 @@ int runSolve(const SolveOptions& o) {
                             {o.report, "--report"}})
     if (!path.empty()) checkWritable(path, flag);
   if (!o.checkpoint.empty()) checkWritable(o.checkpoint, "--checkpoint");
+  if ((!o.checkpoint.empty() || !o.resume.empty()) && o.progressive.algorithm == Algorithm::Perspective)
+    throw InputError("--checkpoint and --resume do not support --algorithm perspective (its stored radiosity table is "
+                     "not saved)");
   std::optional<Checkpoint> resumed;
   if (!o.resume.empty()) resumed = readCheckpoint(o.resume);
 
@@ -147,6 +150,8 @@ int runSolve(const SolveOptions& o) {
   run.shootLevel = o.progressive.shootLevel;
   run.shootersPerPass = o.progressive.shootersPerPass;
   run.importanceShots = solver.importanceShots();
+  run.deliveryShots = solver.deliveryShots();
+  run.fovDecayShots = solver.fovDecayShots();
   run.elements = atlas.elements;
   run.itemTriangles = solver.itemTriangles();
   run.atlasWidth = atlas.width;

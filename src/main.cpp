@@ -67,6 +67,10 @@ int main(int argc, char** argv) {
        "progressive (default); importance: shooters ranked by unshot power x importance from the camera; "
        "perspective: importance-driven, and only what the view sees receives (seed 004)")
       ->check(CLI::IsMember(algorithmNames()));
+  s->add_option("--fov-decay", pr.fovDecayShots,
+                "Perspective-driven: shots over which the simulated field of view grows from the camera's to the "
+                "whole scene after each camera move (default: one per shooter block)")
+      ->check(CLI::Range(1u, 1u << 30));
   s->add_option("--shooters-per-pass", pr.shootersPerPass,
                 fmt::format("Seed 003's batching: the K best blocks shoot in one pass (default 16, at most {})",
                             kMaxPassShooters))
@@ -83,6 +87,7 @@ int main(int argc, char** argv) {
   s->add_option("--height", solve.height, "Image height (default 512)")->check(CLI::Range(1, 16384));
   s->add_option("--supersample", solve.supersample, "Samples per pixel side (default 2)")->check(CLI::Range(1, 8));
   s->add_option("--exposure", solve.exposure, "PNG/PLY exposure in stops over the automatic one (default 0)");
+  addAmbientFlag(s, solve.ambient);
   s->add_option("--out", solve.out, "Linear camera render (.exr)");
   s->add_option("--image", solve.image, "Tone-mapped camera render (.png)");
   s->add_option("--atlas", solve.atlas, "Radiosity atlas, one texel per element (.exr)");

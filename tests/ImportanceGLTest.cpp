@@ -108,23 +108,31 @@ TEST_CASE("A camera move changes I and dI by exactly the change in direct import
   CHECK(wrong == 0);
 }
 
-TEST_CASE("With the same shots, importance-driven shooting gets the four-box view closer to converged",
-          "[gl][importance]") {
-  // Seed 004 §6.2: plain progressive refinement lights all four rooms alike; importance-driven
-  // shooting spends the shots where the camera (in room 0) looks.
+TEST_CASE("With the same shots, importance- and perspective-driven shooting get the four-box view closer to converged",
+          "[gl][importance][perspective]") {
+  // Seed 004 §6.2, §6.4: plain progressive refinement lights all four rooms alike; importance-
+  // driven shooting spends the shots where the camera (in room 0) looks, and perspective-driven
+  // shooting also gives light only to what is in view until the view has had its share.
   Scene s = load("scenes/four_boxes/four_boxes.obj");
   Camera c = sceneCamera("scenes/four_boxes/four_boxes.obj");
   const double texel = texelSizeForElements(s, 1200);
-  ProgressiveSettings converged, progressive;
+  ProgressiveSettings converged, progressive, perspective = importanceDriven(192);
   converged.stop = {0, 0.95};
   progressive.stop = {192, 0};
+  perspective.algorithm = Algorithm::Perspective;  // decay: one shot per block (300)
   test::Solved reference = test::solve(s, texel, converged, &c);
   test::Solved plain = test::solve(s, texel, progressive, &c);
   test::Solved driven = test::solve(s, texel, importanceDriven(192), &c);
-  double plainError = imageError(plain.view, reference.view), drivenError = imageError(driven.view, reference.view);
+  test::Solved local = test::solve(s, texel, perspective, &c);
+  const double plainError = imageError(plain.view, reference.view), drivenError = imageError(driven.view, reference.view),
+               localError = imageError(local.view, reference.view);
   INFO("view error after 192 shots: progressive " << plainError << ", importance-driven " << drivenError
+                                                  << ", perspective-driven " << localError
                                                   << " (reference: " << reference.status.shots << " shots)");
+  // Measured: 0.130, 0.070, 0.100. Perspective-driven shots give light to fewer surfaces, so
+  // per shot it trails importance-driven until the view has grown (decay 50 shots: 0.070).
   CHECK(drivenError < 0.7 * plainError);
+  CHECK(localError < 0.85 * plainError);
 }
 
 TEST_CASE("Importance-driven and plain progressive refinement converge to the same solution", "[gl][importance]") {

@@ -1,0 +1,13 @@
+// Perspective-driven shooting (seed 004 §5): only surfaces in the area of interest receive
+// radiosity; what a shot would have given the others waits in the stored radiosity table.
+// The table B_ij (shooter block i, surface j) is kept factored: shotSoFar[i] is all the
+// radiosity block i has shot, and snapshot e holds shotSoFar as it was when epoch e began, so
+// for a surface that left the view at epoch e, B_ij = shotSoFar[i] - snapshot[e][i]. That is
+// O(blocks) per epoch instead of O(blocks x surfaces), with no limit on either.
+
+layout(std430, binding = 6) readonly buffer SurfaceView {
+  uvec2 surfaceView[];  // per polygon: x 1 if in view; y 1 + the epoch of its entries while they are delivered
+};
+layout(std430, binding = 7) buffer ShotSoFar { vec4 shotSoFar[]; };        // per shooter block
+layout(std430, binding = 8) readonly buffer Snapshots { vec4 snapshot[]; };  // epoch * blocks + block
+uniform uint blockCount;

@@ -1,0 +1,136 @@
+// Perspective-driven shooting (seed 004 §5): only surfaces in the area of interest receive; the
+// stored radiosity table holds the rest and hands it over, exactly, when they come into view.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "cpu/Hemisphere.h"
+#include "tests/Support.h"
+
+using namespace hemirad;
+
+namespace {
+
+// The lamp-lit grey box (test::cube: rho 0.5, lamp ceiling = polygon 1), seen from above the
+// floor (polygon 0) with a narrow field of view: only the floor is in view.
+const Camera kFloor{{0.5, 0.6, 0.5}, {0.5, 0.0, 0.5}, {0, 0, 1}, 30.0};
+constexpr double kRho = 0.5;
+
+ProgressiveSettings perspective(unsigned decayShots) {
+  ProgressiveSettings s;
+  s.algorithm = Algorithm::Perspective;
+  s.shootLevel = 0;  // element by element: sigma is per element
+  s.shootersPerPass = 8;
+  s.fovDecayShots = decayShots;
+  s.stop = {0, 0.9999};
+  return s;
+}
+
+// Per face: the power it holds, sum B A, and what every shot so far would have given it had all
+// of them reached it, sum rho A_j sum_L F_jL (B_L - dB_L) (B - dB is all element L has shot).
+// In a convex box every element sees every other, so the two agree when nothing is held back,
+// whatever order the shots came in.
+struct FacePower {
+  double held[6] = {}, shotAt[6] = {};
+};
+FacePower facePower(const Scene& s, const Atlas& a, const SolverState& state) {
+  const std::vector<glm::vec4> B = state.readRadiosity(), dB = state.readDeltaB();
+  FacePower out;
+  for (std::size_t j = 0; j < B.size(); ++j) {
+    const std::uint32_t face = a.polygonOf[j];
+    if (face == kNoPolygon || face == 1) continue;  // the lamp (rho 0) receives nothing
+    const glm::dvec3 pj(a.positionArea[j]), nj = s.polygons()[face].normal;
+    double gathered = 0;
+    for (std::size_t L = 0; L < B.size(); ++L) {
+      if (a.polygonOf[L] == kNoPolygon || a.polygonOf[L] == face) continue;
+      const glm::dvec3 d = pj - glm::dvec3(a.positionArea[L]);
+      const double r2 = glm::dot(d, d);
+      const glm::dvec3 w = d / std::sqrt(r2);
+      gathered += cpu::discFormFactor(glm::dot(s.polygons()[a.polygonOf[L]].normal, w), -glm::dot(nj, w), r2,
+                                      a.positionArea[L].w) *
+                  (B[L].x - dB[L].x);
+    }
+    out.held[face] += B[j].x * a.positionArea[j].w;
+    out.shotAt[face] += kRho * gathered * a.positionArea[j].w;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("Out of view nothing is received; the table hands it all over once the view covers the scene",
+          "[gl][perspective]") {
+  test::backend();
+  Scene s = test::cube(kRho, 0.0, 1);
+  Atlas atlas = buildAtlas(s, 0.1);
+  SolverState state(s, atlas);
+  ProgressiveSolver solver(state, perspective(400));  // grows at 50, 100, ... 400 shots
+  solver.look(kFloor, 1.0);
+  REQUIRE(solver.perspective()->surfacesInView() == 1);
+
+  REQUIRE(solver.advance(40).shots == 40);
+  FacePower early = facePower(s, atlas, state);
+  CHECK(early.held[0] == Approx(early.shotAt[0]).epsilon(1e-4));  // the floor, in view, has all
+  for (int face : {2, 3, 4, 5}) {
+    INFO("after 40 shots, wall " << face << " holds " << early.held[face] << " of " << early.shotAt[face]);
+    CHECK(early.held[face] == 0.0);
+    CHECK(early.shotAt[face] > 0.05 * early.shotAt[0]);
+  }
+
+  const SolveStatus st = solver.advance(400);
+  REQUIRE(solver.perspective()->wholeScene());
+  CHECK(solver.deliveryShots() > 0);
+  FacePower all = facePower(s, atlas, state);
+  for (int face : {0, 2, 3, 4, 5}) {
+    INFO("after " << st.shots << " shots and " << solver.deliveryShots() << " deliveries, face " << face << " holds "
+                  << all.held[face] << " of " << all.shotAt[face]);
+    CHECK(all.held[face] == Approx(all.shotAt[face]).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("A camera move hands the surfaces entering the view their stored entries at once", "[gl][perspective]") {
+  // Looking at the floor, then at the wall z = 0 (polygon 2): the wall gets all the shots so far
+  // held for it, with no new shot; the walls still out of view hold nothing.
+  test::backend();
+  Scene s = test::cube(kRho, 0.0, 1);
+  Atlas atlas = buildAtlas(s, 0.1);
+  SolverState state(s, atlas);
+  ProgressiveSolver solver(state, perspective(100000));  // no growth: only the camera decides
+  solver.look(kFloor, 1.0);
+  const SolveStatus st = solver.advance(48);
+  CHECK(facePower(s, atlas, state).held[2] == 0.0);
+  const unsigned deliveries = solver.deliveryShots();
+  solver.look({{0.5, 0.5, 0.6}, {0.5, 0.5, 0.0}, {0, 1, 0}, 30.0}, 1.0);
+  CHECK(solver.perspective()->surfacesInView() == 1);
+  CHECK(solver.deliveryShots() > deliveries);
+  CHECK(solver.advance(0).shots == st.shots);  // no radiosity shot
+  FacePower moved = facePower(s, atlas, state);
+  INFO("wall 2 holds " << moved.held[2] << " of " << moved.shotAt[2] << "; the floor " << moved.held[0] << " of "
+                       << moved.shotAt[0]);
+  CHECK(moved.held[2] == Approx(moved.shotAt[2]).epsilon(1e-4));
+  CHECK(moved.held[0] == Approx(moved.shotAt[0]).epsilon(1e-4));
+  for (int face : {3, 4, 5}) CHECK(moved.held[face] == 0.0);
+}
+TEST_CASE("Perspective-driven and plain progressive refinement converge to the same solution", "[gl][perspective]") {
+  // Per face of the lamp-lit box, to convergence 0.999: only the order of the shots differs.
+  test::backend();
+  Scene s = test::cube(kRho, 0.0, 1);
+  ProgressiveSettings plain;
+  plain.shootLevel = 0;
+  plain.stop = {0, 0.999};
+  ProgressiveSettings driven = perspective(200);
+  driven.stop = {0, 0.999};
+  test::Solved a = test::solve(s, 0.1, plain), b = test::solve(s, 0.1, driven, &kFloor);
+  for (std::uint32_t face = 0; face < 6; ++face) {
+    double ma = 0, mb = 0, area = 0;
+    for (std::size_t t = 0; t < a.B.size(); ++t)
+      if (a.atlas.polygonOf[t] == face) {
+        ma += a.B[t].x * a.atlas.positionArea[t].w;
+        mb += b.B[t].x * b.atlas.positionArea[t].w;
+        area += a.atlas.positionArea[t].w;
+      }
+    INFO("face " << face << ": progressive " << ma / area << " (" << a.status.shots << " shots), perspective "
+                 << mb / area << " (" << b.status.shots << ")");
+    CHECK(mb / area == Approx(ma / area).epsilon(0.002));
+  }
+}
