@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "src/AtomicFile.h"
 #include "src/Error.h"
@@ -23,6 +24,28 @@ double exposureScale(const Image& image, double ev) {
     if (*k > 0) scale = 1.0 / *k;
   }
   return scale * std::exp2(ev);
+}
+
+namespace {
+double pixelLuminance(const std::vector<float>& rgb, std::size_t p) {
+  return 0.2126 * rgb[p] + 0.7152 * rgb[p + 1] + 0.0722 * rgb[p + 2];
+}
+}  // namespace
+
+double meanLuminance(const Image& image) {
+  double sum = 0;
+  for (std::size_t p = 0; p + 2 < image.rgb.size(); p += 3) sum += pixelLuminance(image.rgb, p);
+  return image.rgb.empty() ? 0.0 : sum / double(image.rgb.size() / 3);
+}
+
+double imageError(const Image& image, const Image& reference) {
+  if (image.rgb.size() != reference.rgb.size()) throw std::invalid_argument("imageError: image sizes differ");
+  double diff = 0, sum = 0;
+  for (std::size_t p = 0; p + 2 < image.rgb.size(); p += 3) {
+    diff += std::abs(pixelLuminance(image.rgb, p) - pixelLuminance(reference.rgb, p));
+    sum += pixelLuminance(reference.rgb, p);
+  }
+  return sum > 0 ? diff / sum : 0.0;
 }
 
 std::vector<unsigned char> toneMap(const Image& image, double scale) {

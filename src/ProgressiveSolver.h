@@ -50,6 +50,7 @@ class ProgressiveSolver final : public Solver {
   // Importance-driven solves: the user's view (aspect width / height) that drives them, again
   // whenever it moves; the importance already shot is corrected by the difference.
   void look(const Camera& camera, double aspect);
+  bool viewDriven() const { return view_ != nullptr; }
   unsigned importanceShots() const { return importanceShots_; }
   // Perspective-driven solves: item buffers rendered to hand stored entries to surfaces entering
   // the view, and the area of interest now.

@@ -53,6 +53,20 @@ Checkpoint takeCheckpoint(const SolverState& state, const Solver& solver, const 
   return {identity, shots, state.readRadiosity(), state.readDeltaB(), solver.saveState()};
 }
 
+int runWalkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas, SolverState& state,
+                   ProgressiveSolver& solver, const Camera& camera) {
+  const CameraPath path = readCameraPath(o.cameraPath, camera);
+  WalkthroughOptions w = o.walkthrough;
+  w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient, w.exposure = o.exposure;
+  ConvergedViews converged(scene, atlas, o.progressive, o.referenceConvergence);
+  const std::vector<FrameRecord> frames = walk(solver, state, path, converged, w);
+  writeFramesCsv(w.framesDir + "/frames.csv", frames);
+  const FrameRecord& last = frames.back();
+  fmt::print(stderr, "hemirad: {}: {} frames along {} ({} shots, visible convergence {:.4f}, image error {:.4f}) into {}\n",
+             o.scene, frames.size(), o.cameraPath, last.shots, last.visibleConvergence, last.imageError, w.framesDir);
+  return 0;
+}
+
 }  // namespace
 
 void addAmbientFlag(CLI::App* cmd, bool& ambient) {
@@ -95,6 +109,7 @@ int runSolve(const SolveOptions& o) {
     status = solver.restoreState(resumed->solver);
     resumed.reset();
   }
+  if (!o.cameraPath.empty()) return runWalkthrough(o, scene, atlas, state, solver, camera);
   if (o.progressive.importanceDriven()) solver.look(camera, aspect);  // after a restore: no change
 
   // Shots run in batches between status readbacks; a signal or a due checkpoint is handled

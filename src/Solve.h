@@ -7,6 +7,7 @@
 #include "gl/Backend.h"
 #include "src/ProgressiveSolver.h"
 #include "src/SceneLoader.h"
+#include "src/Walkthrough.h"
 
 namespace hemirad {
 
@@ -30,6 +31,11 @@ struct SolveOptions {
   std::string checkpoint;           // written every checkpointEvery shots, at the end and on SIGINT/SIGTERM
   unsigned checkpointEvery = 0;     // 0: only at the end and on a signal
   std::string resume;               // a checkpoint to continue from
+  // A walkthrough instead of one image: frames along the path into walkthrough.framesDir, with
+  // frames.csv beside them; the reference is progressive refinement to referenceConvergence.
+  std::string cameraPath;
+  WalkthroughOptions walkthrough;
+  double referenceConvergence = 0.99;
   bool progress = true;
 };
 

@@ -11,6 +11,7 @@
 #include "src/Control.h"
 #include "src/Solve.h"
 #include "src/Validate.h"
+#include "src/Viewer.h"
 
 using namespace hemirad;
 
@@ -103,6 +104,28 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   bool quiet = false;
   s->add_flag("--quiet", quiet, "No progress bar");
+  auto* path = s->add_option("--camera-path", solve.cameraPath,
+                             "Walkthrough: keyframes 'TIME eye=.. target=.. fov=..' per line (docs/walkthrough.md); "
+                             "writes a frame per 1/--fps s and frames.csv into --frames")
+                   ->check(CLI::ExistingFile);
+  auto* frames = s->add_option("--frames", solve.walkthrough.framesDir, "Folder for the walkthrough's frames and frames.csv")
+                     ->needs(path);
+  path->needs(frames);
+  auto& wk = solve.walkthrough;
+  s->add_option("--fps", wk.fps, "Walkthrough frames per second of path time (default 10)")
+      ->check(CLI::Range(0.01, 1000.0))
+      ->needs(path);
+  auto* frameMs = s->add_option("--frame-ms", wk.frameMs, "Solver milliseconds per walkthrough frame (default 100)")
+                      ->check(CLI::Range(0.0, 1e7))
+                      ->needs(path);
+  s->add_option("--frame-shots", wk.frameShots, "Instead of --frame-ms: shots per frame (reproducible; whole passes of --shooters-per-pass)")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->needs(path)
+      ->excludes(frameMs);
+  s->add_option("--reference-convergence", solve.referenceConvergence,
+                "Convergence of the reference the frames are compared with (default 0.99)")
+      ->check(CLI::Range(0.5, 0.99999))
+      ->needs(path);
 
   InfoOptions info;
   CLI::App* i = app.add_subcommand("info", "Describe a scene: objects, polygons, area, emitters, elements");
@@ -147,6 +170,11 @@ int main(int argc, char** argv) {
   CLI::App* b = app.add_subcommand("bench", "Time the solver: shots and time to convergence, per-pass split");
   addBenchFlags(b, bench);
 
+  ViewerOptions view;
+  CLI::App* w = app.add_subcommand("view", "Open a window showing the solution refine live (GLFW)");
+  addSceneFlags(w, view.scene, view.load, view.discretisation);
+  addViewFlags(w, view);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -162,13 +190,15 @@ int main(int argc, char** argv) {
   (void)converge;
   try {
     if (*s) {
-      if (!*shots && !*converge) pr.stop.targetConvergence = 0.9;
+      // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told.
+      if (!*shots && !*converge) pr.stop.targetConvergence = solve.cameraPath.empty() ? 0.9 : 0.9999;
       solve.backend.kind = gl::parseBackendKind(backend);
       pr.projection = parseProjection(solveProjection);
       solve.progress = !quiet;
       return runSolve(solve);
     }
     if (*b) return runBench(bench);
+    if (*w) return runView(view);
     if (*v) {
       validate.backend.kind = gl::parseBackendKind(validateBackend);
       validate.projections.clear();

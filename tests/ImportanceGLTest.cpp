@@ -30,17 +30,6 @@ double areaSum(const Atlas& a, F value) {
   return sum;
 }
 
-// Mean |luminance difference| over the pixels, relative to the reference's mean luminance.
-double imageError(const Image& image, const Image& reference) {
-  double diff = 0, sum = 0;
-  for (std::size_t p = 0; p + 2 < image.rgb.size(); p += 3) {
-    auto lum = [](const std::vector<float>& c, std::size_t p) { return 0.2126 * c[p] + 0.7152 * c[p + 1] + 0.0722 * c[p + 2]; };
-    diff += std::abs(lum(image.rgb, p) - lum(reference.rgb, p));
-    sum += lum(reference.rgb, p);
-  }
-  return diff / sum;
-}
-
 }  // namespace
 
 TEST_CASE("Direct importance is the view's pixels per element: inside a closed room it sums to the whole view",

@@ -1,0 +1,104 @@
+// Camera paths and walkthroughs: keyframes parse and blend, and `solve --camera-path` writes a
+// frame and a CSV row per frame, reproducibly with a shot budget per frame.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "src/CameraPath.h"
+#include "src/Error.h"
+#include "tests/Support.h"
+
+using namespace hemirad;
+
+namespace {
+std::string writePath(const std::string& name, const std::string& text) {
+  std::string path = test::tempPath(name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::vector<std::vector<std::string>> readCsv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    rows.emplace_back();
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) rows.back().push_back(cell);
+  }
+  return rows;
+}
+}  // namespace
+
+TEST_CASE("Camera path keyframes inherit the keys they leave out and blend linearly between", "[cpu]") {
+  Camera base;
+  base.up = {1, 0, 0};
+  const CameraPath path = readCameraPath(
+      writePath("blend.path", "# a comment\n0 eye=0,0,10 target=0,0,0 fov=40\n\n2 eye=4,0,10  # moves\n4 fov=20\n"), base);
+  REQUIRE(path.keys.size() == 3);
+  CHECK(path.duration() == 4.0);
+  CHECK(path.keys[1].camera.target == glm::dvec3(0.0));  // inherited
+  CHECK(path.keys[2].camera.eye == glm::dvec3(4, 0, 10));
+  CHECK(path.keys[0].camera.up == glm::dvec3(1, 0, 0));  // from the base camera
+  const Camera mid = path.at(1.0), later = path.at(3.0);
+  CHECK(mid.eye.x == Approx(2.0));
+  CHECK(mid.fovY == Approx(40.0));
+  CHECK(later.fovY == Approx(30.0));
+  CHECK(path.at(-1).eye == path.keys[0].camera.eye);
+  CHECK(path.at(99).fovY == Approx(20.0));
+}
+
+TEST_CASE("Malformed camera paths name the file, the line and the problem", "[cpu]") {
+  Camera base;
+  auto fails = [&](const std::string& name, const std::string& text, const std::string& message) {
+    const std::string path = writePath(name, text);
+    CHECK_THROWS_WITH(readCameraPath(path, base), Catch::Contains(message));
+  };
+  fails("order.path", "0 eye=0,0,1\n2 eye=0,0,2\n1 eye=0,0,3\n", "order.path:3: keyframe times must increase");
+  fails("time.path", "soon eye=0,0,1\n", "time.path:1: a keyframe starts with its time in seconds, not 'soon'");
+  fails("key.path", "0 eye=0,0,1\n1 pos=1,2,3\n", "key.path:2: unknown camera key 'pos'");
+  fails("empty.path", "# nothing\n", "no keyframes");
+  CHECK_THROWS_AS(readCameraPath("/no/such.path", base), InputError);
+}
+
+TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly with shots per frame",
+          "[cli][walkthrough]") {
+  const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
+  const std::string path = writePath("turn.path", "0 eye=278,273,-800 target=278,273,0 fov=39.3\n0.5 fov=39.3\n1 target=556,0,559.2 fov=20\n");
+  for (const std::string algorithm : {"progressive", "importance", "perspective"}) {
+    INFO(algorithm);
+    const std::string a = test::tempPath("walk_a_" + algorithm), b = test::tempPath("walk_b_" + algorithm);
+    const std::string flags = " --elements 600 --algorithm " + algorithm + " --camera-path " + path +
+                              " --fps 4 --frame-shots 12 --shooters-per-pass 4 --width 48 --height 48 --reference-convergence 0.95 --quiet";
+    test::Run run = test::shell("$HEMIRAD solve " + scene + flags + " --frames " + a + " && $HEMIRAD solve " + scene +
+                                flags + " --frames " + b);
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    const auto rows = readCsv(a + "/frames.csv"), again = readCsv(b + "/frames.csv");
+    REQUIRE(rows.size() == 6);  // header + frames at 0, 0.25, ... 1 s
+    CHECK(rows[0][0] == "frame");
+    CHECK(rows[0].back() == "image_error");
+    for (int f = 0; f < 5; ++f) {
+      CHECK(std::filesystem::exists(a + "/frame_000" + std::to_string(f) + ".png"));
+      CHECK(std::stoul(rows[f + 1][3]) <= 12u * (f + 1));  // radiosity shots: 3 passes of 4 a frame at most
+      for (std::size_t c : {0u, 1u, 3u, 4u, 5u, 6u, 7u, 8u}) CHECK(rows[f + 1][c] == again[f + 1][c]);  // all but the times
+    }
+    CHECK(std::stoul(rows[5][3]) > std::stoul(rows[1][3]));
+    // While the camera stands still (0 to 0.5 s), more of the light it sees arrives.
+    CHECK(std::stod(rows[3][7]) > std::stod(rows[1][7]));
+    CHECK(std::stod(rows[3][8]) < std::stod(rows[1][8]));
+  }
+}
+
+TEST_CASE("Walkthrough flags come together: a path needs a frames folder and a budget of one kind", "[cli]") {
+  const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
+  const std::string path = test::sourcePath("scenes/cornell/cornell.path");
+  for (const std::string& args : std::vector<std::string>{"--camera-path " + path, "--frames /tmp/x",
+                                  "--camera-path " + path + " --frames /tmp/x --frame-ms 10 --frame-shots 4",
+                                  "--camera-path " + writePath("bad.path", "0 eye=1\n") + " --frames /tmp/x"}) {
+    test::Run run = test::hemirad("solve " + scene + " " + args);
+    INFO(args << "\n" << run.output);
+    CHECK(run.exitCode == 2);
+    CHECK(run.output.find("hemirad: error:") != std::string::npos);
+  }
+}
