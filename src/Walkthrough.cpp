@@ -65,7 +65,8 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
     r.convergence = status.convergence;
     const double seen = meanLuminance(reference);
     r.visibleConvergence = seen > 0 ? meanLuminance(plain) / seen : 1.0;
-    r.imageError = imageError(shown, reference);
+    r.imageError = imageError(plain, reference);
+    r.shownError = imageError(shown, reference);
     if (!o.framesDir.empty()) {
       if (f == 0) scale = exposureScale(reference, o.exposure);  // one exposure: frames compare
       writePng(fmt::format("{}/frame_{:04d}.png", o.framesDir, f), shown, scale);
@@ -76,10 +77,11 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
 }
 
 void writeFramesCsv(const std::string& path, const std::vector<FrameRecord>& frames) {
-  std::string out = "frame,time_s,solve_ms,shots,importance_shots,delivery_shots,convergence,visible_convergence,image_error\n";
+  std::string out = "frame,time_s,solve_ms,shots,importance_shots,delivery_shots,convergence,visible_convergence,image_error,shown_error\n";
   for (const FrameRecord& r : frames)
-    out += fmt::format("{},{:.4f},{:.2f},{},{},{},{:.6f},{:.6f},{:.6f}\n", r.frame, r.time, r.solveMs, r.shots,
-                         r.importanceShots, r.deliveryShots, r.convergence, r.visibleConvergence, r.imageError);
+    out += fmt::format("{},{:.4f},{:.2f},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f}\n", r.frame, r.time, r.solveMs, r.shots,
+                       r.importanceShots, r.deliveryShots, r.convergence, r.visibleConvergence, r.imageError,
+                       r.shownError);
   writeTextFile(path, out);
 }
 

@@ -32,7 +32,8 @@ struct FrameRecord {
   // Of the visible part: the light in the frame (without the ambient term) over the light in
   // the converged frame, i.e. how much of what the camera will see has arrived.
   double visibleConvergence = 0;
-  double imageError = 0;       // of the frame as shown, vs the converged frame (Image.h)
+  double imageError = 0;       // of the frame's B (no ambient term) vs the converged frame (Image.h)
+  double shownError = 0;       // of the frame as shown (with the ambient term if on)
 };
 
 // The converged solution (progressive refinement), rendered from any camera: the reference.

@@ -11,6 +11,7 @@
 #include "src/Control.h"
 #include "src/Solve.h"
 #include "src/Validate.h"
+#include "src/Experiment.h"
 #include "src/Viewer.h"
 
 using namespace hemirad;
@@ -175,6 +176,11 @@ int main(int argc, char** argv) {
   addSceneFlags(w, view.scene, view.load, view.discretisation);
   addViewFlags(w, view);
 
+  ExperimentOptions experiment;
+  CLI::App* x = app.add_subcommand("experiment",
+                                   "Seed 004's experiments: progressive vs importance vs perspective along camera paths");
+  addExperimentFlags(x, experiment);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -199,6 +205,7 @@ int main(int argc, char** argv) {
     }
     if (*b) return runBench(bench);
     if (*w) return runView(view);
+    if (*x) return runExperiment(experiment);
     if (*v) {
       validate.backend.kind = gl::parseBackendKind(validateBackend);
       validate.projections.clear();
