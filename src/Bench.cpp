@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/AtomicFile.h"
+#include "src/Camera.h"
 #include "src/Ceilings.h"
 #include "src/Error.h"
 #include "src/Control.h"
@@ -58,6 +59,9 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   settings.stop = {0, o.converge};
   settings.timings = gl::TimerMode::Off;  // the timed run pays for no queries
   ProgressiveSolver solver(state, settings);
+  // View-driven algorithms look from the scene's camera (SCENE.camera), square.
+  const Camera camera = resolveCamera(scene, std::nullopt);
+  if (solver.viewDriven()) solver.look(camera, 1.0);
   SolveStatus status;
   row.solveMs = runToStop(backend, solver, status);
   row.shots = status.shots;
@@ -75,6 +79,7 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   settings.timings = gl::TimerMode::Synchronous;
   settings.stop = {std::min(std::max(o.splitShots, 8u * shootersPerPass), std::max(row.shots, 1u)), 0};
   ProgressiveSolver timed(fresh, settings);
+  if (timed.viewDriven()) timed.look(camera, 1.0);
   SolveStatus s2;
   runToStop(backend, timed, s2);
   const PassTimings& t = timed.timings();
@@ -136,6 +141,10 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
                   fmt::format("Shooters per pass, one row each (default 16; at most {})", kMaxPassShooters))
       ->delimiter(',')
       ->check(CLI::Range(1, int(kMaxPassShooters)));
+  cmd->add_option_function<std::string>(
+         "--algorithm", [&o](const std::string& a) { o.progressive.algorithm = parseAlgorithm(a); },
+         "progressive (default), importance or perspective (view-driven ones look from SCENE.camera)")
+      ->check(CLI::IsMember(algorithmNames()));
   cmd->add_option("--markdown", o.markdown, "Write the printed tables as markdown (e.g. into docs/bench)");
   cmd->add_option("--split-shots", o.splitShots, "Shots timed pass by pass for the split (default 64)")
       ->check(CLI::Range(1u, 1u << 20));
@@ -163,8 +172,9 @@ int runBench(BenchOptions o) {
     std::fflush(stdout);
     text += s;
   };
-  say(fmt::format("hemirad bench, {}, {} ({}), converge {}, shoot level {}, item mesh L{}, item buffer {}^2\n\n", date,
-                  backend->name(), backend->renderer(), o.converge, o.progressive.shootLevel,
+  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, item buffer {}^2\n\n",
+                  date, backend->name(), backend->renderer(), algorithmName(o.progressive.algorithm), o.converge,
+                  o.progressive.shootLevel,
                   o.progressive.itemSubdivision, o.progressive.itemResolution));
   Ceilings ceiling;
   if (o.ceiling) {
@@ -214,6 +224,7 @@ int runBench(BenchOptions o) {
     nlohmann::json out = {{"date", date},
                           {"backend", backend->name()},
                           {"renderer", backend->renderer()},
+                          {"algorithm", algorithmName(o.progressive.algorithm)},
                           {"converge", o.converge},
                           {"shoot_level", o.progressive.shootLevel},
                           {"item_subdivision", o.progressive.itemSubdivision},

@@ -116,7 +116,7 @@ void addExperimentFlags(CLI::App* cmd, ExperimentOptions& o) {
   addAmbientFlag(cmd, o.walkthrough.ambient);
   cmd->add_option("--reference-convergence", o.referenceConvergence, "Convergence of the reference (default 0.99)")
       ->check(CLI::Range(0.5, 0.99999));
-  cmd->add_option("--fov-decay", o.progressive.fovDecayShots, "Perspective-driven decay interval in shots (default: one per block)")
+  cmd->add_option("--fov-decay", o.progressive.fovDecayShots, "Perspective-driven decay interval in shots (default: a quarter of the blocks)")
       ->check(CLI::Range(1u, 1u << 30));
   cmd->add_option("--out", o.out, "Folder for the CSVs, summary and plots (default docs/experiments)");
   cmd->add_flag("--keep-frames", o.frames, "Also keep every frame as OUT/SCENE_ALGORITHM/frame_NNNN.png");

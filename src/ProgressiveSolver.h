@@ -34,8 +34,8 @@ struct ProgressiveSettings {
   double importanceFloor = 0.01;
   bool importanceDriven() const { return algorithm != Algorithm::Progressive; }
   // Perspective-driven shooting (seed 004 §5): after each camera move the simulated field of
-  // view grows to the whole scene over this many shots (0: as many as the scene has shooter
-  // blocks, about one sweep of it). The thesis counted seconds; shots keep runs reproducible.
+  // view grows to the whole scene over this many shots (0: a quarter of the scene's shooter
+  // blocks, at least 8 passes). The thesis counted seconds; shots keep runs reproducible.
   unsigned fovDecayShots = 0;
   // Per-pass times: GPU stamps on a sample of the passes, every shot synchronised, or none.
   gl::TimerMode timings = gl::TimerMode::Gpu;

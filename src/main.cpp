@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(algorithmNames()));
   s->add_option("--fov-decay", pr.fovDecayShots,
                 "Perspective-driven: shots over which the simulated field of view grows from the camera's to the "
-                "whole scene after each camera move (default: one per shooter block)")
+                "whole scene after each camera move (default: a quarter of the shooter blocks)")
       ->check(CLI::Range(1u, 1u << 30));
   s->add_option("--shooters-per-pass", pr.shootersPerPass,
                 fmt::format("Seed 003's batching: the K best blocks shoot in one pass (default 16, at most {})",
@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
   bool quiet = false;
   s->add_flag("--quiet", quiet, "No progress bar");
   auto* path = s->add_option("--camera-path", solve.cameraPath,
-                             "Walkthrough: keyframes 'TIME eye=.. target=.. fov=..' per line (docs/walkthrough.md); "
+                             "Walkthrough: keyframes 'TIME eye=.. target=.. fov=..' per line (README: Walkthroughs); "
                              "writes a frame per 1/--fps s and frames.csv into --frames")
                    ->check(CLI::ExistingFile);
   auto* frames = s->add_option("--frames", solve.walkthrough.framesDir, "Folder for the walkthrough's frames and frames.csv")

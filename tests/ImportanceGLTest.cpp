@@ -108,7 +108,7 @@ TEST_CASE("With the same shots, importance- and perspective-driven shooting get 
   ProgressiveSettings converged, progressive, perspective = importanceDriven(192);
   converged.stop = {0, 0.95};
   progressive.stop = {192, 0};
-  perspective.algorithm = Algorithm::Perspective;  // decay: one shot per block (300)
+  perspective.algorithm = Algorithm::Perspective;  // decay: a quarter of the 300 blocks
   test::Solved reference = test::solve(s, texel, converged, &c);
   test::Solved plain = test::solve(s, texel, progressive, &c);
   test::Solved driven = test::solve(s, texel, importanceDriven(192), &c);
@@ -118,10 +118,10 @@ TEST_CASE("With the same shots, importance- and perspective-driven shooting get 
   INFO("view error after 192 shots: progressive " << plainError << ", importance-driven " << drivenError
                                                   << ", perspective-driven " << localError
                                                   << " (reference: " << reference.status.shots << " shots)");
-  // Measured: 0.130, 0.070, 0.100. Perspective-driven shots give light to fewer surfaces, so
-  // per shot it trails importance-driven until the view has grown (decay 50 shots: 0.070).
+  // Measured: 0.130, 0.070, 0.073. Perspective-driven shots give light only to what is in view,
+  // so per shot it trails importance-driven while the view grows (decay 300 shots: 0.100).
   CHECK(drivenError < 0.7 * plainError);
-  CHECK(localError < 0.85 * plainError);
+  CHECK(localError < 0.7 * plainError);
 }
 
 TEST_CASE("Importance-driven and plain progressive refinement converge to the same solution", "[gl][importance]") {
