@@ -47,10 +47,9 @@ std::size_t PerspectiveView::surfacesInView() const { return std::size_t(std::co
 void PerspectiveView::look(const Camera& camera, double aspect, unsigned shots) {
   camera_ = camera;
   aspect_ = aspect;
-  looking_ = true;
   lookShots_ = shots;
   step_ = 0;
-  applyView();
+  pending_view_ = true;
 }
 
 unsigned PerspectiveView::shotsToNextStep(unsigned shots) const {
@@ -66,12 +65,21 @@ void PerspectiveView::grow(unsigned shots) {
     ++step;
   if (step == step_) return;
   step_ = step;
-  applyView();
+  pending_view_ = true;
 }
 
 void PerspectiveView::showAll() {
   step_ = kSteps;
+  pending_view_ = true;
+}
+
+bool PerspectiveView::update() {
+  if (!pending_view_ || delivering_) return false;
+  pending_view_ = false;
   applyView();
+  delivering_ = true;
+  if (deferred_ == 0) finishDeliveries();  // nothing to deliver: the change is complete
+  return true;
 }
 
 // Seed 004 §5.3: the surfaces with a pixel in a view of the simulated field of view.
@@ -149,7 +157,7 @@ void PerspectiveView::applyView() {
   visible_ = seen;
 
   // Seed 004 §5.5.2: the shooting locations of the entries to deliver, in block order.
-  deferred_ = 0;
+  deferred_ = next_ = 0;
   if (entering_.empty()) return uploadSurfaces(false);
   std::vector<GLuint> epochs;
   for (std::uint32_t p : entering_)
@@ -170,17 +178,18 @@ void PerspectiveView::applyView() {
   uploadSurfaces(true);
 }
 
-void PerspectiveView::describeDeliveries(std::size_t first, unsigned count, const gl::Buffer& blocks,
-                                          const gl::Buffer& control) {
+void PerspectiveView::describeDeliveries(unsigned count, const gl::Buffer& blocks, const gl::Buffer& control) {
+  count = unsigned(std::min<std::size_t>(count, deliveriesLeft()));
   state_.bindScene();
   blocks.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   deferredBlocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
-  deferredPass_.set("first", unsigned(first));
+  deferredPass_.set("first", unsigned(next_));
   deferredPass_.set("count", count);
   deferredPass_.use();
   gl::Program::dispatch(gl::groupsFor(count, 64));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  next_ += count;
 }
 
 void PerspectiveView::finishDeliveries() {
@@ -197,7 +206,8 @@ void PerspectiveView::finishDeliveries() {
   entering_.clear();
   staysOut_.clear();
   newEpoch_ = -1;
-  deferred_ = 0;
+  deferred_ = next_ = 0;
+  delivering_ = false;
   uploadSurfaces(false);
   gl::checkErrors("perspective view");
 }

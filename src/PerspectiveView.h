@@ -45,11 +45,18 @@ class PerspectiveView {
   unsigned decayShots() const { return decayShots_; }
   std::size_t surfacesInView() const;
 
-  // After look(), grow() or showAll(): the blocks whose stored entries the surfaces entering the
-  // view must receive. For each pass of up to `count` of them, from `first`:
-  std::size_t deliveries() const { return deferred_; }
-  void describeDeliveries(std::size_t first, unsigned count, const gl::Buffer& blocks, const gl::Buffer& control);
-  void finishDeliveries();  // after the last of those passes (always call it)
+  // look(), grow() and showAll() only record the new view; it takes effect in update(), and the
+  // stored entries of the surfaces it brings in are then delivered a few item buffers at a time
+  // (so a frame's budget holds). While they are, nothing is shot (the entries stay exact), and a
+  // newer view waits: the latest one applies once the deliveries are done.
+  bool settled() const { return !pending_view_ && !delivering_; }
+  bool delivering() const { return delivering_; }
+  bool update();  // applies a waiting view (not while delivering); true if it did
+  // Blocks whose entries are still to deliver; describes the next `count` of them as the pass's
+  // shooters (gather.comp, delivery mode).
+  std::size_t deliveriesLeft() const { return deferred_ - next_; }
+  void describeDeliveries(unsigned count, const gl::Buffer& blocks, const gl::Buffer& control);
+  void finishDeliveries();  // after the pass of the last of them
 
   // Binds the surface view (6), shots so far (7) and snapshots (8) for select.comp and gather.comp.
   void bind() const;
@@ -71,7 +78,6 @@ class PerspectiveView {
 
   Camera camera_;
   double aspect_ = 1;
-  bool looking_ = false;
   unsigned lookShots_ = 0;
   int step_ = kSteps;  // until the first look() everything is in view
   std::vector<std::uint8_t> visible_;
@@ -81,7 +87,8 @@ class PerspectiveView {
   std::vector<std::uint32_t> entering_;   // surfaces receiving their entries now
   std::vector<std::uint8_t> staysOut_;    // ... of which these stay out of view (oldest epoch flushed)
   int newEpoch_ = -1;                     // the slot taken for this change, snapshot at finish
-  std::size_t deferred_ = 0;
+  std::size_t deferred_ = 0, next_ = 0;
+  bool pending_view_ = false, delivering_ = false;
 };
 
 }  // namespace hemirad

@@ -115,28 +115,37 @@ void ProgressiveSolver::look(const Camera& camera, double aspect) {
   view_->look(camera, aspect);
   if (perspective_) {
     perspective_->look(camera, aspect, status_.shots);
-    deliverStored();
+    // The new view's deliveries may bring light: a finished solve has work again.
+    if (!budgetSpent()) status_.done = false;
   }
 }
 
 // Seed 004 §5.5.3: one item buffer per block with entries for the surfaces entering the view,
 // up to K a pass, each entering surface receiving its own entry (gather.comp, viewMode 2).
-void ProgressiveSolver::deliverStored() {
-  const std::size_t blocks = perspective_->deliveries();
+// Applies a waiting view first; uses at most `budget` item buffers and returns how many.
+unsigned ProgressiveSolver::deliverStored(unsigned budget) {
   const unsigned K = unsigned(settings_.shootersPerPass);
-  for (std::size_t first = 0; first < blocks; first += K) {
-    perspective_->describeDeliveries(first, unsigned(std::min<std::size_t>(K, blocks - first)), blocks_, control_);
+  unsigned used = 0;
+  perspective_->update();
+  while (used < budget && perspective_->delivering()) {
+    const unsigned n = unsigned(std::min<std::size_t>({K, budget - used, perspective_->deliveriesLeft()}));
+    perspective_->describeDeliveries(n, blocks_, control_);
     itemBuffer_->render(control_);
     gatherPass(2);
+    used += n;
+    deliveryShots_ += n;
+    if (perspective_->deliveriesLeft() == 0) {
+      perspective_->finishDeliveries();
+      // What was delivered is unshot again: a stopped solve goes on (unless its shots are spent).
+      if (!budgetSpent()) {
+        const std::uint32_t notDone = 0;
+        control_.upload(offsetof(ControlBlock, done), sizeof notDone, &notDone);
+        status_.done = false;
+      }
+      perspective_->update();  // a view that waited
+    }
   }
-  perspective_->finishDeliveries();
-  deliveryShots_ += unsigned(blocks);
-  // What was delivered is unshot again: a stopped solve goes on (unless its shots are spent).
-  if (blocks && status_.done && !budgetSpent()) {
-    const std::uint32_t notDone = 0;
-    control_.upload(offsetof(ControlBlock, done), sizeof notDone, &notDone);
-    status_.done = false;
-  }
+  return used;
 }
 
 // One ranking of the blocks (reduce_entry.glsl's rankBy) and the selection from it.
@@ -186,22 +195,27 @@ SolveStatus ProgressiveSolver::advance(unsigned shots) {
     runPasses(passes);
     return readStatus();
   }
-  // Perspective-driven: the area of interest grows at fixed shot counts, so passes stop there
-  // (every pass but a solve's last shoots K) whatever the batch sizes asked for.
-  while (passes > 0 && !status_.done) {
+  // Perspective-driven: item buffers for deliveries and for shots share the budget, and nothing
+  // is shot while deliveries are due. The area of interest grows at fixed shot counts, so passes
+  // stop there (every pass but a solve's last shoots K) whatever the batch sizes asked for.
+  unsigned budget = passes * K;
+  while (budget > 0) {
+    budget -= deliverStored(budget);
+    if (budget == 0 || perspective_->delivering()) break;
+    if (status_.done) {
+      // Out of unshot light (or at the target) with entries still held back: the area of
+      // interest becomes the whole scene, so the solve ends where progressive refinement does.
+      if (budgetSpent() || perspective_->wholeScene()) break;
+      perspective_->showAll();
+      continue;
+    }
     const unsigned toStep = perspective_->shotsToNextStep(status_.shots);
-    const unsigned run = toStep == PerspectiveView::kNoStep ? passes : std::clamp((toStep + K - 1) / K, 1u, passes);
+    const unsigned most = (budget + K - 1) / K;
+    const unsigned run = toStep == PerspectiveView::kNoStep ? most : std::clamp((toStep + K - 1) / K, 1u, most);
     runPasses(run);
-    passes -= run;
+    budget -= std::min(budget, run * K);
     readStatus();
     perspective_->grow(status_.shots);
-    deliverStored();
-    // Out of unshot light (or at the target) with entries still held back: the area of
-    // interest becomes the whole scene, so the solve ends where progressive refinement does.
-    if (status_.done && !budgetSpent() && !perspective_->wholeScene()) {
-      perspective_->showAll();
-      deliverStored();
-    }
   }
   return status_;
 }

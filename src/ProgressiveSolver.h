@@ -73,7 +73,7 @@ class ProgressiveSolver final : public Solver {
   void rankPass(unsigned rankBy, bool importanceShooters);
   void gatherPass(unsigned viewMode);
   void runPasses(unsigned passes);
-  void deliverStored();  // after the area of interest changed
+  unsigned deliverStored(unsigned budget);  // perspective-driven: entries for surfaces entering the view
   bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
   SolveStatus readStatus();
 

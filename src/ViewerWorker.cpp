@@ -75,8 +75,10 @@ void work(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
       batch = 1;
       solveFrames = 0;
     }
-    if (settings.importanceDriven() && (fresh || !sameView(c, shown)))
+    if (settings.importanceDriven() && (fresh || !sameView(c, shown))) {
       solver->look(c.camera, double(c.width) / c.height);
+      status = solver->advance(0);  // a perspective-driven solve has entries to deliver again
+    }
     if (!c.paused && !status.done) {
       if (o.shotsPerFrame) {
         // Whole passes until k x N shots at this solve's k-th frame: a pass shoots up to

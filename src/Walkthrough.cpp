@@ -40,7 +40,10 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
     auto elapsedMs = [&] { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); };
     const bool moved = f == 0 || camera.eye != last.eye || camera.target != last.target || camera.up != last.up ||
                        camera.fovY != last.fovY;
-    if (solver.viewDriven() && moved) solver.look(camera, aspect);
+    if (solver.viewDriven() && moved) {
+      solver.look(camera, aspect);
+      status = solver.advance(0);  // a perspective-driven solve has entries to deliver again
+    }
     last = camera;
     if (o.frameShots) {
       if (!status.done) status = solver.advance(o.frameShots);
