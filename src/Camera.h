@@ -13,6 +13,7 @@ namespace hemirad {
 struct Camera {
   glm::dvec3 eye{0, 0, 1}, target{0, 0, 0}, up{0, 1, 0};
   double fovY = 45.0;  // vertical field of view, degrees
+  bool operator==(const Camera&) const = default;
   glm::mat4 viewProjection(double aspect, double near, double far) const;
 };
 

@@ -18,8 +18,7 @@ using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 bool sameView(const ViewerControls& a, const ViewerControls& b) {
-  return a.camera.eye == b.camera.eye && a.camera.target == b.camera.target && a.camera.up == b.camera.up &&
-         a.camera.fovY == b.camera.fovY && a.width == b.width && a.height == b.height;
+  return a.camera == b.camera && a.width == b.width && a.height == b.height;
 }
 
 // toneMap's RGB rows top-down to RGBA rows bottom-up, as glDrawPixels takes them.

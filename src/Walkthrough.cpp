@@ -38,8 +38,7 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
     const Camera camera = path.at(r.time);
     const auto t0 = Clock::now();
     auto elapsedMs = [&] { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); };
-    const bool moved = f == 0 || camera.eye != last.eye || camera.target != last.target || camera.up != last.up ||
-                       camera.fovY != last.fovY;
+    const bool moved = f == 0 || camera != last;
     if (solver.viewDriven() && moved) {
       solver.look(camera, aspect);
       status = solver.advance(0);  // a perspective-driven solve has entries to deliver again
