@@ -1,4 +1,4 @@
-// Bench ceiling (src/Bench.cpp): the gather's memory pattern without its maths, one RGBA32F
+// Bench ceiling (src/bench/Bench.cpp): the gather's memory pattern without its maths, one RGBA32F
 // texel loaded and stored per invocation, to measure the invocations/s a GPU can reach.
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 0, rgba32f) uniform image2D values;

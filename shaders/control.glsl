@@ -1,7 +1,7 @@
 // The solver's state on the GPU: the shooters of the current pass and the stop rule, written by
 // the selection pass, so a shot needs no CPU round trip. Once `done` is set every later pass of
 // the batch returns at once (draws and dispatches stay direct: on NVIDIA, indirect arguments
-// written by the previous pass cost ~1 ms of latency a shot). Mirrored by src/Control.h (std430).
+// written by the previous pass cost ~1 ms of latency a shot). Mirrored by src/solver/Control.h (std430).
 
 const uint MAX_PASS_SHOOTERS = 128u;  // 64 radiosity and 64 importance shooters
 

@@ -1,4 +1,4 @@
-// Validation probe (src/Validate.cpp): for one shooter (the first of the control block), every receiver element's item-buffer
+// Validation probe (src/validate/Validate.cpp): for one shooter (the first of the control block), every receiver element's item-buffer
 // visibility and form factor, exactly as gather.comp computes them, written out instead of
 // applied. r: visibility (0/1), g: F, b: 1 where the pair faces each other.
 #include "hemisphere.glsl"

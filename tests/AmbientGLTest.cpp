@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cstring>
 
-#include "src/Renderer.h"
+#include "src/output/Renderer.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

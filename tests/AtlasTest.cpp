@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "src/Atlas.h"
+#include "src/scene/Atlas.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

@@ -18,9 +18,9 @@
 #include "gl/Debug.h"
 #include "gl/GL.h"
 #include "gl/Objects.h"
-#include "src/Atlas.h"
-#include "src/Error.h"
-#include "src/SceneLoader.h"
+#include "src/scene/Atlas.h"
+#include "src/base/Error.h"
+#include "src/scene/SceneLoader.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
-#include "src/Camera.h"
-#include "src/Error.h"
+#include "src/scene/Camera.h"
+#include "src/base/Error.h"
 
 using namespace hemirad;
 

@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "src/SceneLoader.h"
+#include "src/scene/SceneLoader.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "src/ItemMesh.h"
+#include "src/scene/ItemMesh.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "src/Image.h"
+#include "src/output/ImageFile.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

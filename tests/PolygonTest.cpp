@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "src/Polygon.h"
+#include "src/base/Polygon.h"
 
 using namespace hemirad;
 

@@ -2,7 +2,7 @@
 #include <cstring>
 
 #include "cpu/Hemisphere.h"
-#include "src/SceneLoader.h"
+#include "src/scene/SceneLoader.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

@@ -2,8 +2,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "src/Error.h"
-#include "src/SceneLoader.h"
+#include "src/base/Error.h"
+#include "src/scene/SceneLoader.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

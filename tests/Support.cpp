@@ -1,7 +1,7 @@
 #include "tests/Support.h"
 
 #include "cpu/Hemisphere.h"
-#include "src/Renderer.h"
+#include "src/output/Renderer.h"
 
 #include <array>
 #include <cstdio>

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "gl/Backend.h"
-#include "src/Atlas.h"
-#include "src/Camera.h"
-#include "src/Image.h"
-#include "src/ProgressiveSolver.h"
-#include "src/Scene.h"
+#include "src/scene/Atlas.h"
+#include "src/scene/Camera.h"
+#include "src/output/Image.h"
+#include "src/solver/ProgressiveSolver.h"
+#include "src/scene/Scene.h"
 
 namespace hemirad::test {
 

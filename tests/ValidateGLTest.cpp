@@ -2,10 +2,10 @@
 // the item buffer agrees better with the exact visibility as the item mesh is subdivided.
 #include <catch2/catch.hpp>
 
-#include "src/DenseSolver.h"
-#include "src/ExactReference.h"
-#include "src/SceneLoader.h"
-#include "src/Validate.h"
+#include "src/validate/DenseSolver.h"
+#include "src/validate/ExactReference.h"
+#include "src/scene/SceneLoader.h"
+#include "src/validate/Validate.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

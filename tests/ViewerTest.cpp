@@ -8,7 +8,7 @@
 #include <fstream>
 #include <regex>
 
-#include "src/Image.h"
+#include "src/output/ImageFile.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

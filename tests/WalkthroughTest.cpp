@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "src/CameraPath.h"
-#include "src/Error.h"
+#include "src/walk/CameraPath.h"
+#include "src/base/Error.h"
 #include "tests/Support.h"
 
 using namespace hemirad;

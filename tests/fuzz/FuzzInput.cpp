@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "src/Atlas.h"
-#include "src/Error.h"
-#include "src/SceneLoader.h"
+#include "src/scene/Atlas.h"
+#include "src/base/Error.h"
+#include "src/scene/SceneLoader.h"
 
 namespace hemirad::fuzz {
 

@@ -1,7 +1,0 @@
-#include "src/Error.h"
-
-#include <cstdio>
-
-namespace hemirad {
-void warn(const std::string& message) { std::fprintf(stderr, "hemirad: warning: %s\n", message.c_str()); }
-}  // namespace hemirad

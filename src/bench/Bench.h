@@ -1,0 +1,32 @@
+// `hemirad bench`: time to convergence and the per-pass split of the progressive solver on
+// scenes of growing element counts, as a table and JSON. Speed lives here, never in tests.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "gl/Backend.h"
+#include "src/solver/ProgressiveSolver.h"
+
+namespace hemirad {
+
+struct BenchOptions {
+  std::vector<std::string> scenes{"scenes/cornell/cornell.obj"};
+  std::vector<std::size_t> elements{10000, 100000};
+  double converge = 0.9;
+  ProgressiveSettings progressive;  // shoot level, item mesh and buffer as for solve
+  std::vector<int> shootersPerPass{ProgressiveSettings{}.shootersPerPass};  // a row each
+  unsigned splitShots = 64;         // shots timed pass by pass (synchronised) for the split
+  gl::BackendOptions backend;
+  std::string backendName = "osmesa";
+  std::string json;
+  std::string markdown;  // the printed tables, as a markdown file
+  bool ceiling = false;  // also measure the device's compute and raster ceilings
+  std::string compare;   // another bench JSON to compare per-object radiosity with
+};
+
+// The bench flags, shared by `hemirad bench` and the lean `hemirad-bench`.
+void addBenchFlags(CLI::App* cmd, BenchOptions& options);
+int runBench(BenchOptions options);
+
+}  // namespace hemirad

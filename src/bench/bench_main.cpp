@@ -1,0 +1,29 @@
+// hemirad-bench: `hemirad bench` alone, linked without image, mesh-export or CGAL libraries, so it
+// runs on GPU machines that have no package registry (ci/gpu-bundle carries it).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "src/bench/Bench.h"
+#include "src/base/Error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"hemirad-bench: time the progressive radiosity solver"};
+  hemirad::BenchOptions options;
+  hemirad::addBenchFlags(&app, options);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "hemirad: error: %s\n", e.what());
+    return hemirad::kExitInputError;
+  }
+  try {
+    return hemirad::runBench(options);
+  } catch (const hemirad::InputError& e) {
+    std::fprintf(stderr, "hemirad: error: %s\n", e.what());
+    return hemirad::kExitInputError;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hemirad: error: %s\n", e.what());
+    return hemirad::kExitFailure;
+  }
+}

@@ -1,0 +1,174 @@
+#include "src/cli/Solve.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "src/base/AtomicFile.h"
+#include "src/scene/Atlas.h"
+#include "src/scene/Camera.h"
+#include "src/solver/Checkpoint.h"
+#include "src/base/Interrupt.h"
+#include "src/base/Error.h"
+#include "src/output/ImageFile.h"
+#include "src/output/PlyWriter.h"
+#include "src/output/Progress.h"
+#include "src/output/Renderer.h"
+#include "src/output/Report.h"
+
+namespace hemirad {
+
+namespace {
+
+Image atlasImage(const Atlas& atlas, const std::vector<glm::vec4>& B) {
+  Image img{atlas.width, atlas.height, std::vector<float>(B.size() * 3)};
+  for (size_t t = 0; t < B.size(); ++t)
+    for (int c = 0; c < 3; ++c) img.rgb[t * 3 + c] = B[t][c];
+  return img;
+}
+
+// What a checkpoint must have been made from to be resumed by this solve.
+nlohmann::json checkpointIdentity(const Scene& scene, const Atlas& atlas, const SolveOptions& o, const Solver& solver) {
+  const ProgressiveSettings& p = o.progressive;
+  return {{"scene_hash", fmt::format("{:016x}", sceneHash(scene))},
+          {"algorithm", solver.algorithm()},
+          {"texel_size", atlas.texelSize},
+          {"atlas", {atlas.width, atlas.height}},
+          {"elements", atlas.elements},
+          {"item_subdivision", p.itemSubdivision},
+          {"item_resolution", p.itemResolution},
+          {"projection", projectionName(p.projection)},
+          {"shoot_level", p.shootLevel},
+          {"shooters_per_pass", p.shootersPerPass}};
+}
+
+Checkpoint takeCheckpoint(const SolverState& state, const Solver& solver, const nlohmann::json& identity,
+                          unsigned shots) {
+  return {identity, shots, state.readRadiosity(), state.readDeltaB(), solver.saveState()};
+}
+
+int runWalkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas, SolverState& state,
+                   ProgressiveSolver& solver, const Camera& camera) {
+  const CameraPath path = readCameraPath(o.cameraPath, camera);
+  WalkthroughOptions w = o.walkthrough;
+  w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient, w.exposure = o.exposure;
+  ConvergedViews converged(scene, atlas, o.progressive, o.referenceConvergence);
+  const std::vector<FrameRecord> frames = walk(solver, state, path, converged, w);
+  writeFramesCsv(w.framesDir + "/frames.csv", frames);
+  const FrameRecord& last = frames.back();
+  fmt::print(stderr, "hemirad: {}: {} frames along {} ({} shots, visible convergence {:.4f}, image error {:.4f}) into {}\n",
+             o.scene, frames.size(), o.cameraPath, last.shots, last.visibleConvergence, last.imageError, w.framesDir);
+  return 0;
+}
+
+}  // namespace
+
+int runSolve(const SolveOptions& o) {
+  auto start = std::chrono::steady_clock::now();
+  for (auto [path, flag] : {std::pair{o.out, "--out"}, {o.image, "--image"}, {o.atlas, "--atlas"}, {o.ply, "--ply"},
+                            {o.report, "--report"}})
+    if (!path.empty()) checkWritable(path, flag);
+  if (!o.checkpoint.empty()) checkWritable(o.checkpoint, "--checkpoint");
+  if ((!o.checkpoint.empty() || !o.resume.empty()) && o.progressive.algorithm == Algorithm::Perspective)
+    throw InputError("--checkpoint and --resume do not support --algorithm perspective (its stored radiosity table is "
+                     "not saved)");
+  std::optional<Checkpoint> resumed;
+  if (!o.resume.empty()) resumed = readCheckpoint(o.resume);
+
+  Scene scene = loadScene(o.scene, o.load);
+  for (const auto& w : scene.warnings) warn(w);
+  validateSolvable(scene);
+  Camera camera = resolveCamera(scene, o.camera);
+
+  auto backend = gl::createBackend(o.backend);
+  if (o.backend.kind == gl::BackendKind::Auto)
+    fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
+  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
+  SolverState state(scene, atlas);
+  ProgressiveSolver solver(state, o.progressive);
+  const double aspect = double(o.width) / o.height;
+  const nlohmann::json identity = checkpointIdentity(scene, atlas, o, solver);
+  SolveStatus status;
+  if (resumed) {
+    checkResumable(o.resume, resumed->identity, identity);
+    state.restore(resumed->radiosity, resumed->deltaB);
+    status = solver.restoreState(resumed->solver);
+    resumed.reset();
+  }
+  if (!o.cameraPath.empty()) return runWalkthrough(o, scene, atlas, state, solver, camera);
+  if (o.progressive.importanceDriven()) solver.look(camera, aspect);  // after a restore: no change
+
+  // Shots run in batches between status readbacks; a signal or a due checkpoint is handled
+  // between batches, where the GPU state is whole. Batch sizes never change the result.
+  InterruptGuard interrupts;
+  Progress progress(o.progressive.stop, o.progress);
+  unsigned savedAt = status.shots;
+  for (unsigned batch = 1; !status.done;) {
+    if (int signal = InterruptGuard::received()) {
+      progress.finish();
+      if (!o.checkpoint.empty()) writeCheckpoint(o.checkpoint, takeCheckpoint(state, solver, identity, status.shots));
+      fmt::print(stderr, "hemirad: interrupted by {} after {} shots (convergence {:.4f}); {}\n", signalName(signal),
+                 status.shots, status.convergence,
+                 o.checkpoint.empty() ? "no --checkpoint given, nothing saved"
+                                      : fmt::format("checkpoint written: resume with --resume {}", o.checkpoint));
+      return 128 + signal;
+    }
+    auto t0 = std::chrono::steady_clock::now();
+    status = solver.advance(o.checkpointEvery ? std::min(batch, o.checkpointEvery) : batch);
+    progress.update(status);
+    batch = nextBatch(batch, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    if (!o.checkpoint.empty() && o.checkpointEvery && status.shots >= savedAt + o.checkpointEvery && !status.done) {
+      writeCheckpoint(o.checkpoint, takeCheckpoint(state, solver, identity, status.shots));
+      savedAt = status.shots;
+    }
+  }
+  progress.finish();
+  if (!o.checkpoint.empty()) writeCheckpoint(o.checkpoint, takeCheckpoint(state, solver, identity, status.shots));
+  double solveMs = progress.elapsedSeconds() * 1e3;
+
+  std::vector<glm::vec4> B = state.readRadiosity();
+  Image view;
+  double scale = 1;
+  if (!o.out.empty() || !o.image.empty() || !o.ply.empty()) {
+    Renderer renderer(state);
+    renderer.setAmbient(o.ambient);
+    view = renderer.render(camera, o.width, o.height, o.supersample);
+    scale = exposureScale(view, o.exposure);
+  }
+  if (!o.out.empty()) writeExr(o.out, view);
+  if (!o.image.empty()) writePng(o.image, view, scale);
+  if (!o.atlas.empty()) writeExr(o.atlas, atlasImage(atlas, B));
+  if (!o.ply.empty()) writePly(o.ply, scene, atlas, B, scale);
+
+  RunInfo run;
+  run.backend = backend->name();
+  run.renderer = backend->renderer();
+  run.algorithm = solver.algorithm();
+  run.scene = o.scene;
+  run.texelSize = atlas.texelSize;
+  run.itemSubdivision = o.progressive.itemSubdivision;
+  run.itemResolution = o.progressive.itemResolution;
+  run.shootLevel = o.progressive.shootLevel;
+  run.shootersPerPass = o.progressive.shootersPerPass;
+  run.importanceShots = solver.importanceShots();
+  run.deliveryShots = solver.deliveryShots();
+  run.fovDecayShots = solver.fovDecayShots();
+  run.elements = atlas.elements;
+  run.itemTriangles = solver.itemTriangles();
+  run.atlasWidth = atlas.width;
+  run.atlasHeight = atlas.height;
+  run.status = status;
+  run.timings = solver.timings();
+  run.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  run.radiosityHash = radiosityHash(atlas, B);
+  run.objects = objectRadiosity(scene, atlas, B);
+  run.convergenceHistory = solver.convergenceHistory();
+  if (!o.report.empty()) writeReport(o.report, run);
+
+  fmt::print(stderr, "hemirad: {}: {} elements, {} shots, convergence {:.4f} in {:.0f} ms ({}, {})\n", o.scene,
+             atlas.elements, status.shots, status.convergence, solveMs, backend->name(), backend->renderer());
+  return 0;
+}
+
+}  // namespace hemirad

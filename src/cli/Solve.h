@@ -1,0 +1,48 @@
+// `hemirad solve` and `hemirad info`: the commands, apart from flag parsing (src/cli/main.cpp).
+#pragma once
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "gl/Backend.h"
+#include "src/solver/ProgressiveSolver.h"
+#include "src/scene/Atlas.h"
+#include "src/scene/SceneLoader.h"
+#include "src/walk/Walkthrough.h"
+
+namespace hemirad {
+
+struct SolveOptions {
+  std::string scene;
+  LoadOptions load;
+  Discretisation discretisation;
+  ProgressiveSettings progressive;
+  gl::BackendOptions backend;
+  std::optional<std::string> camera;
+  int width = 512, height = 512, supersample = 2;
+  double exposure = 0;  // stops over the automatic exposure
+  bool ambient = true;  // seed 004's ambient term on the camera images (never on B, report, atlas, PLY)
+  std::string out, image, atlas, ply, report;
+  std::string checkpoint;           // written every checkpointEvery shots, at the end and on SIGINT/SIGTERM
+  unsigned checkpointEvery = 0;     // 0: only at the end and on a signal
+  std::string resume;               // a checkpoint to continue from
+  // A walkthrough instead of one image: frames along the path into walkthrough.framesDir, with
+  // frames.csv beside them; the reference is progressive refinement to referenceConvergence.
+  std::string cameraPath;
+  WalkthroughOptions walkthrough;
+  double referenceConvergence = 0.99;
+  bool progress = true;
+};
+
+int runSolve(const SolveOptions& options);
+
+struct InfoOptions {
+  std::string scene;
+  LoadOptions load;
+  Discretisation discretisation;
+  int itemSubdivision = 3;
+};
+
+int runInfo(const InfoOptions& options);
+
+}  // namespace hemirad

@@ -1,0 +1,96 @@
+#include "src/output/Renderer.h"
+
+#include "gl/Debug.h"
+#include "gl/Shader.h"
+
+namespace hemirad {
+
+Renderer::Renderer(const SolverState& state)
+    : state_(state),
+      program_(gl::renderProgram("camera.vert", "camera.frag")),
+      ambientProgram_(gl::computeProgram("ambient.comp")),
+      ambientTerm_(sizeof(glm::vec4)),
+      mesh_(state.scene, state.atlas) {
+  // Seed 004: a unit of light meets rho_avg (area-weighted) at each bounce, so all of them
+  // together hand on R = 1 + rho_avg + rho_avg^2 + ... = 1 / (1 - rho_avg).
+  glm::dvec3 rhoArea(0.0);
+  double area = 0;
+  for (std::size_t t = 0; t < state.atlas.polygonOf.size(); ++t) {
+    if (state.atlas.polygonOf[t] == kNoPolygon) continue;
+    const double a = state.atlas.positionArea[t].w;
+    rhoArea += a * state.scene.materials[state.scene.polygons()[state.atlas.polygonOf[t]].material].reflectance;
+    area += a;
+  }
+  const glm::dvec3 rhoAvg = area > 0 ? rhoArea / area : glm::dvec3(0.0);
+  const glm::vec3 interreflection(1.0 / (1.0 - glm::min(rhoAvg, glm::dvec3(0.999))));
+  glProgramUniform3fv(ambientProgram_.id(), ambientProgram_.location("interreflection"), 1, &interreflection[0]);
+  ambientProgram_.set("totalArea", float(area));
+}
+
+void Renderer::updateAmbient() {
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  state_.bindScene();
+  state_.deltaB.bindImage(1, GL_READ_ONLY);
+  ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  ambientProgram_.use();
+  gl::Program::dispatch(1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+glm::vec3 Renderer::ambientTerm() {
+  updateAmbient();
+  glm::vec4 a;
+  ambientTerm_.read(0, sizeof a, &a);
+  return glm::vec3(a);
+}
+
+Image Renderer::render(const Camera& camera, int width, int height, int supersample) {
+  return render(camera, width, height, supersample, state_.radiosity);
+}
+
+Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
+  const int s = std::max(1, supersample), w = width * s, h = height * s;
+  gl::Texture color(GL_RGBA32F, w, h), depth(GL_DEPTH_COMPONENT32F, w, h);
+  gl::Framebuffer fbo;
+  fbo.attach(GL_COLOR_ATTACHMENT0, color);
+  fbo.attach(GL_DEPTH_ATTACHMENT, depth);
+  fbo.checkComplete("camera");
+  const float black[4] = {0, 0, 0, 1}, one = 1.0f;
+  glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, black);
+  glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
+
+  glm::mat4 vp = CameraMesh::viewProjection(camera, double(width) / height, state_.farDistance);
+  fbo.bind();
+  glViewport(0, 0, w, h);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  state_.bindScene();
+  atlasValues.bindUnit(2);
+  const bool ambient = ambient_ && &atlasValues == &state_.radiosity;
+  if (ambient) updateAmbient();
+  ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  program_.set("addAmbient", int(ambient));
+  program_.set("viewProjection", &vp[0][0]);
+  program_.use();
+  mesh_.draw();
+  gl::checkErrors("camera render");
+
+  std::vector<float> rgba(size_t(w) * h * 4);
+  color.read(GL_RGBA, GL_FLOAT, rgba.size() * sizeof(float), rgba.data());
+  Image img{width, height, std::vector<float>(size_t(width) * height * 3, 0.0f)};
+  const float norm = 1.0f / float(s * s);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        float sum = 0;
+        for (int j = 0; j < s; ++j)
+          for (int i = 0; i < s; ++i) sum += rgba[(size_t(y * s + j) * w + (x * s + i)) * 4 + c];
+        // GL rows go bottom-up; images go top-down.
+        img.rgb[(size_t(height - 1 - y) * width + x) * 3 + c] = sum * norm;
+      }
+  return img;
+}
+
+}  // namespace hemirad

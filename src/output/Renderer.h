@@ -1,0 +1,37 @@
+// Camera render of a solution: the scene's polygons rasterised with a perspective camera,
+// each fragment looking B up in the atlas (bilinear, masked to its own polygon).
+#pragma once
+#include <vector>
+
+#include "gl/Objects.h"
+#include "src/scene/Camera.h"
+#include "src/solver/CameraMesh.h"
+#include "src/output/Image.h"
+#include "src/solver/SolverState.h"
+
+namespace hemirad {
+
+class Renderer {
+ public:
+  explicit Renderer(const SolverState& state);
+  // Seed 004's ambient term (shaders/ambient.comp) on what is shown: for previews. Off (the
+  // default) shows B exactly, as reports and validation need.
+  void setAmbient(bool on) { ambient_ = on; }
+  // The term rho_j A adds to element j: A = R S per channel (RGB), from the current dB.
+  glm::vec3 ambientTerm();
+  // Renders at supersample x the size and box-filters down (deterministic anti-aliasing).
+  Image render(const Camera& camera, int width, int height, int supersample = 2);
+  // The same view of any per-element RGBA32F atlas (e.g. an error map) instead of B.
+  Image render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues);
+
+ private:
+  const SolverState& state_;
+  void updateAmbient();
+
+  gl::Program program_, ambientProgram_;
+  gl::Buffer ambientTerm_;
+  CameraMesh mesh_;
+  bool ambient_ = false;
+};
+
+}  // namespace hemirad

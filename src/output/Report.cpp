@@ -1,0 +1,54 @@
+#include "src/output/Report.h"
+
+#include <fmt/format.h>
+
+
+#include "src/base/AtomicFile.h"
+#include "src/base/Error.h"
+
+namespace hemirad {
+
+nlohmann::json objectsJson(const std::vector<ObjectRadiosity>& objects) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& o : objects)
+    out.push_back({{"name", o.name}, {"area", o.area}, {"mean_radiosity", {o.mean.x, o.mean.y, o.mean.z}}});
+  return out;
+}
+
+nlohmann::json reportJson(const RunInfo& r) {
+  using nlohmann::json;
+  return {
+      {"backend", r.backend},
+      {"renderer", r.renderer},
+      {"algorithm", r.algorithm},
+      {"scene", r.scene},
+      {"elements", r.elements},
+      {"texel_size", r.texelSize},
+      {"atlas", {{"width", r.atlasWidth}, {"height", r.atlasHeight}}},
+      {"shots", r.status.shots},
+      {"convergence", r.status.convergence},
+      {"item_subdivision", r.itemSubdivision},
+      {"item_resolution", r.itemResolution},
+      {"item_triangles", r.itemTriangles},
+      {"shoot_level", r.shootLevel},
+      {"shooters_per_pass", r.shootersPerPass},
+      {"importance_shots", r.importanceShots},
+      {"delivery_shots", r.deliveryShots},
+      {"fov_decay_shots", r.fovDecayShots},
+      {"timings_ms",
+       {{"total", r.totalMs},
+        {"item_buffer", r.timings.itemBuffer},
+        {"gather", r.timings.gather},
+        {"select", r.timings.select},
+        {"readback", r.timings.readback}}},
+      {"radiosity_hash", fmt::format("{:016x}", r.radiosityHash)},
+      {"convergence_history", r.convergenceHistory},
+      {"objects", objectsJson(r.objects)},
+  };
+}
+
+void writeReport(const std::string& path, const RunInfo& run) {
+  writeTextFile(path, reportJson(run).dump(2) + "\n");
+}
+
+}  // namespace hemirad

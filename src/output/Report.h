@@ -1,0 +1,35 @@
+// DESIGN.md's report JSON, plus what a reader needs to reproduce the run.
+#pragma once
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "src/solver/Solver.h"
+#include "src/solver/SolverState.h"
+
+namespace hemirad {
+
+struct RunInfo {
+  std::string backend, renderer, algorithm, scene;
+  double texelSize = 0;
+  int itemSubdivision = 0, itemResolution = 0, shootLevel = 0, shootersPerPass = 0;
+  unsigned importanceShots = 0;  // importance-driven solves
+  unsigned deliveryShots = 0;    // perspective-driven solves: item buffers that delivered stored entries
+  unsigned fovDecayShots = 0;    // ... and their decay interval
+  std::size_t elements = 0, itemTriangles = 0;
+  int atlasWidth = 0, atlasHeight = 0;
+  SolveStatus status;
+  PassTimings timings;
+  double totalMs = 0;
+  std::uint64_t radiosityHash = 0;
+  std::vector<ObjectRadiosity> objects;
+  std::vector<float> convergenceHistory;
+};
+
+nlohmann::json reportJson(const RunInfo& run);
+// [{name, area, mean_radiosity: [r, g, b]}], DESIGN.md's report `objects`.
+nlohmann::json objectsJson(const std::vector<ObjectRadiosity>& objects);
+void writeReport(const std::string& path, const RunInfo& run);
+
+}  // namespace hemirad

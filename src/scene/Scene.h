@@ -1,0 +1,68 @@
+// The scene: planar convex polygons with a material and an object each, held in an OpenMesh
+// polygon mesh (face properties carry the material and object ids) with a per-polygon cache of
+// plane data for the atlas and the GPU.
+#pragma once
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "src/base/Polygon.h"
+
+namespace hemirad {
+
+struct MeshTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using Mesh = OpenMesh::PolyMesh_ArrayKernelT<MeshTraits>;
+
+struct Material {
+  std::string name;
+  glm::dvec3 reflectance{0.0};  // rho, from Kd
+  glm::dvec3 emission{0.0};     // E, from Ke (or Ka with --emission ka)
+  bool emissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
+};
+
+struct SceneObject {
+  std::string name;  // OBJ `o`/`g` name
+};
+
+// One planar convex polygon: one chart in the atlas, one id in the item buffer.
+struct ScenePolygon {
+  Poly3 vertices;       // counter-clockwise seen from the front (emitting, receiving) side
+  glm::dvec3 normal;    // unit front normal
+  double area = 0;
+  int material = 0;
+  int object = 0;
+};
+
+class Scene {
+ public:
+  std::string path;  // the OBJ it came from ("" for scenes built in code)
+  std::vector<Material> materials;
+  std::vector<SceneObject> objects;
+  std::vector<std::string> warnings;  // what loading repaired or skipped
+
+  // Adds a polygon; returns false (and records nothing) if it has no area.
+  bool addPolygon(const Poly3& vertices, int material, int object);
+  int addMaterial(Material m);
+  int addObject(std::string name);  // existing id if the name is known
+
+  const std::vector<ScenePolygon>& polygons() const { return polygons_; }
+  const Mesh& mesh() const { return mesh_; }
+  double totalArea() const;
+  double emittedPower() const;  // sum of luminance(E) * A
+  glm::dvec3 boundsMin() const;
+  glm::dvec3 boundsMax() const;
+
+ private:
+  std::vector<ScenePolygon> polygons_;
+  Mesh mesh_;
+  OpenMesh::FPropHandleT<int> polygonProp_, materialProp_, objectProp_;
+  bool propsAdded_ = false;
+};
+
+double luminance(const glm::dvec3& c);
+
+}  // namespace hemirad

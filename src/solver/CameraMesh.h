@@ -1,0 +1,27 @@
+// The scene's polygons as triangles with their atlas coordinates and polygon ids, in a static
+// vertex buffer: what every view from a camera draws (the renderer, the importance view).
+#pragma once
+#include <glm/glm.hpp>
+
+#include "gl/Objects.h"
+#include "src/scene/Atlas.h"
+#include "src/scene/Camera.h"
+#include "src/scene/Scene.h"
+
+namespace hemirad {
+
+class CameraMesh {
+ public:
+  CameraMesh(const Scene& scene, const Atlas& atlas);
+  // Binds the vertex array and draws every triangle (attributes 0 position, 1 atlas, 2 polygon).
+  void draw() const;
+  // A camera's view-projection with near and far planes that hold the whole scene.
+  static glm::mat4 viewProjection(const Camera& camera, double aspect, double farDistance);
+
+ private:
+  gl::Buffer vertices_;
+  gl::VertexArray vao_;
+  std::size_t vertexCount_ = 0;
+};
+
+}  // namespace hemirad

@@ -1,0 +1,73 @@
+#include "src/solver/ItemBuffer.h"
+
+#include "gl/Shader.h"
+#include "src/scene/Atlas.h"
+#include "src/base/Error.h"
+#include "src/scene/ItemMesh.h"
+
+#include <cmath>
+
+namespace hemirad {
+
+Projection parseProjection(const std::string& name) {
+  if (name == "stereographic" || name == "hemisphere") return Projection::Hemisphere;
+  if (name == "hemicube") return Projection::Hemicube;
+  throw InputError("--hemisphere must be stereographic or hemicube, not '" + name + "'");
+}
+
+std::string projectionName(Projection p) { return p == Projection::Hemicube ? "hemicube" : "stereographic"; }
+
+namespace {
+int faceSide(int resolution, Projection p) {
+  return p == Projection::Hemicube ? std::max(1, int(std::lround(resolution / std::sqrt(3.0)))) : resolution;
+}
+gl::Defines projectionDefines(Projection p) {
+  return p == Projection::Hemicube ? gl::Defines{{"HEMICUBE", "1"}} : gl::Defines{};
+}
+}  // namespace
+
+ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance, Projection projection,
+                       int shooters)
+    : faceResolution_(faceSide(resolution, projection)),
+      faces_(projection == Projection::Hemicube ? 5 : 1),
+      shooters_(shooters),
+      defines_(projectionDefines(projection)),
+      program_(gl::renderProgram("itembuffer.vert", "itembuffer.frag", defines_)),
+      id_(GL_R32UI, faceResolution_, faceResolution_, faces_ * shooters_),
+      depth_(GL_DEPTH_COMPONENT32F, faceResolution_, faceResolution_, faces_ * shooters_) {
+  std::vector<ItemVertex> mesh = buildItemMesh(scene, subdivision);
+  vertexCount_ = mesh.size();
+  vertices_ = gl::Buffer(std::span<const ItemVertex>(mesh));
+  vao_.vertexBuffer(vertices_, sizeof(ItemVertex));
+  vao_.floatAttribute(0, 3, offsetof(ItemVertex, x));
+  vao_.uintAttribute(1, offsetof(ItemVertex, polygon));
+  target_.attach(GL_COLOR_ATTACHMENT0, id_);
+  target_.attach(GL_DEPTH_ATTACHMENT, depth_);
+  target_.checkComplete("item buffer");
+  program_.set("farDistance", float(farDistance));
+}
+
+void ItemBuffer::render(const gl::Buffer& control) {
+  const GLuint clearId[4] = {kNoPolygon, 0, 0, 0};
+  const float far = 1.0f;
+  glViewport(0, 0, faceResolution_, faceResolution_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // every face occludes from both sides
+  glEnable(GL_CLIP_DISTANCE0);
+  control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  program_.use();
+  vao_.bind();
+  glClearNamedFramebufferuiv(target_.id(), GL_COLOR, 0, clearId);  // every layer
+  glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &far);
+  target_.bind();
+  glDrawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertexCount_), faces_ * shooters_);
+  glDisable(GL_CLIP_DISTANCE0);
+}
+
+void ItemBuffer::bindForLookup() const {
+  id_.bindUnit(2);
+  depth_.bindUnit(3);
+}
+
+}  // namespace hemirad

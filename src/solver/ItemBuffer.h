@@ -1,0 +1,54 @@
+// The item buffer (seed 003 §39.2.1): the item mesh, held in a static vertex buffer, rasterised
+// from each shooter named in a control block into an R32UI polygon-id target with a depth of
+// distance / far, one layer per shooter (and hemicube face), all in one instanced draw. The
+// gather and the validation probe look receivers up in it (shaders/visibility.glsl).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gl/Objects.h"
+#include "gl/Shader.h"
+#include "src/scene/Scene.h"
+
+namespace hemirad {
+
+// Seed 003's single-pass hemispherical projection, or the classic five-face hemicube
+// (Cohen & Greenberg 1985) as the baseline.
+enum class Projection { Hemisphere, Hemicube };
+Projection parseProjection(const std::string& name);  // "stereographic" or "hemicube"
+std::string projectionName(Projection p);
+
+class ItemBuffer {
+ public:
+  // `resolution` is the pixel budget's side: the hemisphere gets resolution^2 pixels, the
+  // hemicube five faces of side resolution / sqrt(3) (top + four half faces = the same budget).
+  // `shooters`: the most shooters one render() draws (layers are allocated for each).
+  ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance,
+             Projection projection = Projection::Hemisphere, int shooters = 1);
+  // Shader defines that select the projection: every program that looks receivers up needs them.
+  const gl::Defines& defines() const { return defines_; }
+  // Draws from the shooters of the pass in `control` (SSBO 3); layers past its shooter count
+  // stay empty, and every triangle is clipped away once the GPU's stop rule has fired.
+  void render(const gl::Buffer& control);
+  // Binds the id and depth targets to texture units 2 and 3.
+  void bindForLookup() const;
+  std::size_t triangles() const { return vertexCount_ / 3; }
+  std::size_t vertexCount() const { return vertexCount_; }
+  int faceResolution() const { return faceResolution_; }
+  int shooters() const { return shooters_; }
+  // Pixels one shooter's item buffer covers (all its faces): the fill work of a shot.
+  std::size_t pixelsPerShooter() const { return std::size_t(faces_) * faceResolution_ * faceResolution_; }
+
+ private:
+  int faceResolution_;
+  int faces_, shooters_;
+  gl::Defines defines_;
+  gl::Program program_;
+  gl::Buffer vertices_;
+  gl::VertexArray vao_;
+  gl::Texture id_, depth_;
+  gl::Framebuffer target_;  // layered: the vertex shader picks the layer
+  std::size_t vertexCount_ = 0;
+};
+
+}  // namespace hemirad

@@ -1,0 +1,231 @@
+#include "src/solver/PerspectiveView.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "gl/Debug.h"
+#include "gl/Shader.h"
+
+namespace hemirad {
+
+namespace {
+constexpr std::size_t kVec4 = 4 * sizeof(float);
+constexpr unsigned kFirstEpochs = 4;
+}  // namespace
+
+PerspectiveView::PerspectiveView(const SolverState& state, std::size_t blockCount, unsigned decayShots, int resolution)
+    : state_(state),
+      blocks_(blockCount),
+      surfaces_(state.scene.polygons().size()),
+      decayShots_(std::max(1u, decayShots)),
+      resolution_(resolution),
+      mesh_(state.scene, state.atlas),
+      ids_(gl::renderProgram("camera.vert", "view_id.frag")),
+      seenPass_(gl::computeProgram("view_surfaces.comp")),
+      pendingPass_(gl::computeProgram("pending_blocks.comp")),
+      deferredPass_(gl::computeProgram("deferred_shooters.comp")),
+      surfaceView_(surfaces_ * 2 * sizeof(std::uint32_t)),
+      shotSoFar_(blocks_ * kVec4),
+      seen_(surfaces_ * sizeof(std::uint32_t)),
+      pending_(blocks_ * sizeof(std::uint32_t)),
+      deferredBlocks_(blocks_ * sizeof(std::uint32_t)),
+      visible_(surfaces_, 1),
+      epoch_(surfaces_, -1) {
+  const float zero = 0;
+  glClearNamedBufferData(shotSoFar_.id(), GL_R32F, GL_RED, GL_FLOAT, &zero);
+  pendingPass_.set("blockCount", unsigned(blocks_));
+  uploadSurfaces(false);
+}
+
+double PerspectiveView::simulatedFov() const {
+  return camera_.fovY + (180.0 - camera_.fovY) * double(std::min(step_, kSteps)) / kSteps;
+}
+
+std::size_t PerspectiveView::surfacesInView() const { return std::size_t(std::count(visible_.begin(), visible_.end(), 1)); }
+
+void PerspectiveView::look(const Camera& camera, double aspect, unsigned shots) {
+  camera_ = camera;
+  aspect_ = aspect;
+  lookShots_ = shots;
+  step_ = 0;
+  pending_view_ = true;
+}
+
+unsigned PerspectiveView::shotsToNextStep(unsigned shots) const {
+  if (wholeScene()) return kNoStep;
+  const unsigned at = lookShots_ + unsigned(std::uint64_t(decayShots_) * unsigned(step_ + 1) / kSteps);
+  return at > shots ? at - shots : 0;
+}
+
+void PerspectiveView::grow(unsigned shots) {
+  int step = step_;
+  while (step < kSteps &&
+         shots >= lookShots_ + unsigned(std::uint64_t(decayShots_) * unsigned(step + 1) / kSteps))
+    ++step;
+  if (step == step_) return;
+  step_ = step;
+  pending_view_ = true;
+}
+
+void PerspectiveView::showAll() {
+  step_ = kSteps;
+  pending_view_ = true;
+}
+
+bool PerspectiveView::update() {
+  if (!pending_view_ || delivering_) return false;
+  pending_view_ = false;
+  applyView();
+  delivering_ = true;
+  if (deferred_ == 0) finishDeliveries();  // nothing to deliver: the change is complete
+  return true;
+}
+
+// Seed 004 §5.3: the surfaces with a pixel in a view of the simulated field of view.
+std::vector<std::uint8_t> PerspectiveView::renderSeen() {
+  const int w = aspect_ >= 1 ? resolution_ : std::max(1, int(std::lround(resolution_ * aspect_)));
+  const int h = aspect_ >= 1 ? std::max(1, int(std::lround(resolution_ / aspect_))) : resolution_;
+  gl::Texture ids(GL_R32UI, w, h), depth(GL_DEPTH_COMPONENT32F, w, h);
+  gl::Framebuffer fbo;
+  fbo.attach(GL_COLOR_ATTACHMENT0, ids);
+  fbo.attach(GL_DEPTH_ATTACHMENT, depth);
+  fbo.checkComplete("perspective view");
+  const GLuint none[4] = {0xFFFFFFFFu, 0, 0, 0}, zero = 0;
+  const float far = 1.0f;
+  glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 0, none);
+  glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far);
+  glClearNamedBufferData(seen_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+
+  Camera wide = camera_;
+  wide.fovY = std::min(simulatedFov(), 179.0);
+  glm::mat4 vp = CameraMesh::viewProjection(wide, aspect_, state_.farDistance);
+  fbo.bind();
+  glViewport(0, 0, w, h);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  ids_.set("viewProjection", &vp[0][0]);
+  ids_.use();
+  mesh_.draw();
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+
+  ids.bindImage(0, GL_READ_ONLY);
+  seen_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
+  seenPass_.use();
+  gl::Program::dispatch(gl::groupsFor(unsigned(w), 16), gl::groupsFor(unsigned(h), 16));
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<std::uint32_t> seen(surfaces_);
+  seen_.read(0, seen.size() * sizeof(std::uint32_t), seen.data());
+  return {seen.begin(), seen.end()};
+}
+
+// A snapshot slot for surfaces leaving the view now. With all slots taken, the oldest epoch's
+// surfaces receive their entries now and join the new epoch (its snapshot is taken after).
+unsigned PerspectiveView::takeEpoch(const std::vector<std::uint8_t>& seen) {
+  for (unsigned e = 0; e < capacity_; ++e)
+    if (!epochBirth_[e]) return epochBirth_[e] = ++births_, e;
+  if (capacity_ < kMaxEpochs) {
+    const unsigned grown = std::min(kMaxEpochs, std::max(kFirstEpochs, 2 * capacity_));
+    gl::Buffer bigger(std::size_t(grown) * blocks_ * kVec4);
+    if (capacity_) glCopyNamedBufferSubData(snapshots_.id(), bigger.id(), 0, 0, std::size_t(capacity_) * blocks_ * kVec4);
+    snapshots_ = std::move(bigger);
+    epochBirth_.resize(grown, 0);
+    const unsigned e = capacity_;
+    capacity_ = grown;
+    return epochBirth_[e] = ++births_, e;
+  }
+  const unsigned oldest = unsigned(std::min_element(epochBirth_.begin(), epochBirth_.end()) - epochBirth_.begin());
+  for (std::uint32_t p = 0; p < surfaces_; ++p)
+    if (epoch_[p] == int(oldest) && !visible_[p] && !seen[p]) entering_.push_back(p), staysOut_.push_back(1);
+  epochBirth_[oldest] = ++births_;
+  return oldest;
+}
+
+void PerspectiveView::applyView() {
+  std::vector<std::uint8_t> seen = wholeScene() ? std::vector<std::uint8_t>(surfaces_, 1) : renderSeen();
+  entering_.clear();
+  staysOut_.clear();
+  newEpoch_ = -1;
+  for (std::uint32_t p = 0; p < surfaces_; ++p)
+    if (!visible_[p] && seen[p]) entering_.push_back(p), staysOut_.push_back(0);
+  for (std::uint32_t p = 0; p < surfaces_; ++p)
+    if (visible_[p] && !seen[p]) {
+      if (newEpoch_ < 0) newEpoch_ = int(takeEpoch(seen));
+      epoch_[p] = newEpoch_;
+    }
+  visible_ = seen;
+
+  // Seed 004 §5.5.2: the shooting locations of the entries to deliver, in block order.
+  deferred_ = next_ = 0;
+  if (entering_.empty()) return uploadSurfaces(false);
+  std::vector<GLuint> epochs;
+  for (std::uint32_t p : entering_)
+    if (std::find(epochs.begin(), epochs.end(), GLuint(epoch_[p])) == epochs.end()) epochs.push_back(GLuint(epoch_[p]));
+  pendingPass_.set("epochCount", unsigned(epochs.size()));
+  glProgramUniform1uiv(pendingPass_.id(), pendingPass_.location("epochs"), GLsizei(epochs.size()), epochs.data());
+  bind();
+  pending_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
+  pendingPass_.use();
+  gl::Program::dispatch(gl::groupsFor(unsigned(blocks_), 256));
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<std::uint32_t> pending(blocks_), list;
+  pending_.read(0, pending.size() * sizeof(std::uint32_t), pending.data());
+  for (std::uint32_t b = 0; b < blocks_; ++b)
+    if (pending[b]) list.push_back(b);
+  if (!list.empty()) deferredBlocks_.upload(0, list.size() * sizeof(std::uint32_t), list.data());
+  deferred_ = list.size();
+  uploadSurfaces(true);
+}
+
+void PerspectiveView::describeDeliveries(unsigned count, const gl::Buffer& blocks, const gl::Buffer& control) {
+  count = unsigned(std::min<std::size_t>(count, deliveriesLeft()));
+  state_.bindScene();
+  blocks.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  deferredBlocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
+  deferredPass_.set("first", unsigned(next_));
+  deferredPass_.set("count", count);
+  deferredPass_.use();
+  gl::Program::dispatch(gl::groupsFor(count, 64));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  next_ += count;
+}
+
+void PerspectiveView::finishDeliveries() {
+  for (std::size_t k = 0; k < entering_.size(); ++k) epoch_[entering_[k]] = staysOut_[k] ? newEpoch_ : -1;
+  // Free the slots nobody refers to any more, then snapshot the new epoch (delivery passes do
+  // not shoot, so shots so far are as they were when the surfaces left).
+  for (unsigned e = 0; e < capacity_; ++e)
+    if (epochBirth_[e] && int(e) != newEpoch_ && std::find(epoch_.begin(), epoch_.end(), int(e)) == epoch_.end())
+      epochBirth_[e] = 0;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (newEpoch_ >= 0)
+    glCopyNamedBufferSubData(shotSoFar_.id(), snapshots_.id(), 0, std::size_t(newEpoch_) * blocks_ * kVec4,
+                             blocks_ * kVec4);
+  entering_.clear();
+  staysOut_.clear();
+  newEpoch_ = -1;
+  deferred_ = next_ = 0;
+  delivering_ = false;
+  uploadSurfaces(false);
+  gl::checkErrors("perspective view");
+}
+
+// x: in view; y: 1 + the epoch of the entries a surface receives in this change's deliveries.
+void PerspectiveView::uploadSurfaces(bool delivering) {
+  std::vector<std::uint32_t> v(surfaces_ * 2, 0);
+  for (std::size_t p = 0; p < surfaces_; ++p) v[2 * p] = visible_[p];
+  if (delivering)
+    for (std::uint32_t p : entering_) v[2 * p + 1] = std::uint32_t(epoch_[p] + 1);
+  surfaceView_.upload(0, v.size() * sizeof(std::uint32_t), v.data());
+}
+
+void PerspectiveView::bind() const {
+  surfaceView_.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
+  shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
+  if (snapshots_) snapshots_.bindBase(GL_SHADER_STORAGE_BUFFER, 8);
+  else shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, 8);  // no epoch yet: never read, but bound
+}
+
+}  // namespace hemirad

@@ -1,0 +1,301 @@
+#include "src/solver/ProgressiveSolver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "gl/Debug.h"
+#include "gl/Shader.h"
+#include "src/solver/Control.h"
+#include "src/base/Error.h"
+
+namespace hemirad {
+
+namespace {
+
+constexpr unsigned kGatherGroup = 16;   // gather.comp local size (x and y)
+constexpr unsigned kGroupEntries = 1024;  // entries ranked per reduction workgroup (reduce_entry.glsl)
+constexpr unsigned kUnlimitedHistory = 1u << 20;
+constexpr unsigned kTimingStride = 16;  // with GPU stamps, one pass in 16 is timed
+
+enum Slot { kSelect, kItemBuffer, kGather };
+
+constexpr GLbitfield kAllBarriers =
+    GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
+
+// A quarter of the blocks: solves reach 90 % in about half as many shots as there are blocks,
+// so the view opens up over the first third or so of that, as the thesis's 10 s of ~30 s did.
+unsigned defaultFovDecay(std::size_t blocks, unsigned shootersPerPass) {
+  return std::max(unsigned(blocks / 4), 8u * shootersPerPass);
+}
+
+}  // namespace
+
+ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettings& settings)
+    : state_(state), settings_(settings), timer_(settings.timings) {
+  if (settings.shootersPerPass < 1 || unsigned(settings.shootersPerPass) > kMaxPassShooters)
+    throw InputError(fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shootersPerPass));
+  const unsigned keep = unsigned(settings.shootersPerPass);
+  const bool perspective = settings.algorithm == Algorithm::Perspective;
+  const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
+  reduce_ = gl::computeProgram("reduce.comp");
+  select_ = gl::computeProgram("select.comp", defines);
+
+  // Shooter blocks and the reduction levels above them: each workgroup of a level ranks 1024
+  // entries and keeps its best `keep`, until select.comp's one workgroup can rank the rest.
+  std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(settings.shootLevel);
+  blockCount_ = blocks.size();
+  blocks_ = gl::Buffer(std::span<const ShooterBlock>(blocks));
+  unsigned left = unsigned(blockCount_);
+  for (; left > kGroupEntries; left = gl::groupsFor(left, kGroupEntries) * keep)
+    levels_.emplace_back(gl::groupsFor(left, kGroupEntries) * keep * sizeof(float[4]));
+
+  // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
+  itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, settings.itemResolution,
+                                             state.farDistance, settings.projection,
+                                             settings.shootersPerPass * (settings.importanceDriven() ? 2 : 1));
+  if (settings.importanceDriven()) view_ = std::make_unique<ImportanceView>(state);
+  gl::Defines gatherDefines = itemBuffer_->defines();
+  gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
+  gather_ = gl::computeProgram("gather.comp", gatherDefines);
+  if (perspective) {
+    perspective_ = std::make_unique<PerspectiveView>(
+        state, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep));
+    gather_.set("blockCount", unsigned(blockCount_));
+  }
+
+  // The control block: stop rule, convergence history.
+  const StopRule& stop = settings.stop;
+  historyCapacity_ = stop.maxShots ? stop.maxShots + 1 : kUnlimitedHistory;
+  ControlBlock c{};
+  c.maxShots = stop.maxShots;
+  c.targetConvergence = float(stop.targetConvergence);
+  c.emittedPower = float(state.emittedPower);
+  c.historyCapacity = historyCapacity_;
+  c.shootersPerPass = keep;
+  control_ = gl::Buffer(sizeof(ControlBlock) + historyCapacity_ * sizeof(float));
+  control_.upload(0, sizeof c, &c);
+
+  gather_.set("farDistance", float(state.farDistance));
+  // select.comp folds what the parallel levels leave: the blocks themselves when there are none.
+  select_.set("count", left);
+  select_.set("keep", keep);
+  reduce_.set("keep", keep);
+  select_.set("fromBlocks", int(levels_.empty()));
+  // Importance is a view fraction per unit area: 1 / (total area) if spread evenly. An
+  // importance shot is not worth it below a millionth of the view's importance.
+  double area = 0;
+  for (const auto& pa : state.atlas.positionArea) area += pa.w;
+  const float floor = float(settings.importanceFloor / area);
+  reduce_.set("importanceFloor", floor);
+  select_.set("importanceFloor", floor);
+  select_.set("importanceThreshold", 1e-6f);
+  glProgramUniform2i(gather_.id(), gather_.location("atlasSize"), state.atlas.width, state.atlas.height);
+  gl::checkErrors("progressive solver setup");
+}
+
+ProgressiveSolver::~ProgressiveSolver() = default;
+
+void ProgressiveSolver::selectPass() {
+  state_.bindScene();
+  state_.radiosity.bindImage(0, GL_READ_ONLY);
+  state_.deltaB.bindImage(1, GL_READ_ONLY);
+  blocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  if (perspective_) perspective_->bind();
+  rankPass(settings_.importanceDriven() ? 1 : 0, false);
+  if (settings_.importanceDriven()) rankPass(2, true);
+}
+
+void ProgressiveSolver::look(const Camera& camera, double aspect) {
+  if (!view_) throw std::logic_error("look() needs an importance-driven solver");
+  view_->look(camera, aspect);
+  if (perspective_) {
+    perspective_->look(camera, aspect, status_.shots);
+    // The new view's deliveries may bring light: a finished solve has work again.
+    if (!budgetSpent()) status_.done = false;
+  }
+}
+
+// Seed 004 §5.5.3: one item buffer per block with entries for the surfaces entering the view,
+// up to K a pass, each entering surface receiving its own entry (gather.comp, viewMode 2).
+// Applies a waiting view first; uses at most `budget` item buffers and returns how many.
+unsigned ProgressiveSolver::deliverStored(unsigned budget) {
+  const unsigned K = unsigned(settings_.shootersPerPass);
+  unsigned used = 0;
+  perspective_->update();
+  while (used < budget && perspective_->delivering()) {
+    const unsigned n = unsigned(std::min<std::size_t>({K, budget - used, perspective_->deliveriesLeft()}));
+    perspective_->describeDeliveries(n, blocks_, control_);
+    itemBuffer_->render(control_);
+    gatherPass(2);
+    used += n;
+    deliveryShots_ += n;
+    if (perspective_->deliveriesLeft() == 0) {
+      perspective_->finishDeliveries();
+      // What was delivered is unshot again: a stopped solve goes on (unless its shots are spent).
+      if (!budgetSpent()) {
+        const std::uint32_t notDone = 0;
+        control_.upload(offsetof(ControlBlock, done), sizeof notDone, &notDone);
+        status_.done = false;
+      }
+      perspective_->update();  // a view that waited
+    }
+  }
+  return used;
+}
+
+// One ranking of the blocks (reduce_entry.glsl's rankBy) and the selection from it.
+void ProgressiveSolver::rankPass(unsigned rankBy, bool importanceShooters) {
+  // Many blocks: rank them 1024 at a time in parallel first; the last ranking runs in select.comp.
+  unsigned n = unsigned(blockCount_);
+  bool fromBlocks = true;
+  reduce_.use();
+  reduce_.set("rankBy", rankBy);
+  for (gl::Buffer& level : levels_) {
+    level.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+    reduce_.set("count", n);
+    reduce_.set("fromBlocks", int(fromBlocks));
+    gl::Program::dispatch(gl::groupsFor(n, kGroupEntries));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    level.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+    n = gl::groupsFor(n, kGroupEntries) * unsigned(settings_.shootersPerPass);
+    fromBlocks = false;
+  }
+  select_.use();  // its count and input kind are fixed per scene: set in the constructor
+  select_.set("rankBy", rankBy);
+  select_.set("importanceShooters", int(importanceShooters));
+  gl::Program::dispatch(1);
+  glMemoryBarrier(kAllBarriers);
+}
+
+void ProgressiveSolver::gatherPass(unsigned viewMode) {
+  state_.bindScene();
+  if (perspective_) {
+    perspective_->bind();
+    gather_.set("viewMode", viewMode);
+  }
+  state_.radiosity.bindImage(0, GL_READ_WRITE);
+  state_.deltaB.bindImage(1, GL_READ_WRITE);
+  itemBuffer_->bindForLookup();
+  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  gather_.use();
+  gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
+                        gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));
+  glMemoryBarrier(kAllBarriers);
+}
+
+SolveStatus ProgressiveSolver::advance(unsigned shots) {
+  const unsigned K = unsigned(settings_.shootersPerPass);
+  unsigned passes = (shots + K - 1) / K;
+  if (!perspective_) {
+    runPasses(passes);
+    return readStatus();
+  }
+  // Perspective-driven: item buffers for deliveries and for shots share the budget, and nothing
+  // is shot while deliveries are due. The area of interest grows at fixed shot counts, so passes
+  // stop there (every pass but a solve's last shoots K) whatever the batch sizes asked for.
+  unsigned budget = passes * K;
+  while (budget > 0) {
+    budget -= deliverStored(budget);
+    if (budget == 0 || perspective_->delivering()) break;
+    if (status_.done) {
+      // Out of unshot light (or at the target) with entries still held back: the area of
+      // interest becomes the whole scene, so the solve ends where progressive refinement does.
+      if (budgetSpent() || perspective_->wholeScene()) break;
+      perspective_->showAll();
+      continue;
+    }
+    const unsigned toStep = perspective_->shotsToNextStep(status_.shots);
+    const unsigned most = (budget + K - 1) / K;
+    const unsigned run = toStep == PerspectiveView::kNoStep ? most : std::clamp((toStep + K - 1) / K, 1u, most);
+    runPasses(run);
+    budget -= std::min(budget, run * K);
+    readStatus();
+    perspective_->grow(status_.shots);
+  }
+  return status_;
+}
+
+void ProgressiveSolver::runPasses(unsigned passes) {
+  for (unsigned k = 0; k < passes && !status_.done; ++k, ++enqueued_) {
+    // GPU stamps cost a query each (on llvmpipe as much as a pass): one pass in kTimingStride
+    // is timed and the totals are scaled; synchronised timing times every pass.
+    const bool timed = settings_.timings == gl::TimerMode::Synchronous || enqueued_ % kTimingStride == 0;
+    if (timed) timer_.mark(kSelect);
+    selectPass();
+    if (timed) timer_.mark(kItemBuffer);
+    itemBuffer_->render(control_);
+    if (timed) timer_.mark(kGather);
+    gatherPass(1);
+    if (timed) timer_.stop(), ++timed_;
+  }
+}
+
+// State bytes: the control block's header, the convergence history, then (importance-driven)
+// the direct importance R per atlas texel.
+std::vector<std::uint8_t> ProgressiveSolver::saveState() const {
+  constexpr std::size_t header = offsetof(ControlBlock, shooter);
+  const std::size_t history = std::min(status_.shots + 1, historyCapacity_) * sizeof(float);
+  std::vector<float> direct = view_ ? view_->readDirect() : std::vector<float>{};
+  std::vector<std::uint8_t> bytes(header + history + direct.size() * sizeof(float));
+  control_.read(0, header, bytes.data());
+  control_.read(sizeof(ControlBlock), history, bytes.data() + header);
+  if (!direct.empty())  // memcpy from an empty vector's null data() is UB (UBSan, ci/sanitize)
+    std::memcpy(bytes.data() + header + history, direct.data(), direct.size() * sizeof(float));
+  return bytes;
+}
+
+SolveStatus ProgressiveSolver::restoreState(std::span<const std::uint8_t> bytes) {
+  constexpr std::size_t header = offsetof(ControlBlock, shooter);
+  const std::size_t direct = view_ ? state_.atlas.positionArea.size() * sizeof(float) : 0;
+  ControlBlock c{};
+  if (bytes.size() < header + direct || (bytes.size() - header - direct) % sizeof(float) != 0)
+    throw InputError("checkpoint: progressive solver state is corrupt");
+  std::memcpy(&c, bytes.data(), header);
+  // This run's stop rule; the shots and history go on from the checkpoint's.
+  c.maxShots = settings_.stop.maxShots;
+  c.targetConvergence = float(settings_.stop.targetConvergence);
+  c.historyCapacity = historyCapacity_;
+  c.done = 0;
+  c.count = c.importanceCount = 0;
+  control_.upload(0, header, &c);
+  const std::size_t history =
+      std::min<std::size_t>((bytes.size() - header - direct) / sizeof(float), historyCapacity_);
+  control_.upload(sizeof(ControlBlock), history * sizeof(float), bytes.data() + header);
+  if (view_) {
+    std::vector<float> r(state_.atlas.positionArea.size());
+    std::memcpy(r.data(), bytes.data() + bytes.size() - direct, direct);
+    view_->restoreDirect(r);
+  }
+  status_ = {c.shots, c.convergence, false};
+  importanceShots_ = c.importanceShots;
+  return status_;
+}
+
+SolveStatus ProgressiveSolver::readStatus() {
+  auto t0 = std::chrono::steady_clock::now();
+  ControlBlock c;
+  control_.read(0, offsetof(ControlBlock, shooter), &c);  // the status header, not the shooters
+  timings_.readback += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  timer_.collect(sampled_);
+  const double scale = timed_ ? double(enqueued_) / timed_ : 0.0;
+  timings_.select = sampled_[kSelect] * scale;
+  timings_.itemBuffer = sampled_[kItemBuffer] * scale;
+  timings_.gather = sampled_[kGather] * scale;
+  gl::checkErrors("progressive shot");
+  status_ = {c.shots, c.convergence, c.done != 0};
+  importanceShots_ = c.importanceShots;
+  return status_;
+}
+
+std::vector<float> ProgressiveSolver::convergenceHistory() const {
+  std::vector<float> h(std::min(status_.shots + 1, historyCapacity_));
+  control_.read(sizeof(ControlBlock), h.size() * sizeof(float), h.data());
+  return h;
+}
+
+}  // namespace hemirad

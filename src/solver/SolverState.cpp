@@ -1,0 +1,95 @@
+#include "src/solver/SolverState.h"
+
+#include <cstring>
+#include <string>
+
+#include "src/base/Error.h"
+
+namespace hemirad {
+
+namespace {
+struct GpuPolygon {
+  glm::vec4 normal, reflectance, emission;
+};
+}  // namespace
+
+SolverState::SolverState(const Scene& s, const Atlas& a)
+    : scene(s),
+      atlas(a),
+      positionArea(GL_RGBA32F, a.width, a.height),
+      polygonOf(GL_R32UI, a.width, a.height),
+      radiosity(GL_RGBA32F, a.width, a.height),
+      deltaB(GL_RGBA32F, a.width, a.height) {
+  std::vector<GpuPolygon> table;
+  for (auto& p : s.polygons()) {
+    const Material& m = s.materials[p.material];
+    table.push_back({glm::vec4(glm::vec3(p.normal), 0), glm::vec4(glm::vec3(m.reflectance), 0),
+                     glm::vec4(glm::vec3(m.emission), 0)});
+  }
+  polygons = gl::Buffer(std::span<const GpuPolygon>(table));
+  positionArea.upload(GL_RGBA, GL_FLOAT, a.positionArea.data());
+  polygonOf.upload(GL_RED_INTEGER, GL_UNSIGNED_INT, a.polygonOf.data());
+
+  std::vector<glm::vec4> emission(a.positionArea.size(), glm::vec4(0.0f));
+  for (size_t t = 0; t < emission.size(); ++t) {
+    if (a.polygonOf[t] == kNoPolygon) continue;
+    glm::dvec3 e = s.materials[s.polygons()[a.polygonOf[t]].material].emission;
+    emission[t] = glm::vec4(glm::vec3(e), 0.0f);
+    emittedPower += luminance(e) * a.positionArea[t].w;
+  }
+  radiosity.upload(GL_RGBA, GL_FLOAT, emission.data());
+  deltaB.upload(GL_RGBA, GL_FLOAT, emission.data());
+  farDistance = 2.0 * glm::length(s.boundsMax() - s.boundsMin()) + 1e-6;
+}
+
+void SolverState::bindScene() const {
+  polygons.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  positionArea.bindUnit(0);
+  polygonOf.bindUnit(1);
+}
+
+static std::vector<glm::vec4> readRgba(const gl::Texture& t) {
+  std::vector<glm::vec4> out(size_t(t.width()) * t.height());
+  t.read(GL_RGBA, GL_FLOAT, out.size() * sizeof(glm::vec4), out.data());
+  return out;
+}
+std::vector<glm::vec4> SolverState::readRadiosity() const { return readRgba(radiosity); }
+std::vector<glm::vec4> SolverState::readDeltaB() const { return readRgba(deltaB); }
+
+void SolverState::restore(const std::vector<glm::vec4>& B, const std::vector<glm::vec4>& dB) {
+  const std::size_t n = std::size_t(atlas.width) * atlas.height;
+  if (B.size() != n || dB.size() != n)
+    throw InputError("checkpoint holds " + std::to_string(B.size()) + " elements, the atlas " + std::to_string(n));
+  radiosity.upload(GL_RGBA, GL_FLOAT, B.data());
+  deltaB.upload(GL_RGBA, GL_FLOAT, dB.data());
+}
+
+std::vector<ObjectRadiosity> objectRadiosity(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B) {
+  std::vector<ObjectRadiosity> out(scene.objects.size());
+  for (size_t i = 0; i < out.size(); ++i) out[i].name = scene.objects[i].name;
+  for (size_t t = 0; t < B.size(); ++t) {
+    if (atlas.polygonOf[t] == kNoPolygon) continue;
+    ObjectRadiosity& o = out[scene.polygons()[atlas.polygonOf[t]].object];
+    double a = atlas.positionArea[t].w;
+    o.area += a;
+    o.mean += glm::dvec3(B[t]) * a;
+  }
+  for (auto& o : out)
+    if (o.area > 0) o.mean /= o.area;
+  return out;
+}
+
+std::uint64_t radiosityHash(const Atlas& atlas, const std::vector<glm::vec4>& B) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (size_t t = 0; t < B.size(); ++t) {
+    if (atlas.polygonOf[t] == kNoPolygon) continue;
+    for (int c = 0; c < 3; ++c) {
+      std::uint32_t bits;
+      std::memcpy(&bits, &B[t][c], 4);
+      for (int k = 0; k < 4; ++k) h = (h ^ ((bits >> (8 * k)) & 0xFFu)) * 1099511628211ull;
+    }
+  }
+  return h;
+}
+
+}  // namespace hemirad

@@ -1,0 +1,49 @@
+// What every radiosity algorithm works on: the atlas and polygon table on the GPU, and the
+// radiosity B and unshot radiosity dB atlases (RGBA32F, one texel per element). Progressive
+// refinement is one Solver over it; stochastic iteration and instant radiosity plug in beside.
+#pragma once
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "gl/Objects.h"
+#include "src/scene/Atlas.h"
+#include "src/scene/Scene.h"
+
+namespace hemirad {
+
+class SolverState {
+ public:
+  // Needs a current GL context. Uploads the atlas and sets B = dB = E.
+  SolverState(const Scene& scene, const Atlas& atlas);
+
+  const Scene& scene;
+  const Atlas& atlas;
+  gl::Texture positionArea;  // RGBA32F element centre and area
+  gl::Texture polygonOf;     // R32UI polygon id per texel
+  gl::Texture radiosity;     // RGBA32F B
+  gl::Texture deltaB;        // RGBA32F dB (unshot)
+  gl::Buffer polygons;       // per polygon: normal, reflectance, emission
+  double emittedPower = 0;   // sum over elements of luminance(E) * area
+  double farDistance = 0;    // longer than any segment inside the scene
+
+  // Binds the polygon table (SSBO 0) and the atlas (texture units 0 and 1).
+  void bindScene() const;
+  std::vector<glm::vec4> readRadiosity() const;  // atlas order, row 0 first
+  std::vector<glm::vec4> readDeltaB() const;
+  // Replaces B and dB (a checkpoint's), atlas order; throws InputError if the sizes differ.
+  void restore(const std::vector<glm::vec4>& B, const std::vector<glm::vec4>& dB);
+};
+
+// Area-weighted mean B per object (DESIGN.md's report `mean_radiosity`), from a B readback.
+struct ObjectRadiosity {
+  std::string name;
+  double area = 0;
+  glm::dvec3 mean{0.0};
+};
+std::vector<ObjectRadiosity> objectRadiosity(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B);
+// FNV-1a 64 of the B of every element (bit patterns), for determinism checks.
+std::uint64_t radiosityHash(const Atlas& atlas, const std::vector<glm::vec4>& B);
+
+}  // namespace hemirad

@@ -1,0 +1,52 @@
+#include "src/validate/FormFactorProbe.h"
+
+#include <chrono>
+
+#include "gl/Debug.h"
+#include "gl/Shader.h"
+#include "src/solver/Control.h"
+
+namespace hemirad {
+
+FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int resolution, Projection projection)
+    : state_(state),
+      itemBuffer_(state.scene, subdivision, resolution, state.farDistance, projection),
+      program_(gl::computeProgram("formfactor_probe.comp", itemBuffer_.defines())),
+      control_(sizeof(ControlBlock)),
+      result_(GL_RGBA32F, state.atlas.width, state.atlas.height) {
+  program_.set("farDistance", float(state.farDistance));
+  glProgramUniform2i(program_.id(), program_.location("atlasSize"), state.atlas.width, state.atlas.height);
+}
+
+std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
+  const Atlas& a = state_.atlas;
+  const std::uint32_t polygon = a.polygonOf[s];
+  const glm::dvec3 n = state_.scene.polygons()[polygon].normal;
+  ControlBlock c{};
+  c.count = 1;
+  ShooterRecord& shooter = c.shooter[0];
+  for (int k = 0; k < 4; ++k) shooter.positionArea[k] = a.positionArea[s][k];
+  shooter.normal[0] = float(n.x), shooter.normal[1] = float(n.y), shooter.normal[2] = float(n.z);
+  shooter.rect[0] = int(s % a.width), shooter.rect[1] = int(s / a.width), shooter.rect[2] = shooter.rect[3] = 1;
+  shooter.polygon = polygon;
+  control_.upload(0, sizeof c, &c);
+
+  glFinish();
+  auto t0 = std::chrono::steady_clock::now();
+  itemBuffer_.render(control_);
+  state_.bindScene();
+  itemBuffer_.bindForLookup();
+  result_.bindImage(0, GL_WRITE_ONLY);
+  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  program_.use();
+  gl::Program::dispatch(gl::groupsFor(unsigned(a.width), 16), gl::groupsFor(unsigned(a.height), 16));
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glFinish();
+  gpuMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<ProbeSample> out(a.polygonOf.size());
+  result_.read(GL_RGBA, GL_FLOAT, out.size() * sizeof(ProbeSample), out.data());
+  gl::checkErrors("form factor probe");
+  return out;
+}
+
+}  // namespace hemirad

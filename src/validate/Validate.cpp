@@ -1,0 +1,245 @@
+#include "src/validate/Validate.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "src/base/AtomicFile.h"
+#include "src/scene/Camera.h"
+#include "src/validate/DenseSolver.h"
+#include "src/solver/ProgressiveSolver.h"
+#include "src/base/Error.h"
+#include "src/validate/ExactReference.h"
+#include "src/validate/FormFactorProbe.h"
+
+namespace hemirad {
+
+namespace {
+
+double percentile(std::vector<double>& v, double q) {
+  if (v.empty()) return 0;
+  auto k = v.begin() + std::ptrdiff_t(q * double(v.size() - 1) + 0.5);
+  std::nth_element(v.begin(), k, v.end());
+  return *k;
+}
+
+// F_ab over the shooters: shooter element i in a hands on sum_j in b F_ji A_j / A_i (reciprocity
+// of the receiver-to-element form factors); F_ab is the area-weighted mean over a's shooters.
+struct ObjectSums {
+  std::vector<double> shooterArea;            // per object
+  std::vector<std::vector<double>> handedOn;  // [a][b]: sum over a's shooters of A_i F_i->b
+  explicit ObjectSums(size_t objects) : shooterArea(objects, 0.0), handedOn(objects, std::vector<double>(objects, 0.0)) {}
+};
+
+// A converged GPU solve (per-element shooting, the finest level asked for) against the dense one.
+void compareSolution(const Scene& scene, const Atlas& atlas, const cpu::ExactVisibility& visibility,
+                     const ValidateOptions& o, Validation& v) {
+  DenseSolution dense = solveDense(scene, atlas, visibility);
+  SolverState state(scene, atlas);
+  ProgressiveSettings settings;
+  settings.itemSubdivision = *std::max_element(o.levels.begin(), o.levels.end());
+  settings.itemResolution = o.itemResolutions.front();
+  settings.projection = o.projections.front();
+  settings.shootLevel = 0;
+  settings.stop.targetConvergence = o.solutionConvergence;
+  ProgressiveSolver solver(state, settings);
+  SolveStatus status;
+  while (!status.done) status = solver.advance(256);
+  v.solutionShots = status.shots;
+  std::vector<glm::vec4> B = state.readRadiosity();
+  std::vector<SolutionError> errors(scene.objects.size());
+  std::vector<double> area(scene.objects.size(), 0.0);
+  for (std::size_t t = 0; t < B.size(); ++t) {
+    if (atlas.polygonOf[t] == kNoPolygon) continue;
+    size_t obj = size_t(scene.polygons()[atlas.polygonOf[t]].object);
+    double A = atlas.positionArea[t].w, d = luminance(dense.B[t]), g = luminance(glm::dvec3(B[t]));
+    SolutionError& e = errors[obj];
+    area[obj] += A;
+    e.meanDense += d * A;
+    e.meanGpu += g * A;
+    e.rmse += (g - d) * (g - d) * A;
+    e.maxError = std::max(e.maxError, std::abs(g - d));
+  }
+  for (size_t i = 0; i < errors.size(); ++i) {
+    errors[i].object = scene.objects[i].name;
+    if (area[i] <= 0) continue;
+    errors[i].meanDense /= area[i];
+    errors[i].meanGpu /= area[i];
+    errors[i].rmse = std::sqrt(errors[i].rmse / area[i]);
+  }
+  v.solution = errors;
+}
+
+}  // namespace
+
+std::vector<std::size_t> chooseShooters(const Atlas& atlas, std::optional<std::size_t> count) {
+  std::vector<std::size_t> elements;
+  for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
+    if (atlas.polygonOf[t] != kNoPolygon) elements.push_back(t);
+  if (!count || *count >= elements.size()) return elements;
+  std::vector<std::size_t> chosen;
+  for (std::size_t i = 0; i < *count; ++i) chosen.push_back(elements[(2 * i + 1) * elements.size() / (2 * *count)]);
+  return chosen;
+}
+
+Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOptions& o) {
+  Validation v;
+  v.elements = atlas.elements;
+  const std::vector<std::size_t> shooters = chooseShooters(atlas, o.shooters);
+  v.shooters = shooters.size();
+  const size_t objects = scene.objects.size();
+  auto objectOf = [&](std::size_t t) { return scene.polygons()[atlas.polygonOf[t]].object; };
+
+  // The exact side does not depend on L: once per shooter.
+  auto t0 = std::chrono::steady_clock::now();
+  ExactReference exact(scene, atlas);
+  std::vector<std::vector<PairSample>> reference;
+  ObjectSums exactSums(objects);
+  for (std::size_t s : shooters) {
+    reference.push_back(exact.fromShooter(s));
+    double As = atlas.positionArea[s].w;
+    exactSums.shooterArea[objectOf(s)] += As;
+    for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
+      if (reference.back()[t].formFactor > 0)
+        exactSums.handedOn[objectOf(s)][objectOf(t)] += reference.back()[t].formFactor * atlas.positionArea[t].w;
+  }
+  v.exactMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  SolverState state(scene, atlas);
+  ObjectSums gpuSums(objects);
+  double worstError = -1;
+  std::size_t figureIndex = 0;  // into `shooters`
+  for (Projection projection : o.projections)
+    for (int resolution : o.itemResolutions)
+      for (int level : o.levels) {
+        const bool first = v.levels.empty(), figureConfig = projection == o.projections[0] && resolution == o.itemResolutions[0];
+        FormFactorProbe probe(state, level, resolution, projection);
+        LevelStats st;
+        st.projection = projection;
+        st.itemResolution = resolution;
+        st.itemSubdivision = level;
+        st.itemTriangles = probe.itemTriangles();
+        std::vector<double> relErrors;
+        std::size_t agree = 0;
+        ObjectSums levelSums(objects);
+        for (std::size_t k = 0; k < shooters.size(); ++k) {
+          std::vector<ProbeSample> gpu = probe.fromShooter(shooters[k]);
+          levelSums.shooterArea[objectOf(shooters[k])] += atlas.positionArea[shooters[k]].w;
+          double misplaced = 0;  // form factor the visibility errors add or remove
+          bool seesAnything = false;  // shooters inside closed solids (under a block) never shoot
+          for (std::size_t t = 0; t < gpu.size(); ++t) {
+            const PairSample& ref = reference[k][t];
+            if (gpu[t].formFactor > 0)
+              levelSums.handedOn[objectOf(shooters[k])][objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
+            if (!ref.facing) continue;
+            ++st.texelPairs;
+            bool gv = gpu[t].visible > 0.5f;
+            agree += gv == ref.visible;
+            if (gv != ref.visible) misplaced += std::abs(double(gpu[t].formFactor) - ref.formFactor);
+            seesAnything = seesAnything || ref.visible;
+            st.falseVisible += gv && !ref.visible;
+            st.falseHidden += !gv && ref.visible;
+            if (ref.formFactor > 0)
+              relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
+          }
+          if (first && seesAnything && misplaced > worstError) worstError = misplaced, figureIndex = k;
+        }
+        st.visibilityAgreement = st.texelPairs ? double(agree) / double(st.texelPairs) : 1.0;
+        st.ffRelErrorMedian = percentile(relErrors, 0.5);
+        st.ffRelErrorP95 = percentile(relErrors, 0.95);
+        st.ffRelErrorMax = relErrors.empty() ? 0 : *std::max_element(relErrors.begin(), relErrors.end());
+        st.gpuMs = probe.gpuMilliseconds();
+        v.levels.push_back(st);
+        if (figureConfig && level == o.levels.back()) gpuSums = levelSums;  // object F: first config, highest L
+        // Figure samples: the chosen shooter at the first configuration's lowest and highest level.
+        if (figureConfig && (level == o.levels.front() || level == o.levels.back())) {
+          std::vector<ProbeSample> gpu = probe.fromShooter(shooters[figureIndex]);
+          if (level == o.levels.front()) v.figureGpu.assign(2, gpu);
+          else v.figureGpu[1] = std::move(gpu);
+        }
+      }
+  v.figureShooter = shooters[figureIndex];
+  v.figureExact = reference[figureIndex];
+  if (o.solution) compareSolution(scene, atlas, exact.visibility(), o, v);
+  for (size_t a = 0; a < objects; ++a)
+    for (size_t b = 0; b < objects; ++b) {
+      if (exactSums.shooterArea[a] <= 0) continue;
+      v.objectFormFactors.push_back({scene.objects[a].name, scene.objects[b].name,
+                                     exactSums.handedOn[a][b] / exactSums.shooterArea[a],
+                                     gpuSums.handedOn[a][b] / gpuSums.shooterArea[a]});
+    }
+  return v;
+}
+
+std::string configName(const LevelStats& s) {
+  return fmt::format("{} {}^2", projectionName(s.projection), s.itemResolution);
+}
+
+int runValidate(const ValidateOptions& o) {
+  if (!o.report.empty()) checkWritable(o.report, "--report");
+  if (!o.figures.empty()) prepareFigureFolder(o.figures);
+  Scene scene = loadScene(o.scene, o.load);
+  for (const auto& w : scene.warnings) warn(w);
+  if (scene.polygons().empty()) fail("{}: the scene has no faces with area", o.scene);
+  Camera camera = resolveCamera(scene, o.camera);
+  auto backend = gl::createBackend(o.backend);
+  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
+  auto t0 = std::chrono::steady_clock::now();
+  Validation v = validate(scene, atlas, o);
+  double totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  fmt::print("{}: {} elements, {} shooters, exact reference {:.0f} ms, total {:.0f} ms\n\n", o.scene, v.elements,
+             v.shooters, v.exactMs, totalMs);
+  fmt::print("{}", levelTable(v));
+  if (o.solution) {
+    fmt::print("\nGPU solution ({} shots to convergence {}) against the dense exact solution, luminance of B:\n\n",
+               v.solutionShots, o.solutionConvergence);
+    fmt::print("| object | dense mean | GPU mean | RMSE | max error |\n|---|---|---|---|---|\n");
+    for (const SolutionError& e : v.solution)
+      fmt::print("| {} | {:.5g} | {:.5g} | {:.3g} | {:.3g} |\n", e.object, e.meanDense, e.meanGpu, e.rmse, e.maxError);
+  }
+  if (!o.report.empty()) {
+    using nlohmann::json;
+    json levels = json::array(), ffs = json::array();
+    for (const LevelStats& s : v.levels)
+      levels.push_back({{"hemisphere", projectionName(s.projection)}, {"item_resolution", s.itemResolution},
+                        {"item_subdivision", s.itemSubdivision}, {"item_triangles", s.itemTriangles},
+                        {"texel_pairs", s.texelPairs}, {"visibility_agreement", s.visibilityAgreement},
+                        {"false_visible", s.falseVisible}, {"false_hidden", s.falseHidden},
+                        {"ff_rel_error_median", s.ffRelErrorMedian}, {"ff_rel_error_p95", s.ffRelErrorP95},
+                        {"ff_rel_error_max", s.ffRelErrorMax}, {"gpu_ms", s.gpuMs}});
+    for (const auto& f : v.objectFormFactors) ffs.push_back({{"from", f.from}, {"to", f.to}, {"exact", f.exact}, {"gpu", f.gpu}});
+    json report = {{"scene", o.scene},         {"backend", backend->name()}, {"renderer", backend->renderer()},
+                   {"elements", v.elements},   {"shooters", v.shooters},     {"exact_ms", v.exactMs},
+                   {"total_ms", totalMs},      {"levels", levels},           {"object_form_factors", ffs}};
+    if (o.solution) {
+      json sol = json::array();
+      for (const SolutionError& e : v.solution)
+        sol.push_back({{"object", e.object}, {"mean_dense", e.meanDense}, {"mean_gpu", e.meanGpu}, {"rmse", e.rmse},
+                       {"max_error", e.maxError}});
+      report["solution"] = {{"shots", v.solutionShots}, {"convergence", o.solutionConvergence}, {"objects", sol}};
+    }
+    writeTextFile(o.report, report.dump(2) + "\n");
+  }
+  if (!o.figures.empty()) {
+    SolverState state(scene, atlas);
+    writeFigures(o.figures, scene, atlas, state, camera, o, v);
+  }
+  return 0;
+}
+
+std::string levelTable(const Validation& v) {
+  std::string out =
+      "| item buffer | L | item triangles | texel pairs | visibility agreement | false visible | false hidden | FF rel. "
+      "error median | p95 | max | GPU ms |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const LevelStats& s : v.levels)
+    out += fmt::format("| {} | {} | {} | {} | {:.5f} | {} | {} | {:.4f} | {:.4f} | {:.3g} | {:.0f} |\n", configName(s),
+                       s.itemSubdivision, s.itemTriangles, s.texelPairs, s.visibilityAgreement, s.falseVisible,
+                       s.falseHidden, s.ffRelErrorMedian, s.ffRelErrorP95, s.ffRelErrorMax, s.gpuMs);
+  return out;
+}
+
+}  // namespace hemirad

@@ -1,0 +1,84 @@
+// `hemirad validate`: the GPU item buffer and form factors against the exact CPU reference,
+// texel by texel, at several item-mesh subdivision levels L.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gl/Backend.h"
+#include "src/scene/Camera.h"
+#include "src/validate/ExactReference.h"
+#include "src/validate/FormFactorProbe.h"
+#include "src/solver/ItemBuffer.h"
+#include "src/solver/SolverState.h"
+#include "src/scene/Atlas.h"
+#include "src/scene/SceneLoader.h"
+
+namespace hemirad {
+
+struct ValidateOptions {
+  std::string scene;
+  LoadOptions load;
+  Discretisation discretisation;
+  std::vector<int> levels{0, 1, 2, 3, 4};
+  std::optional<std::size_t> shooters = 16;  // nullopt: every element
+  // Every projection at every resolution is one configuration, compared at every level.
+  std::vector<int> itemResolutions{512};
+  std::vector<Projection> projections{Projection::Hemisphere};
+  gl::BackendOptions backend;
+  std::optional<std::string> camera;  // for the camera-view figures
+  std::string report, figures;
+  bool solution = false;           // also compare a converged GPU solve with the dense solution
+  double solutionConvergence = 0.999;
+};
+
+struct LevelStats {
+  Projection projection = Projection::Hemisphere;
+  int itemResolution = 0;
+  int itemSubdivision = 0;
+  std::size_t itemTriangles = 0, texelPairs = 0, falseVisible = 0, falseHidden = 0;
+  double visibilityAgreement = 0, ffRelErrorMedian = 0, ffRelErrorP95 = 0, ffRelErrorMax = 0, gpuMs = 0;
+};
+
+struct ObjectFormFactor {
+  std::string from, to;
+  double exact = 0, gpu = 0;
+};
+
+// GPU radiosity (converged) against the dense exact solution, per object (luminance of B).
+struct SolutionError {
+  std::string object;
+  double meanDense = 0, meanGpu = 0, rmse = 0, maxError = 0;
+};
+
+struct Validation {
+  std::size_t elements = 0, shooters = 0;
+  double exactMs = 0;
+  std::vector<LevelStats> levels;
+  std::vector<ObjectFormFactor> objectFormFactors;  // gpu: first configuration, highest level
+  std::vector<SolutionError> solution;              // with ValidateOptions::solution
+  unsigned solutionShots = 0;
+  // For the figures: the shooter whose visibility errors misplace the most form factor at the
+  // first configuration's lowest level, and its exact and GPU samples at that configuration's lowest and highest level.
+  std::size_t figureShooter = 0;
+  std::vector<PairSample> figureExact;
+  std::vector<std::vector<ProbeSample>> figureGpu;  // [0]: lowest level, [1]: highest
+};
+
+// The shooter elements (atlas texels): `count` spread evenly over all elements, or all.
+std::vector<std::size_t> chooseShooters(const Atlas& atlas, std::optional<std::size_t> count);
+// Runs the comparison on the current GL context.
+Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOptions& options);
+int runValidate(const ValidateOptions& options);
+
+// The per-level table (markdown), as printed and as written into the figures' summary.
+std::string levelTable(const Validation& v);
+std::string configName(const LevelStats& s);  // "stereographic 512^2"
+
+// validate --figures (src/validate/ValidateFigures.cpp): plots and CSV against L, heat maps on the atlas
+// and in the camera view for the figure shooter, and index.html linking them.
+void prepareFigureFolder(const std::string& dir);
+void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas, const SolverState& state,
+                  const Camera& camera, const ValidateOptions& options, const Validation& v);
+
+}  // namespace hemirad

@@ -1,0 +1,258 @@
+#include "src/viewer/Viewer.h"
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <thread>
+
+#include "src/cli/AmbientFlag.h"
+#include "src/base/AtomicFile.h"
+#include "src/solver/Control.h"
+#include "src/base/Error.h"
+#include "src/viewer/ViewerWindow.h"
+#include "src/viewer/ViewerWorker.h"
+
+namespace hemirad {
+
+namespace {
+
+constexpr const char* kControls =
+    "  left-drag  look around            W/S A/D Q/E  move forward/back, left/right, down/up (shift: faster)\n"
+    "  1 2 3      restart as progressive / importance / perspective\n"
+    "  R          restart the solve      M            ambient term on/off\n"
+    "  Space      pause shooting         P            screenshot now (--screenshot, or hemirad-view.png)\n"
+    "  Esc        quit\n";
+
+// Turns the view about the eye: yaw about the up axis, pitch towards it, stopping short of it.
+Camera turned(Camera c, double yaw, double pitch) {
+  const glm::dvec3 up = glm::normalize(c.up), d = c.target - c.eye;
+  const double distance = glm::length(d);
+  const glm::dvec3 dir = d / distance;
+  glm::dvec3 flat = dir - up * glm::dot(dir, up);
+  if (glm::length(flat) < 1e-9) flat = glm::cross(up, std::abs(up.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0));
+  const glm::dvec3 forward = glm::normalize(flat), right = glm::cross(forward, up);
+  const double limit = glm::radians(89.0);
+  const double elevation = std::clamp(std::asin(std::clamp(glm::dot(dir, up), -1.0, 1.0)) + pitch, -limit, limit);
+  const glm::dvec3 horizontal = std::cos(yaw) * forward + std::sin(yaw) * right;
+  c.target = c.eye + distance * (std::cos(elevation) * horizontal + std::sin(elevation) * up);
+  return c;
+}
+
+// Moves eye and target together by `step` along the view's forward, right and up axes.
+Camera moved(Camera c, const glm::dvec3& axes, double step) {
+  const glm::dvec3 forward = glm::normalize(c.target - c.eye), up = glm::normalize(c.up);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, up));
+  const glm::dvec3 delta = step * (axes.x * forward + axes.y * right + axes.z * up);
+  c.eye += delta;
+  c.target += delta;
+  return c;
+}
+
+void writeScreenshot(const std::string& path, glm::ivec2 size, const std::vector<std::uint8_t>& rgba) {
+  std::vector<std::uint8_t> rgb(std::size_t(size.x) * size.y * 3);  // rows top-down
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x)
+      for (int c = 0; c < 3; ++c)
+        rgb[(std::size_t(y) * size.x + x) * 3 + c] = rgba[(std::size_t(size.y - 1 - y) * size.x + x) * 4 + c];
+  OIIO::ImageSpec spec(size.x, size.y, 3, OIIO::TypeDesc::UINT8);
+  writeAtomically(path, [&](const std::string& tmp) {
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) fail("{}: no image writer for this extension", path);
+    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb.data()) || !out->close())
+      fail("{}: cannot write: {}", path, out->geterror());
+  });
+}
+
+// A key's change to the controls: 1/2/3 and R restart the solve.
+void apply(ViewerControls& c, ViewerWindow::Action a) {
+  using A = ViewerWindow::Action;
+  switch (a) {
+    case A::Progressive: c.algorithm = Algorithm::Progressive, ++c.restarts; break;
+    case A::Importance: c.algorithm = Algorithm::Importance, ++c.restarts; break;
+    case A::Perspective: c.algorithm = Algorithm::Perspective, ++c.restarts; break;
+    case A::Restart: ++c.restarts; break;
+    case A::Ambient: c.ambient = !c.ambient; break;
+    case A::Pause: c.paused = !c.paused; break;
+    case A::Screenshot: case A::Quit: break;  // not controls: the window loop's own
+  }
+}
+
+std::string title(const ViewerFrame& f, double fps, bool paused) {
+  return fmt::format("hemirad — {} — {} shots — convergence {:.4f} — {:.0f} fps{}", f.algorithm, f.status.shots,
+                     f.status.convergence, fps, paused ? " — paused" : "");
+}
+
+// Stops the worker and waits for it, however the window loop ends (errors included).
+struct WorkerThread {
+  ViewerLink& link;
+  std::thread thread;
+  ~WorkerThread() {
+    {
+      std::lock_guard lock(link.mutex);
+      link.stop = true;
+    }
+    link.changed.notify_all();
+    thread.join();
+  }
+};
+
+}  // namespace
+
+void addViewFlags(CLI::App* cmd, ViewerOptions& o) {
+  cmd->footer(std::string("Controls:\n") + kControls);
+  auto& p = o.progressive;
+  p.stop.targetConvergence = 0.999;  // the viewer stops only when there is little left to see
+  cmd->add_option_function<std::string>(
+         "--algorithm", [&p](const std::string& a) { p.algorithm = parseAlgorithm(a); },
+         "Algorithm to start with (keys 1/2/3 switch): progressive (default), importance, perspective")
+      ->check(CLI::IsMember(algorithmNames()));
+  cmd->add_option("--backend", o.backendName, "GL backend of the solver: osmesa (default), egl, auto")
+      ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
+  cmd->add_option("--gpu", o.backend.gpu, "EGL device index")->check(CLI::Range(0, 1023));
+  cmd->add_option("--camera", o.camera, "Start camera: eye=x,y,z,target=x,y,z,up=x,y,z,fov=degrees (default: SCENE.camera)");
+  cmd->add_option("--width", o.width, "Window width (default 800)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--height", o.height, "Window height (default 600)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--exposure", o.exposure, "Exposure in stops over the automatic one (default 0)");
+  addAmbientFlag(cmd, o.ambient);
+  auto* frameMs = cmd->add_option("--frame-ms", o.frameMs, "Shooting time per frame in milliseconds (default 33)")
+                      ->check(CLI::Range(1.0, 60000.0));
+  cmd->add_option("--shots-per-frame", o.shotsPerFrame,
+                  "Shots per frame instead of a time budget (deterministic): frame k shows the solve after "
+                  "k x N shots, rounded up to whole passes")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->excludes(frameMs);
+  cmd->add_option("--frames", o.frames, "Quit after N frames (each frame is presented); with --shots-per-frame the solve also stops at "
+                  "N x --shots-per-frame shots")->check(CLI::Range(1u, 1u << 30));
+  cmd->add_option("--screenshot", o.screenshot, "On quit, write the window's last frame here (.png)");
+  cmd->add_option("--item-subdiv", p.itemSubdivision, "Item-mesh 1-to-4 subdivision level L (default 3)")
+      ->check(CLI::Range(0, 8));
+  cmd->add_option("--item-res", p.itemResolution, "Item buffer resolution in pixels (default 512)")
+      ->check(CLI::Range(16, 16384));
+  cmd->add_option("--shoot-level", p.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 1)")
+      ->check(CLI::Range(0, 8));
+  cmd->add_option("--shooters-per-pass", p.shootersPerPass,
+                  fmt::format("Blocks shooting in one pass (default 16, at most {})", kMaxPassShooters))
+      ->check(CLI::Range(1, int(kMaxPassShooters)));
+  cmd->add_option("--converge", p.stop.targetConvergence, "Stop shooting at this convergence (default 0.999)")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            char* end = nullptr;
+            double x = std::strtod(v.c_str(), &end);
+            return end != v.c_str() && *end == '\0' && x > 0 && x < 1 ? std::string() : "must be in (0, 1)";
+          },
+          "in (0, 1)"));
+  cmd->add_option("--shots", p.stop.maxShots, "Stop shooting after N shots")->check(CLI::Range(1u, 1u << 30));
+}
+
+int runView(ViewerOptions o) {
+  if (!o.screenshot.empty()) checkWritable(o.screenshot, "--screenshot");
+  // Counted frames of counted shots: the solve stops at their product, so the last frame shows
+  // what `solve --shots N x F` would (the same passes; only the last one can be cut short).
+  if (o.shotsPerFrame && o.frames) {
+    unsigned& max = o.progressive.stop.maxShots;
+    max = unsigned(std::min<std::uint64_t>(max ? max : ~0u, std::uint64_t(o.shotsPerFrame) * o.frames));
+  }
+  o.backend.kind = gl::parseBackendKind(o.backendName);
+  // Bad input fails here, before any window, as it does for `solve`.
+  Scene scene = loadScene(o.scene, o.load);
+  for (const auto& w : scene.warnings) warn(w);
+  validateSolvable(scene);
+  const Camera start = resolveCamera(scene, o.camera);
+  const double speed = 0.3 * glm::length(scene.boundsMax() - scene.boundsMin());  // scene units per second
+
+  ViewerWindow window(o.width, o.height, "hemirad");
+  fmt::print(stderr, "hemirad view: controls:\n{}", kControls);
+  ViewerLink link;
+  link.wake = &ViewerWindow::wake;
+  ViewerControls controls;
+  controls.camera = start;
+  controls.algorithm = o.progressive.algorithm;
+  controls.ambient = o.ambient;
+  const glm::ivec2 size0 = window.framebufferSize();
+  controls.width = std::max(size0.x, 1);
+  controls.height = std::max(size0.y, 1);
+  controls.version = 1;
+  link.controls = controls;
+
+  std::optional<ViewerFrame> shown;
+  unsigned presented = 0;
+  auto screenshot = [&](const std::string& path) {
+    if (!shown) return warn("no frame shown yet: no screenshot");
+    window.draw(*shown);
+    writeScreenshot(path, window.framebufferSize(), window.readBack());
+  };
+  {
+    WorkerThread worker{link, std::thread(runViewerWorker, std::cref(o), std::cref(scene), std::ref(link))};
+    using Clock = std::chrono::steady_clock;
+    auto last = Clock::now(), fpsStart = last;
+    unsigned fpsFrames = 0;
+    double fps = 0;
+    bool quit = false;
+    while (!quit && !window.closing()) {
+      window.wait(1.0 / 60);
+      const auto now = Clock::now();
+      const double dt = std::min(std::chrono::duration<double>(now - last).count(), 0.1);
+      last = now;
+
+      ViewerWindow::Input in = window.input();
+      ViewerControls next = controls;
+      if (in.drag != glm::dvec2(0.0)) next.camera = turned(next.camera, in.drag.x * 0.005, -in.drag.y * 0.005);
+      if (in.move != glm::dvec3(0.0)) next.camera = moved(next.camera, in.move, speed * dt * (in.fast ? 4 : 1));
+      const glm::ivec2 size = window.framebufferSize();
+      if (size.x > 0 && size.y > 0) next.width = size.x, next.height = size.y;  // not while minimised
+      bool changed = in.drag != glm::dvec2(0.0) || in.move != glm::dvec3(0.0) || next.width != controls.width ||
+                     next.height != controls.height;
+      for (ViewerWindow::Action a : in.actions) {
+        if (a == ViewerWindow::Action::Quit) {
+          quit = true;
+        } else if (a == ViewerWindow::Action::Screenshot) {  // a failure is worth a warning, not the session
+          const std::string path = o.screenshot.empty() ? "hemirad-view.png" : o.screenshot;
+          try {
+            screenshot(path);
+            fmt::print(stderr, "hemirad view: screenshot written: {}\n", path);
+          } catch (const std::exception& e) {
+            warn(e.what());
+          }
+          window.swap();
+        } else {
+          apply(next, a);
+          changed = true;
+        }
+      }
+      if (changed) {
+        ++next.version;
+        controls = next;
+        link.update(controls);
+      }
+      {
+        std::lock_guard lock(link.mutex);
+        if (link.error) break;
+      }
+      if (std::optional<ViewerFrame> f = link.take()) {
+        shown = std::move(f);
+        window.draw(*shown);
+        window.swap();
+        ++presented, ++fpsFrames;
+        if (double s = std::chrono::duration<double>(now - fpsStart).count(); s >= 0.5)
+          fps = fpsFrames / s, fpsFrames = 0, fpsStart = now;
+        window.setTitle(title(*shown, fps, controls.paused));
+        if (o.frames && presented >= o.frames) break;
+      } else if (window.damaged() && shown) {
+        window.draw(*shown);
+        window.swap();
+      }
+    }
+  }  // the worker has stopped
+  if (link.error) std::rethrow_exception(link.error);
+  if (!o.screenshot.empty()) screenshot(o.screenshot);
+  fmt::print(stderr, "hemirad view: {}, {} shots, convergence {:.4f}, {} frames\n",
+             shown ? shown->algorithm : algorithmName(controls.algorithm), shown ? shown->status.shots : 0,
+             shown ? shown->status.convergence : 0.0, presented);
+  return 0;
+}
+
+}  // namespace hemirad

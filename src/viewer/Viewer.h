@@ -1,0 +1,35 @@
+// `hemirad view SCENE`: a window (GLFW) showing the solution refine live, with mouse and
+// keyboard camera control and a switch between the algorithms.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "gl/Backend.h"
+#include "src/solver/ProgressiveSolver.h"
+#include "src/scene/SceneLoader.h"
+#include "src/scene/Atlas.h"
+
+namespace hemirad {
+
+struct ViewerOptions {
+  std::string scene;
+  LoadOptions load;
+  Discretisation discretisation;
+  ProgressiveSettings progressive;
+  gl::BackendOptions backend;
+  std::string backendName = "osmesa";
+  std::optional<std::string> camera;
+  int width = 800, height = 600;
+  double exposure = 0;
+  bool ambient = true;          // seed 004's display-only ambient term
+  double frameMs = 33;          // solver time budget per frame
+  unsigned shotsPerFrame = 0;   // instead of the budget: exactly this many shots a frame (deterministic)
+  unsigned frames = 0;          // quit after this many frames (0: when the window closes)
+  std::string screenshot;       // PNG of the window's last frame, written on quit
+};
+
+void addViewFlags(CLI::App* cmd, ViewerOptions& options);
+int runView(ViewerOptions options);
+
+}  // namespace hemirad

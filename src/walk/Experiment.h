@@ -1,0 +1,34 @@
+// `hemirad experiment`: seed 004's experiments (§6) as one command. For every scene, each
+// algorithm walks the scene's camera path (SCENE.path) with the same solver time per frame;
+// every frame is compared with the converged solution. Writes per-run CSVs, a summary of the
+// time to lighting events (CSV and markdown) and plots of image error and visible convergence
+// over solver time.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "gl/Backend.h"
+#include "src/solver/ProgressiveSolver.h"
+#include "src/walk/Walkthrough.h"
+
+namespace hemirad {
+
+struct ExperimentOptions {
+  std::vector<std::string> scenes{"scenes/four_boxes/four_boxes.obj", "scenes/four_boxes/four_boxes_x2.obj",
+                                  "scenes/cornell_subdivided/cornell_x4.obj"};
+  std::vector<std::string> algorithms{"progressive", "importance", "perspective"};
+  std::size_t elements = 4000;
+  double referenceConvergence = 0.99;
+  ProgressiveSettings progressive;
+  WalkthroughOptions walkthrough;  // fps, frame budget, frame size
+  std::string out = "docs/experiments";
+  bool frames = false;             // also keep every frame's PNG
+  gl::BackendOptions backend;
+  std::string backendName = "osmesa";
+};
+
+void addExperimentFlags(CLI::App* cmd, ExperimentOptions& options);
+int runExperiment(ExperimentOptions options);
+
+}  // namespace hemirad

@@ -1,0 +1,91 @@
+#include "src/output/ImageFile.h"
+#include "src/walk/Walkthrough.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+
+#include "src/base/AtomicFile.h"
+#include "src/base/Error.h"
+
+namespace hemirad {
+
+ConvergedViews::ConvergedViews(const Scene& scene, const Atlas& atlas, ProgressiveSettings settings, double convergence)
+    : state_(scene, atlas), renderer_(state_) {
+  settings.algorithm = Algorithm::Progressive;
+  settings.stop = {0, convergence};
+  ProgressiveSolver solver(state_, settings);
+  SolveStatus status;
+  while (!status.done) status = solver.advance(1024);
+  shots_ = status.shots;
+}
+
+std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, const CameraPath& path,
+                              ConvergedViews& converged, const WalkthroughOptions& o) {
+  using Clock = std::chrono::steady_clock;
+  if (!o.framesDir.empty()) std::filesystem::create_directories(o.framesDir);
+  Renderer renderer(state);
+  const double aspect = double(o.width) / o.height;
+  const int frames = int(std::floor(path.duration() * o.fps + 1e-9)) + 1;
+  std::vector<FrameRecord> records;
+  double solveMs = 0, scale = 0;
+  SolveStatus status = solver.advance(0);
+  Camera last;
+  for (int f = 0; f < frames; ++f) {
+    FrameRecord r;
+    r.frame = f;
+    r.time = f / o.fps;
+    const Camera camera = path.at(r.time);
+    const auto t0 = Clock::now();
+    auto elapsedMs = [&] { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); };
+    const bool moved = f == 0 || camera != last;
+    if (solver.viewDriven() && moved) {
+      solver.look(camera, aspect);
+      status = solver.advance(0);  // a perspective-driven solve has entries to deliver again
+    }
+    last = camera;
+    if (o.frameShots) {
+      if (!status.done) status = solver.advance(o.frameShots);
+    } else {
+      for (unsigned batch = 1; !status.done && elapsedMs() < o.frameMs;) {
+        const double before = elapsedMs();
+        status = solver.advance(batch);
+        batch = nextBatch(batch, (elapsedMs() - before) / 1e3);
+      }
+    }
+    solveMs += elapsedMs();
+
+    renderer.setAmbient(false);
+    const Image plain = renderer.render(camera, o.width, o.height, o.supersample);
+    renderer.setAmbient(o.ambient);
+    const Image shown = o.ambient ? renderer.render(camera, o.width, o.height, o.supersample) : plain;
+    const Image reference = converged.render(camera, o.width, o.height, o.supersample);
+    r.solveMs = solveMs;
+    r.shots = status.shots;
+    r.importanceShots = solver.importanceShots();
+    r.deliveryShots = solver.deliveryShots();
+    r.convergence = status.convergence;
+    const double seen = meanLuminance(reference);
+    r.visibleConvergence = seen > 0 ? meanLuminance(plain) / seen : 1.0;
+    r.imageError = imageError(plain, reference);
+    r.shownError = imageError(shown, reference);
+    if (!o.framesDir.empty()) {
+      if (f == 0) scale = exposureScale(reference, o.exposure);  // one exposure: frames compare
+      writePng(fmt::format("{}/frame_{:04d}.png", o.framesDir, f), shown, scale);
+    }
+    records.push_back(r);
+  }
+  return records;
+}
+
+void writeFramesCsv(const std::string& path, const std::vector<FrameRecord>& frames) {
+  std::string out = "frame,time_s,solve_ms,shots,importance_shots,delivery_shots,convergence,visible_convergence,image_error,shown_error\n";
+  for (const FrameRecord& r : frames)
+    out += fmt::format("{},{:.4f},{:.2f},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f}\n", r.frame, r.time, r.solveMs, r.shots,
+                       r.importanceShots, r.deliveryShots, r.convergence, r.visibleConvergence, r.imageError,
+                       r.shownError);
+  writeTextFile(path, out);
+}
+
+}  // namespace hemirad
