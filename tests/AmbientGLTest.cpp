@@ -4,16 +4,12 @@
 #include <cstring>
 
 #include "src/output/Renderer.h"
-#include "tests/Support.h"
+#include "tests/support/Files.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 
 namespace {
-double meanPixel(const Image& img) {
-  double sum = 0;
-  for (float v : img.rgb) sum += v;
-  return sum / double(img.rgb.size());
-}
 double rmsDifference(const Image& a, const Image& b) {
   double sum = 0;
   for (std::size_t i = 0; i < a.rgb.size(); ++i) sum += double(a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
@@ -31,10 +27,10 @@ TEST_CASE("Before the first shot the ambient term shows a furnace box at E / (1 
   Atlas atlas = buildAtlas(s, 0.1);
   SolverState state(s, atlas);
   Renderer renderer(state);
-  CHECK(meanPixel(renderer.render(kInside, 32, 32, 1)) == Approx(1.0).epsilon(1e-6));
+  CHECK(test::meanPixel(renderer.render(kInside, 32, 32, 1)) == Approx(1.0).epsilon(1e-6));
   renderer.setAmbient(true);
   CHECK(renderer.ambientTerm().x == Approx(1.0 / (1.0 - rho)).epsilon(1e-5));
-  CHECK(meanPixel(renderer.render(kInside, 32, 32, 1)) == Approx(1.0 / (1.0 - rho)).epsilon(1e-5));
+  CHECK(test::meanPixel(renderer.render(kInside, 32, 32, 1)) == Approx(1.0 / (1.0 - rho)).epsilon(1e-5));
 }
 
 TEST_CASE("The ambient term brings early images closer to the converged one, fades, and never enters B",

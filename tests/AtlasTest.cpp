@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "src/scene/Atlas.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

@@ -6,7 +6,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "tests/Support.h"
+#include "tests/support/Files.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 using Catch::Matchers::Contains;
@@ -16,8 +17,6 @@ namespace {
 // Cornell box at ~2,500 elements to 0.9: about 600 shots, a few seconds on llvmpipe.
 std::string solveArgs() { return "solve " + test::sourcePath("scenes/cornell/cornell.obj") + " --elements 2500 --quiet"; }
 
-nlohmann::json report(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
-
 // The uninterrupted solve's report, computed once.
 const nlohmann::json& uninterrupted() {
   static nlohmann::json r = [] {
@@ -25,7 +24,7 @@ const nlohmann::json& uninterrupted() {
     test::Run run = test::hemirad(solveArgs() + " --report " + path);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
-    return report(path);
+    return test::readJson(path);
   }();
   return r;
 }
@@ -36,7 +35,7 @@ nlohmann::json resume(const std::string& checkpoint) {
   test::Run run = test::hemirad(solveArgs() + " --resume " + checkpoint + " --report " + path);
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
-  return report(path);
+  return test::readJson(path);
 }
 
 }  // namespace

@@ -5,7 +5,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "tests/Support.h"
+#include "tests/support/Files.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 using Catch::Contains;
@@ -13,28 +14,14 @@ using Catch::Contains;
 namespace {
 std::string scene(const std::string& name) { return test::sourcePath("scenes/analytic/" + name); }
 
-int errorLines(const std::string& out) {
-  int n = 0;
-  for (size_t p = 0; (p = out.find("hemirad: error:", p)) != std::string::npos; ++p) ++n;
-  return n;
-}
-
 // Expects exit code 2, exactly one error line containing `message`, and no file at `output`.
 void expectInputError(const std::string& args, const std::string& message, const std::string& output = "") {
   test::Run run = test::hemirad(args);
   INFO("hemirad " << args << "\n" << run.output);
   CHECK(run.exitCode == 2);
-  CHECK(errorLines(run.output) == 1);
+  CHECK(test::errorLines(run.output) == 1);
   CHECK_THAT(run.output, Contains(message));
   if (!output.empty()) CHECK_FALSE(std::filesystem::exists(output));
-}
-
-std::string writeObj(const std::string& name, const std::string& obj, const std::string& mtl) {
-  std::string dir = test::tempPath(name);
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir + "/m.mtl") << mtl;
-  std::ofstream(dir + "/s.obj") << obj;
-  return dir + "/s.obj";
 }
 }  // namespace
 
@@ -54,22 +41,22 @@ TEST_CASE("Bad flags and bad scenes exit with code 2 and one error line, writing
 
   const std::string mtl = "newmtl lamp\nKe 1 1 1\nnewmtl grey\nKd 0.5 0.5 0.5\n";
   const std::string quad = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
-  expectInputError("solve " + writeObj("nomtl", "mtllib x.mtl\n" + quad.substr(13) + "f 1 2 3\n", mtl) + " --out " + out,
+  expectInputError("solve " + test::writeScene("nomtl", "mtllib x.mtl\n" + quad.substr(13) + "f 1 2 3\n", mtl) + " --out " + out,
                    "material library 'x.mtl' not found", out);
-  expectInputError("solve " + writeObj("unknown", quad + "usemtl neon\nf 1 2 3\n", mtl) + " --out " + out,
+  expectInputError("solve " + test::writeScene("unknown", quad + "usemtl neon\nf 1 2 3\n", mtl) + " --out " + out,
                    ":6: unknown material 'neon'", out);
-  expectInputError("solve " + writeObj("nan", quad + "v nan 0 0\nusemtl lamp\nf 1 2 5\n", mtl) + " --out " + out,
+  expectInputError("solve " + test::writeScene("nan", quad + "v nan 0 0\nusemtl lamp\nf 1 2 5\n", mtl) + " --out " + out,
                    ":6: vertex coordinate is not a finite number", out);
-  expectInputError("solve " + writeObj("dark", quad + "usemtl grey\nf 1 2 3 4\n", mtl) + " --out " + out,
+  expectInputError("solve " + test::writeScene("dark", quad + "usemtl grey\nf 1 2 3 4\n", mtl) + " --out " + out,
                    "no emitter", out);
-  expectInputError("solve " + writeObj("bright", quad + "usemtl grey\nf 1 2 3 4\n", "newmtl grey\nKd 1.2 0 0\nKe 1 1 1\n") +
+  expectInputError("solve " + test::writeScene("bright", quad + "usemtl grey\nf 1 2 3 4\n", "newmtl grey\nKd 1.2 0 0\nKe 1 1 1\n") +
                        " --out " + out,
                    "reflectance Kd 1.2 is >= 1", out);
-  expectInputError("solve " + writeObj("empty", "", mtl) + " --out " + out, "no faces", out);
+  expectInputError("solve " + test::writeScene("empty", "", mtl) + " --out " + out, "no faces", out);
 }
 
 TEST_CASE("Degenerate faces are skipped with a warning and the solve goes on", "[cli]") {
-  std::string obj = writeObj("degenerate",
+  std::string obj = test::writeScene("degenerate",
                              "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nusemtl lamp\nf 1 2 3 4\nf 1 2 5\n",
                              "newmtl lamp\nKe 1 1 1\n");
   test::Run run = test::hemirad("solve " + obj + " --shots 3 --quiet");
@@ -96,7 +83,7 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
                                   env);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
-    return nlohmann::json::parse(std::ifstream(report))["radiosity_hash"].get<std::string>();
+    return test::readJson(report)["radiosity_hash"].get<std::string>();
   };
   std::string a = hashOf("", ""), b = hashOf("", ""), one = hashOf("", "LP_NUM_THREADS=1"),
               three = hashOf("", "LP_NUM_THREADS=3");
@@ -118,7 +105,7 @@ TEST_CASE("OSMesa and EGL on llvmpipe give bitwise-identical radiosity", "[cli]"
                                 " --elements 3000 --shots 100 --quiet --backend " + backend + " --report " + report);
     INFO(r.output);
     REQUIRE(r.exitCode == 0);
-    return nlohmann::json::parse(std::ifstream(report));
+    return test::readJson(report);
   };
   nlohmann::json osmesa = run("osmesa"), egl = run("egl");
   CHECK(osmesa["backend"] == "osmesa");

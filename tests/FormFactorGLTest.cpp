@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "cpu/Analytic.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 #include "tests/fuzz/FuzzInput.h"
 
 using namespace hemirad;

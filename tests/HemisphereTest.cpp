@@ -6,7 +6,7 @@
 
 #include "cpu/Hemisphere.h"
 #include "gl/Shader.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

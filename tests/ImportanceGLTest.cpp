@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "src/scene/SceneLoader.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

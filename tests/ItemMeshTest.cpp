@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "src/scene/ItemMesh.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

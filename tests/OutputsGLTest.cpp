@@ -6,7 +6,8 @@
 #include <sstream>
 
 #include "src/output/ImageFile.h"
-#include "tests/Support.h"
+#include "tests/support/Files.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 using Catch::Contains;
@@ -20,7 +21,7 @@ TEST_CASE("solve writes the EXR, PNG, atlas, PLY and report it is asked for", "[
                                 dir + "/m.ply --report " + dir + "/r.json");
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
-  nlohmann::json r = nlohmann::json::parse(std::ifstream(dir + "/r.json"));
+  nlohmann::json r = test::readJson(dir + "/r.json");
   for (const char* key : {"backend", "renderer", "algorithm", "elements", "shots", "convergence", "item_subdivision",
                           "timings_ms", "objects"})
     CHECK(r.contains(key));
@@ -82,7 +83,7 @@ TEST_CASE("validate writes its report and figures, and bench its table and JSON"
                               " --report " + dir + ".json --figures " + dir);
   INFO(v.output);
   REQUIRE(v.exitCode == 0);
-  nlohmann::json r = nlohmann::json::parse(std::ifstream(dir + ".json"));
+  nlohmann::json r = test::readJson(dir + ".json");
   REQUIRE(r["levels"].size() == 4);  // two projections x two levels
   for (const char* key : {"item_subdivision", "texel_pairs", "visibility_agreement", "false_visible", "false_hidden",
                           "ff_rel_error_median", "ff_rel_error_p95", "ff_rel_error_max", "item_triangles", "gpu_ms"})
@@ -103,7 +104,7 @@ TEST_CASE("validate writes its report and figures, and bench its table and JSON"
   INFO(b.output);
   REQUIRE(b.exitCode == 0);
   CHECK_THAT(b.output, Contains("| time to 90% (ms) |"));
-  nlohmann::json bj = nlohmann::json::parse(std::ifstream(json));
+  nlohmann::json bj = test::readJson(json);
   REQUIRE(bj["rows"].size() == 1);
   CHECK(bj["rows"][0]["convergence"].get<double>() >= 0.9);
   CHECK(bj["rows"][0]["shots"].get<int>() > 0);

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "cpu/Hemisphere.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

@@ -3,7 +3,7 @@
 
 #include "cpu/Hemisphere.h"
 #include "src/scene/SceneLoader.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

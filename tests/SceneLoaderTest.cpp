@@ -4,7 +4,8 @@
 
 #include "src/base/Error.h"
 #include "src/scene/SceneLoader.h"
-#include "tests/Support.h"
+#include "tests/support/Files.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 using Catch::Contains;
@@ -15,11 +16,7 @@ const char* kMtl =
 
 // Writes NAME.obj (+ scene.mtl) in a fresh folder and returns the OBJ's path.
 std::string writeScene(const std::string& name, const std::string& obj, const std::string& mtl = kMtl) {
-  std::string dir = test::tempPath(name);
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir + "/scene.mtl") << mtl;
-  std::ofstream(dir + "/" + name + ".obj") << obj;
-  return dir + "/" + name + ".obj";
+  return test::writeScene(name, obj, mtl, name + ".obj", "scene.mtl");
 }
 
 const std::string kQuads =

@@ -6,7 +6,7 @@
 #include "src/validate/ExactReference.h"
 #include "src/scene/SceneLoader.h"
 #include "src/validate/Validate.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

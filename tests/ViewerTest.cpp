@@ -9,7 +9,8 @@
 #include <regex>
 
 #include "src/output/ImageFile.h"
-#include "tests/Support.h"
+#include "tests/support/Files.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 using Catch::Contains;
@@ -22,18 +23,6 @@ const std::string kScene = test::sourcePath("scenes/cornell/cornell.obj");
 test::Run viewUnderXvfb(const std::string& args) {
   return test::shell("command -v xvfb-run >/dev/null || { echo 'xvfb-run not found: install xvfb and xauth'; exit 97; }\n"
                      "xvfb-run -a -s '-screen 0 1024x768x24' \"$HEMIRAD\" view " + args);
-}
-
-int errorLines(const std::string& out) {
-  int n = 0;
-  for (size_t p = 0; (p = out.find("hemirad: error:", p)) != std::string::npos; ++p) ++n;
-  return n;
-}
-
-double mean(const Image& image) {
-  double sum = 0;
-  for (float v : image.rgb) sum += v;
-  return sum / double(image.rgb.size());
 }
 
 }  // namespace
@@ -55,7 +44,7 @@ TEST_CASE("The viewer under Xvfb shows the same picture as solve after the same 
   REQUIRE(b.width == a.width);
   REQUIRE(b.height == a.height);
   // Exposure maps the 95th-percentile lit luminance to 1: a lit box averages far above black.
-  CHECK(mean(a) > 0.2);
+  CHECK(test::meanPixel(a) > 0.2);
   float maxDiff = 0;
   for (size_t i = 0; i < a.rgb.size(); ++i) maxDiff = std::max(maxDiff, std::abs(a.rgb[i] - b.rgb[i]));
   // The same passes, renderer and tone map; glDrawPixels then glReadPixels of 8-bit values on an
@@ -76,7 +65,7 @@ TEST_CASE("Each algorithm runs in the viewer for exactly shots-per-frame x frame
     CHECK(m[2] == "48");
     CHECK(std::stod(m[3]) > 0);
     CHECK(m[4] == "3");
-    CHECK(mean(readImage(shot)) > 0.2);
+    CHECK(test::meanPixel(readImage(shot)) > 0.2);
   }
 }
 
@@ -86,21 +75,19 @@ TEST_CASE("Without a display the viewer fails with one error line", "[viewer]") 
                               " --elements 600 --frames 1 --screenshot " + shot);
   INFO(run.output);
   CHECK(run.exitCode == 1);
-  CHECK(errorLines(run.output) == 1);
+  CHECK(test::errorLines(run.output) == 1);
   CHECK_THAT(run.output, Contains("hemirad: error: hemirad view: cannot open a window"));
   CHECK_THAT(run.output, Contains("xvfb-run"));
   CHECK_FALSE(std::filesystem::exists(shot));
 
   // Bad input is found before any window is opened: exit 2, as for solve.
-  const std::string dark = test::tempPath("dark");
-  std::filesystem::create_directories(dark);
-  std::ofstream(dark + "/m.mtl") << "newmtl grey\nKd 0.5 0.5 0.5\n";
-  std::ofstream(dark + "/s.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl grey\nf 1 2 3\n";
-  for (auto [scene, message] : {std::pair{std::string("/no/such.obj"), "such.obj"}, {dark + "/s.obj", "no emitter"}}) {
+  const std::string dark = test::writeScene("dark", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl grey\nf 1 2 3\n",
+                                            "newmtl grey\nKd 0.5 0.5 0.5\n");
+  for (auto [scene, message] : {std::pair{std::string("/no/such.obj"), "such.obj"}, {dark, "no emitter"}}) {
     test::Run bad = test::shell("env -u DISPLAY \"$HEMIRAD\" view " + scene + " --screenshot " + shot);
     INFO(bad.output);
     CHECK(bad.exitCode == 2);
-    CHECK(errorLines(bad.output) == 1);
+    CHECK(test::errorLines(bad.output) == 1);
     CHECK_THAT(bad.output, Contains(message));
     CHECK_FALSE(std::filesystem::exists(shot));
   }

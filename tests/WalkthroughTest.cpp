@@ -7,17 +7,12 @@
 
 #include "src/walk/CameraPath.h"
 #include "src/base/Error.h"
-#include "tests/Support.h"
+#include "tests/support/Files.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 
 namespace {
-std::string writePath(const std::string& name, const std::string& text) {
-  std::string path = test::tempPath(name);
-  std::ofstream(path) << text;
-  return path;
-}
-
 std::vector<std::vector<std::string>> readCsv(const std::string& path) {
   std::vector<std::vector<std::string>> rows;
   std::ifstream in(path);
@@ -34,7 +29,7 @@ TEST_CASE("Camera path keyframes inherit the keys they leave out and blend linea
   Camera base;
   base.up = {1, 0, 0};
   const CameraPath path = readCameraPath(
-      writePath("blend.path", "# a comment\n0 eye=0,0,10 target=0,0,0 fov=40\n\n2 eye=4,0,10  # moves\n4 fov=20\n"), base);
+      test::writeTempFile("blend.path", "# a comment\n0 eye=0,0,10 target=0,0,0 fov=40\n\n2 eye=4,0,10  # moves\n4 fov=20\n"), base);
   REQUIRE(path.keys.size() == 3);
   CHECK(path.duration() == 4.0);
   CHECK(path.keys[1].camera.target == glm::dvec3(0.0));  // inherited
@@ -51,7 +46,7 @@ TEST_CASE("Camera path keyframes inherit the keys they leave out and blend linea
 TEST_CASE("Malformed camera paths name the file, the line and the problem", "[cpu]") {
   Camera base;
   auto fails = [&](const std::string& name, const std::string& text, const std::string& message) {
-    const std::string path = writePath(name, text);
+    const std::string path = test::writeTempFile(name, text);
     CHECK_THROWS_WITH(readCameraPath(path, base), Catch::Contains(message));
   };
   fails("order.path", "0 eye=0,0,1\n2 eye=0,0,2\n1 eye=0,0,3\n", "order.path:3: keyframe times must increase");
@@ -64,7 +59,7 @@ TEST_CASE("Malformed camera paths name the file, the line and the problem", "[cp
 TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly with shots per frame",
           "[cli][walkthrough]") {
   const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
-  const std::string path = writePath("turn.path", "0 eye=278,273,-800 target=278,273,0 fov=39.3\n0.5 fov=39.3\n1 target=556,0,559.2 fov=20\n");
+  const std::string path = test::writeTempFile("turn.path", "0 eye=278,273,-800 target=278,273,0 fov=39.3\n0.5 fov=39.3\n1 target=556,0,559.2 fov=20\n");
   for (const std::string algorithm : {"progressive", "importance", "perspective"}) {
     INFO(algorithm);
     // Reproducibility is checked on the perspective-driven run, the one with the most state.
@@ -98,7 +93,7 @@ TEST_CASE("Walkthrough flags come together: a path needs a frames folder and a b
   const std::string path = test::sourcePath("scenes/cornell/cornell.path");
   for (const std::string& args : std::vector<std::string>{"--camera-path " + path, "--frames /tmp/x",
                                   "--camera-path " + path + " --frames /tmp/x --frame-ms 10 --frame-shots 4",
-                                  "--camera-path " + writePath("bad.path", "0 eye=1\n") + " --frames /tmp/x"}) {
+                                  "--camera-path " + test::writeTempFile("bad.path", "0 eye=1\n") + " --frames /tmp/x"}) {
     test::Run run = test::hemirad("solve " + scene + " " + args);
     INFO(args << "\n" << run.output);
     CHECK(run.exitCode == 2);

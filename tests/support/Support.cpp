@@ -1,4 +1,4 @@
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 #include "cpu/Hemisphere.h"
 #include "src/output/Renderer.h"

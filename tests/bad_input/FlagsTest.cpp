@@ -1,0 +1,36 @@
+// Bad flags (docs/errors.md): flags that exclude each other, values out of range or not
+// numbers, unknown flags: one error line naming the flag, exit code 2, no output.
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "tests/bad_input/BadInput.h"
+
+using namespace hemirad;
+using namespace hemirad::test::bad_input;
+using Catch::Contains;
+
+// ---- flags
+
+TEST_CASE("Bad input: --texel-size with --elements is one error naming both flags", "[cli][bad-input]") {
+  std::string obj = writeScene("both", kQuad + "f 1 2 3 4\n");
+  expectRefused("both", solve(obj) + " --texel-size 0.1 --elements 100", {"--texel-size", "--elements", "excludes"});
+}
+
+TEST_CASE("Bad input: --converge outside (0, 1) is one error naming the flag", "[cli][bad-input]") {
+  std::string obj = writeScene("converge", kQuad + "f 1 2 3 4\n");
+  for (std::string c : {"0", "1", "1.5", "-0.1", "nan"})
+    expectRefused("converge" + c, "solve " + obj + " --converge " + c, {"--converge"});
+}
+
+TEST_CASE("Bad input: an unknown flag is one error naming it", "[cli][bad-input]") {
+  std::string obj = writeScene("unknown-flag", kQuad + "f 1 2 3 4\n");
+  expectRefused("unknown-flag", solve(obj) + " --frobnicate 3", {"--frobnicate"});
+}
+
+TEST_CASE("Bad input: a non-numeric or out-of-range flag value is one error naming the flag", "[cli][bad-input]") {
+  std::string obj = writeScene("values", kQuad + "f 1 2 3 4\n");
+  for (std::string flag : {"--shots many", "--texel-size big", "--texel-size inf", "--texel-size -1", "--elements lots",
+                           "--elements 0", "--width abc", "--exposure x", "--item-res 8", "--shooters-per-pass 65",
+                           "--gpu -1"})
+    expectRefused("values", solve(obj) + " " + flag, {flag.substr(0, flag.find(' '))});
+}

@@ -1,0 +1,159 @@
+// Bad scene files (docs/errors.md): missing or unreadable OBJ and MTL files, broken face
+// indices, non-finite coordinates, materials defined twice or unknown, no emitter, reflectance
+// out of range: one error line naming the file and line, exit code 2, no output. Repairs
+// (zero-area, non-planar faces) warn with the line and go on.
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "src/scene/SceneLoader.h"
+#include "tests/bad_input/BadInput.h"
+#include "tests/support/Files.h"
+#include "tests/support/Support.h"
+
+using namespace hemirad;
+using namespace hemirad::test::bad_input;
+using Catch::Contains;
+using hemirad::test::count;
+namespace fs = std::filesystem;
+
+// ---- files
+
+TEST_CASE("Bad input: a missing OBJ file is one error naming the file", "[cli][bad-input]") {
+  std::string missing = test::tempPath("no-such-scene.obj");
+  expectRefused("missing-obj", solve(missing), {missing, "does not exist"});
+}
+
+TEST_CASE("Bad input: a folder given as the OBJ file is one error naming it", "[cli][bad-input]") {
+  std::string dir = test::tempPath("folder.obj");
+  fs::create_directories(dir);
+  expectRefused("folder-obj", solve(dir), {dir, "directory"});
+  CHECK_THROWS_WITH(loadScene(dir), Contains(dir + ": is not a readable file"));
+}
+
+TEST_CASE("Bad input: a folder given as the MTL file is one error naming the mtllib line", "[cli][bad-input]") {
+  std::string obj = writeScene("folder-mtl", kQuad + "f 1 2 3 4\n");
+  fs::remove(fs::path(obj).parent_path() / "m.mtl");
+  fs::create_directories(fs::path(obj).parent_path() / "m.mtl");
+  expectRefused("folder-mtl", solve(obj), {"s.obj:1: material library 'm.mtl' is not a readable file"});
+}
+
+TEST_CASE("Bad input: a missing MTL file is one error naming the mtllib line", "[cli][bad-input]") {
+  std::string obj = writeScene("missing-mtl", "mtllib x.mtl\n" + kQuad.substr(13) + "f 1 2 3 4\n");
+  expectRefused("missing-mtl", solve(obj), {"s.obj:1: material library 'x.mtl' not found"});
+}
+
+TEST_CASE("Bad input: an empty OBJ file is one error saying it has no faces", "[cli][bad-input]") {
+  expectRefused("empty-obj", solve(writeScene("empty", "")), {"s.obj: the scene has no faces with area"});
+  expectRefused("no-faces", solve(writeScene("no-faces", kQuad)), {"s.obj: the scene has no faces with area"});
+  test::Run info = test::hemirad("info " + writeScene("empty-info", ""));
+  INFO(info.output);
+  CHECK(info.exitCode == 2);
+  CHECK_THAT(info.output, Contains("s.obj: the scene has no faces with area"));
+}
+
+// ---- face indices
+
+TEST_CASE("Bad input: a face indexing a vertex past the last one is one error naming its line", "[cli][bad-input]") {
+  expectRefused("index-past-end", solve(writeScene("past-end", kQuad + "f 1 2 9\n")),
+                {"s.obj:7: face refers to vertex 9 but the file has 4 vertices"});
+}
+
+TEST_CASE("Bad input: a negative face index reaching before the first vertex is one error naming its line",
+          "[cli][bad-input]") {
+  expectRefused("index-negative", solve(writeScene("negative", kQuad + "f -1 -2 -9\n")),
+                {"s.obj:7: relative vertex index -9 reaches before the first vertex (4 so far)"});
+}
+
+TEST_CASE("Bad input: a zero face index is one error naming its line", "[cli][bad-input]") {
+  expectRefused("index-zero", solve(writeScene("zero", kQuad + "f 0 1 2\n")),
+                {"s.obj:7: face index 0 (OBJ indices start at 1)"});
+}
+
+TEST_CASE("Bad input: a face index beyond the int range is one error naming its line, never wrapped round",
+          "[cli][bad-input]") {
+  // 2^32 + 3 would wrap to 3 in tinyobjloader's atoi and load as a valid face.
+  expectRefused("index-huge", solve(writeScene("huge", kQuad + "f 1 2 4294967299\n")),
+                {"s.obj:7: face index 4294967299 is out of range"});
+  expectRefused("index-int-min", solve(writeScene("int-min", kQuad + "f 1 2 -2147483648\n")),
+                {"s.obj:7: relative vertex index -2147483648 reaches before the first vertex"});
+}
+
+TEST_CASE("Bad input: a face index that is not a number is one error naming its line", "[cli][bad-input]") {
+  expectRefused("index-word", solve(writeScene("word", kQuad + "f 1 2 x\n")),
+                {"s.obj:7: face index 'x' is not a number"});
+}
+
+// ---- coordinates and faces
+
+TEST_CASE("Bad input: NaN and infinite vertex coordinates are one error naming their line", "[cli][bad-input]") {
+  for (std::string bad : {"nan", "inf", "-inf", "1e999"}) {
+    std::string obj = kQuad;
+    obj.replace(obj.find("v 1 1 0"), 7, "v 1 " + bad + " 0");
+    expectRefused("coordinate-" + bad, solve(writeScene("coordinate-" + bad, obj + "f 1 2 3 4\n")),
+                  {"s.obj:4: vertex coordinate is not a finite number"});
+  }
+}
+
+TEST_CASE("Bad input: zero-area faces are skipped with a warning naming their line and the solve goes on",
+          "[cli][bad-input]") {
+  std::string obj = writeScene("zero-area", kQuad + "v 2 0 0\nf 1 2 3 4\nf 1 2 5\nf 1 1 2\n");
+  Outputs out("zero-area");
+  test::Run run = test::hemirad(solve(obj) + " --report " + out.dir + "/r.json");
+  INFO(run.output);
+  CHECK(run.exitCode == 0);
+  CHECK_THAT(run.output, Contains("hemirad: warning: " + obj + ":9: degenerate face with zero area skipped"));
+  CHECK_THAT(run.output, Contains("hemirad: warning: " + obj + ":10: degenerate face with zero area skipped"));
+  CHECK(count(run.output, "hemirad: error:") == 0);
+  CHECK(fs::exists(out.dir + "/r.json"));
+}
+
+TEST_CASE("Bad input: a scene of zero-area faces only warns for each and is one error saying it has no faces",
+          "[cli][bad-input]") {
+  std::string obj = writeScene("all-zero-area", kQuad + "v 2 0 0\nf 1 2 5\nf 3 3 3\n");
+  Outputs out("all-zero-area");
+  test::Run run = test::hemirad(solve(obj) + out.flags);
+  INFO(run.output);
+  CHECK(run.exitCode == 2);
+  CHECK(count(run.output, "hemirad: warning:") == 2);
+  CHECK(count(run.output, "hemirad: error:") == 1);
+  CHECK_THAT(run.output, Contains("s.obj: the scene has no faces with area"));
+  CHECK(out.empty());
+}
+
+TEST_CASE("Bad input: a non-planar polygon is split into triangles with a warning naming its line and the solve goes on",
+          "[cli][bad-input]") {
+  std::string obj = kQuad;
+  obj.replace(obj.find("v 1 1 0"), 7, "v 1 1 0.5");
+  obj = writeScene("non-planar", obj + "f 1 2 3 4\n");
+  Outputs out("non-planar");
+  test::Run run = test::hemirad(solve(obj) + " --report " + out.dir + "/r.json");
+  INFO(run.output);
+  CHECK(run.exitCode == 0);
+  CHECK_THAT(run.output, Contains("hemirad: warning: " + obj + ":7: non-planar polygon split into triangles"));
+  CHECK(fs::exists(out.dir + "/r.json"));
+}
+
+// ---- materials
+
+TEST_CASE("Bad input: a material defined twice is one error naming the MTL file and line", "[cli][bad-input]") {
+  std::string obj = writeScene("duplicate", kQuad + "f 1 2 3 4\n", kMtl + "newmtl lamp\nKe 2 2 2\n");
+  expectRefused("duplicate", solve(obj), {"m.mtl:6: material 'lamp' is defined twice"});
+}
+
+TEST_CASE("Bad input: an unknown material is one error naming the usemtl line", "[cli][bad-input]") {
+  std::string obj = writeScene("unknown", kQuad + "usemtl neon\nf 1 2 3 4\n");
+  expectRefused("unknown", solve(obj), {"s.obj:7: unknown material 'neon' (not in the MTL file)"});
+}
+
+TEST_CASE("Bad input: a scene without emitters is one error saying so", "[cli][bad-input]") {
+  std::string obj = writeScene("dark", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nusemtl grey\nf 1 2 3\n");
+  expectRefused("dark", solve(obj), {"s.obj: no emitter"});
+}
+
+TEST_CASE("Bad input: reflectance of 1 or more or below 0 is one error naming the MTL file and line",
+          "[cli][bad-input]") {
+  std::string high = writeScene("rho-high", kQuad + "f 1 2 3 4\n", "newmtl lamp\nKe 1 1 1\nKd 0.5 1 0.5\n");
+  expectRefused("rho-high", solve(high), {"m.mtl:3: material 'lamp': reflectance Kd 1 is >= 1"});
+  std::string low = writeScene("rho-low", kQuad + "f 1 2 3 4\n", "newmtl lamp\nKe 1 1 1\nKd 0.5 -0.1 0.5\n");
+  expectRefused("rho-low", solve(low), {"m.mtl:3: material 'lamp': reflectance Kd -0.1 is negative"});
+}
