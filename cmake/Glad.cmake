@@ -1,5 +1,5 @@
 # glad2 (Debian python3-glad) generates a GL 4.5 core loader that takes a custom resolver,
-# so each backend fills it from OSMesaGetProcAddress or eglGetProcAddress (see DESIGN.md:
+# so each backend fills it from OSMesaGetProcAddress or eglGetProcAddress (docs/design.md#gl-loading:
 # epoxy and GLEW fail under OSMesa).
 find_program(SYSTEM_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
 set(GLAD_OUT ${CMAKE_BINARY_DIR}/glad)

@@ -27,7 +27,7 @@ inline glm::dvec2 hemiProject(const glm::dvec3& local) {
   return len > 0 ? glm::dvec2(local) / len : glm::dvec2(0.0);
 }
 
-// DESIGN.md's disc form factor.
+// The disc form factor (docs/design.md#form-factor).
 inline double discFormFactor(double cosS, double cosR, double r2, double shooterArea) {
   return glm::max(cosS, 0.0) * glm::max(cosR, 0.0) * shooterArea / (3.14159265358979323846 * r2 + shooterArea);
 }

@@ -28,7 +28,7 @@ bool inShooterBlock(uint s, ivec2 t, uint polygon) {
 }
 
 // Form factor from receiver element t (of `polygon`) to shooter s of the pass, visibility
-// included: DESIGN.md's V max(cos_s,0) max(cos_r,0) A_s / (pi r^2 + A_s). `facing` is false
+// included: docs/design.md#form-factor's V max(cos_s,0) max(cos_r,0) A_s / (pi r^2 + A_s). `facing` is false
 // when the pair cannot exchange light (behind either surface); then the visibility is not
 // looked up and `visible` is 0.
 float shooterFormFactor(uint s, ivec2 t, uint polygon, out bool facing, out float visible) {

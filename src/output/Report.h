@@ -1,4 +1,4 @@
-// DESIGN.md's report JSON, plus what a reader needs to reproduce the run.
+// The report JSON (docs/design.md#report), plus what a reader needs to reproduce the run.
 #pragma once
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -28,7 +28,7 @@ struct RunInfo {
 };
 
 nlohmann::json reportJson(const RunInfo& run);
-// [{name, area, mean_radiosity: [r, g, b]}], DESIGN.md's report `objects`.
+// [{name, area, mean_radiosity: [r, g, b]}], the report's `objects` (docs/design.md#report).
 nlohmann::json objectsJson(const std::vector<ObjectRadiosity>& objects);
 void writeReport(const std::string& path, const RunInfo& run);
 

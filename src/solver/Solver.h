@@ -20,7 +20,7 @@ inline const std::vector<std::string>& algorithmNames() {
 
 struct SolveStatus {
   unsigned shots = 0;
-  double convergence = 0;  // DESIGN.md: 1 - sum |dB| A / sum E A (luminance)
+  double convergence = 0;  // docs/design.md#convergence: 1 - sum |dB| A / sum E A (luminance)
   bool done = false;       // the stop rule fired
 };
 

@@ -36,7 +36,7 @@ class SolverState {
   void restore(const std::vector<glm::vec4>& B, const std::vector<glm::vec4>& dB);
 };
 
-// Area-weighted mean B per object (DESIGN.md's report `mean_radiosity`), from a B readback.
+// Area-weighted mean B per object (the report's `mean_radiosity`, docs/design.md#report), from a B readback.
 struct ObjectRadiosity {
   std::string name;
   double area = 0;

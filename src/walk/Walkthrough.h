@@ -28,7 +28,7 @@ struct FrameRecord {
   double time = 0;             // path seconds
   double solveMs = 0;          // solver wall time so far (look() included)
   unsigned shots = 0, importanceShots = 0, deliveryShots = 0;
-  double convergence = 0;      // of the whole scene (DESIGN.md)
+  double convergence = 0;      // of the whole scene (docs/design.md#convergence)
   // Of the visible part: the light in the frame (without the ambient term) over the light in
   // the converged frame, i.e. how much of what the camera will see has arrived.
   double visibleConvergence = 0;

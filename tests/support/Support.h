@@ -38,7 +38,7 @@ Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& se
              const Camera* camera = nullptr);
 const ObjectRadiosity& object(const Solved& s, const std::string& name);
 
-// What the disc form factor of DESIGN.md hands on from element `s` in a convex scene (no
+// What the disc form factor (docs/design.md#form-factor) hands on from element `s` in a convex scene (no
 // occlusion): sum over receivers j of F_js A_j / A_s. Exact form factors give 1 in a closed box;
 // the disc approximation gives a little less near edges.
 double discRowSum(const Scene& scene, const Atlas& atlas, std::size_t s);
