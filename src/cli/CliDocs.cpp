@@ -35,18 +35,19 @@ std::string command(const CLI::App& app, const CLI::App& cmd) {
     if (name == "--help") continue;
     auto [value, check] = valueAndCheck(*o);
     std::string relations;  // sorted: the sets are of pointers
-    for (auto [word, set] : {std::pair{"Needs", o->get_needs()}, {"Excludes", o->get_excludes()}}) {
+    for (auto [word, set] : {std::pair{"needs", o->get_needs()}, {"excludes", o->get_excludes()}}) {
       std::vector<std::string> names;
       for (const CLI::Option* other : set) names.push_back(other->get_name());
       std::sort(names.begin(), names.end());
-      if (!names.empty()) relations += fmt::format(" {} {}.", word, fmt::join(names, ", "));
+      if (!names.empty()) relations += fmt::format("{}{} {}", relations.empty() ? "" : "; ", word, fmt::join(names, ", "));
     }
     rows += fmt::format("| `{}` | {} | {} | {} | {}{} |\n", name, cell(value), cell(check),
                         o->get_default_str().empty() ? "" : "`" + cell(o->get_default_str()) + "`",
-                        cell(o->get_description()), relations);
+                        cell(o->get_description()), relations.empty() ? "" : " (" + relations + ")");
   }
   std::string md = fmt::format("## {}\n\n{}\n\n    {} [flags]\n\n", cmd.get_name(), cmd.get_description(), usage);
-  if (!cmd.get_footer().empty()) md += "```\n" + cmd.get_footer() + "\n```\n\n";
+  if (std::string footer = cmd.get_footer(); !footer.empty())
+    md += "```\n" + footer.substr(0, footer.find_last_not_of('\n') + 1) + "\n```\n\n";
   return md + "| flag | value | accepts | default | meaning |\n|---|---|---|---|---|\n" + rows + "\n";
 }
 

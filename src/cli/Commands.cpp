@@ -20,7 +20,7 @@ void addScene(CLI::App* cmd, std::string& scene, LoadOptions& load, Discretisati
       ->check(CLI::ExistingFile);
   add(cmd, "--emission", load.emission);
   CLI::Option* texelSize = add(cmd, "--texel-size", d.texelSize, "from --elements");
-  add(cmd, "--elements", d.elements)->excludes(texelSize);
+  add(cmd, "--elements", d.elements, std::to_string(Discretisation::kDefaultElements))->excludes(texelSize);
 }
 
 }  // namespace
@@ -50,7 +50,7 @@ void Commands::addSolve() {
   ProgressiveSettings& p = solve.progressive;
   add(s, "--method", solve.method);
   converge = add(s, "--converge", p.stop.targetConvergence, "0.9; 0.9999 with --camera-path");
-  shots = add(s, "--shots", p.stop.maxShots, "no limit");
+  shots = add(s, "--shots", p.stop.maxShots);
   add(s, "--item-subdiv", p.itemSubdivision);
   add(s, "--item-res", p.itemResolution);
   add(s, "--hemisphere", solveProjection);
@@ -130,7 +130,7 @@ void Commands::addView() {
   add(w, "--shoot-level", p.shootLevel);
   add(w, "--shooters-per-pass", p.shootersPerPass);
   add(w, "--converge", p.stop.targetConvergence);
-  add(w, "--shots", p.stop.maxShots, "no limit");
+  add(w, "--shots", p.stop.maxShots);
 }
 
 void Commands::addExperiment() {
