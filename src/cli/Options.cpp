@@ -53,11 +53,12 @@ const CLI::Validator kCount = CLI::Range(1u, 1u << 30);
 const CLI::Validator kLevel = CLI::Range(0, 8);
 const CLI::Validator kPixels = CLI::Range(1, 16384);
 
-std::vector<Flag> makeTable() {
+const CLI::Validator kNone;  // any value the field parses
+
+std::vector<Flag> sceneAndSolverFlags() {
   const auto positive = number([](double x) { return x > 0; }, "> 0", "must be a positive number");
   const auto unit = number([](double x) { return x > 0 && x < 1; }, "in (0, 1)", "must be in (0, 1)");
-  const auto any = number([](double) { return true; }, "", "must be a number");
-  const CLI::Validator none;
+  const CLI::Validator none = kNone;
   return {
       // The scene and its elements.
       {"--emission", "KEY", "MTL key that gives emission: ke or ka (the thesis)",
@@ -91,6 +92,13 @@ std::vector<Flag> makeTable() {
        kCount, "a quarter of the shooter blocks"},
       {"--sync-timings", "", "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)",
        none},
+  };
+}
+
+std::vector<Flag> deviceAndOutputFlags() {
+  const auto any = number([](double) { return true; }, "", "must be a number");
+  const CLI::Validator none = kNone;
+  return {
       // The GL backend.
       {"--backend", "NAME", "GL backend: osmesa, egl or auto", names({"osmesa", "egl", "auto"})},
       {"--gpu", "INDEX", "EGL device index", CLI::Range(0, 1023), "the first hardware device"},
@@ -121,6 +129,12 @@ std::vector<Flag> makeTable() {
        none},
       {"--checkpoint-every", "N", "Also checkpoint every N shots", kCount},
       {"--resume", "FILE", "Continue from a checkpoint of the same scene and parameters", CLI::ExistingFile},
+  };
+}
+
+std::vector<Flag> frameAndCommandFlags() {
+  const CLI::Validator none = kNone;
+  return {
       // Walkthroughs, experiments and the viewer: frames along a camera path or in a window.
       {"--camera-path", "FILE",
        "Walkthrough: keyframes 'TIME eye=.. target=.. fov=..' per line (README: Walkthroughs); writes a frame per "
@@ -160,6 +174,12 @@ std::vector<Flag> makeTable() {
        "throughput as a fraction of them",
        none},
   };
+}
+
+std::vector<Flag> makeTable() {
+  std::vector<Flag> flags = sceneAndSolverFlags();
+  for (auto part : {deviceAndOutputFlags(), frameAndCommandFlags()}) flags.insert(flags.end(), part.begin(), part.end());
+  return flags;
 }
 
 }  // namespace
