@@ -30,7 +30,7 @@ test::Run viewUnderXvfb(const std::string& args) {
 TEST_CASE("The viewer under Xvfb shows the same picture as solve after the same shots", "[viewer]") {
   const std::string shown = test::tempPath("viewer.png"), solved = test::tempPath("solved.png");
   const std::string common = kScene + " --elements 1500 --width 160 --height 120";
-  test::Run view = viewUnderXvfb(common + " --shots-per-frame 8 --frames 5 --screenshot " + shown);
+  test::Run view = viewUnderXvfb(common + " --frame-shots 8 --frame-count 5 --screenshot " + shown);
   INFO(view.output);
   REQUIRE(view.exitCode == 0);
   CHECK_THAT(view.output, Contains("hemirad view: progressive, 40 shots"));
@@ -52,11 +52,11 @@ TEST_CASE("The viewer under Xvfb shows the same picture as solve after the same 
   CHECK(maxDiff <= 1.0f / 255 + 1e-6f);
 }
 
-TEST_CASE("Each algorithm runs in the viewer for exactly shots-per-frame x frames shots", "[viewer]") {
+TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-count shots", "[viewer]") {
   for (std::string algorithm : {"progressive", "importance", "perspective"}) {
     const std::string shot = test::tempPath("viewer-" + algorithm + ".png");
     test::Run view = viewUnderXvfb(kScene + " --elements 600 --width 64 --height 48 --algorithm " + algorithm +
-                                   " --shots-per-frame 16 --frames 3 --screenshot " + shot);
+                                   " --frame-shots 16 --frame-count 3 --screenshot " + shot);
     INFO(algorithm << "\n" << view.output);
     REQUIRE(view.exitCode == 0);
     std::smatch m;
@@ -72,7 +72,7 @@ TEST_CASE("Each algorithm runs in the viewer for exactly shots-per-frame x frame
 TEST_CASE("Without a display the viewer fails with one error line", "[viewer]") {
   const std::string shot = test::tempPath("never.png");
   test::Run run = test::shell("env -u DISPLAY -u WAYLAND_DISPLAY \"$HEMIRAD\" view " + kScene +
-                              " --elements 600 --frames 1 --screenshot " + shot);
+                              " --elements 600 --frame-count 1 --screenshot " + shot);
   INFO(run.output);
   CHECK(run.exitCode == 1);
   CHECK(test::errorLines(run.output) == 1);

@@ -10,6 +10,7 @@
 #include "src/base/AtomicFile.h"
 #include "src/scene/Camera.h"
 #include "src/bench/Ceilings.h"
+#include "src/cli/Options.h"
 #include "src/base/Error.h"
 #include "src/solver/Control.h"
 #include "src/output/Report.h"
@@ -128,34 +129,22 @@ std::string comparisonTable(const nlohmann::json& rows, const std::string& other
 }  // namespace
 
 void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
-  cmd->add_option("--scenes", o.scenes, "OBJ scenes (default scenes/cornell/cornell.obj)")->delimiter(',');
-  cmd->add_option("--elements", o.elements, "Element counts to generate each scene at (default 10000,100000)")
-      ->delimiter(',')
-      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 28));
-  cmd->add_option("--converge", o.converge, "Convergence to time (default 0.9)")->check(CLI::Range(1e-6, 0.999999));
-  cmd->add_option("--shoot-level", o.progressive.shootLevel, "Substructuring level (default 1)")->check(CLI::Range(0, 8));
-  cmd->add_option("--item-subdiv", o.progressive.itemSubdivision, "Item-mesh level L (default 3)")->check(CLI::Range(0, 8));
-  cmd->add_option("--item-res", o.progressive.itemResolution, "Item buffer resolution (default 512)")
-      ->check(CLI::Range(16, 16384));
-  cmd->add_option("--shooters-per-pass", o.shootersPerPass,
-                  fmt::format("Shooters per pass, one row each (default 16; at most {})", kMaxPassShooters))
-      ->delimiter(',')
-      ->check(CLI::Range(1, int(kMaxPassShooters)));
-  cmd->add_option_function<std::string>(
-         "--algorithm", [&o](const std::string& a) { o.progressive.algorithm = parseAlgorithm(a); },
-         "progressive (default), importance or perspective (view-driven ones look from SCENE.camera)")
-      ->check(CLI::IsMember(algorithmNames()));
-  cmd->add_option("--markdown", o.markdown, "Write the printed tables as markdown (e.g. into docs/bench)");
-  cmd->add_option("--split-shots", o.splitShots, "Shots timed pass by pass for the split (default 64)")
-      ->check(CLI::Range(1u, 1u << 20));
-  cmd->add_option("--backend", o.backendName, "GL backend: osmesa (default), egl, auto")
-      ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
-  cmd->add_option("--gpu", o.backend.gpu, "EGL device index")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--json", o.json, "Write the results as JSON");
-  cmd->add_option("--compare", o.compare, "Another bench JSON: print per-object differences to its matching rows");
-  cmd->add_flag("--ceiling", o.ceiling,
-                "Also measure the device's ceilings (load-store invocations/s, item-buffer triangles/s) and "
-                "print each throughput as a fraction of them");
+  using options::add;
+  add(cmd, "--scenes", o.scenes);
+  add(cmd, "--elements", o.elements);
+  add(cmd, "--converge", o.converge);
+  add(cmd, "--shoot-level", o.progressive.shootLevel);
+  add(cmd, "--item-subdiv", o.progressive.itemSubdivision);
+  add(cmd, "--item-res", o.progressive.itemResolution);
+  add(cmd, "--shooters-per-pass", o.shootersPerPass);
+  add(cmd, "--algorithm", o.progressive.algorithm);
+  add(cmd, "--markdown", o.markdown);
+  add(cmd, "--split-shots", o.splitShots);
+  add(cmd, "--backend", o.backendName);
+  add(cmd, "--gpu", o.backend.gpu);
+  add(cmd, "--json", o.json);
+  add(cmd, "--compare", o.compare);
+  options::addSwitch(cmd, "--ceiling", o.ceiling);
 }
 
 int runBench(BenchOptions o) {

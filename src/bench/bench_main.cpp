@@ -5,18 +5,13 @@
 
 #include "src/bench/Bench.h"
 #include "src/base/Error.h"
+#include "src/cli/Suggest.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"hemirad-bench: time the progressive radiosity solver"};
+  CLI::App app{"hemirad-bench: time the progressive radiosity solver", "hemirad-bench"};
   hemirad::BenchOptions options;
   hemirad::addBenchFlags(&app, options);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);
-    std::fprintf(stderr, "hemirad: error: %s\n", e.what());
-    return hemirad::kExitInputError;
-  }
+  if (std::optional<int> exit = hemirad::options::parse(app, argc, argv)) return *exit;
   try {
     return hemirad::runBench(options);
   } catch (const hemirad::InputError& e) {

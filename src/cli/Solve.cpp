@@ -62,10 +62,19 @@ int runWalkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas
   return 0;
 }
 
+// What only progressive refinement reports: the item mesh and seed 004's view-driven shots.
+void describeProgressive(RunInfo& run, const ProgressiveSolver& solver) {
+  run.importanceShots = solver.importanceShots();
+  run.deliveryShots = solver.deliveryShots();
+  run.fovDecayShots = solver.fovDecayShots();
+  run.itemTriangles = solver.itemTriangles();
+}
+
 }  // namespace
 
 int runSolve(const SolveOptions& o) {
   auto start = std::chrono::steady_clock::now();
+  requireBuilt(o.method);
   for (auto [path, flag] : {std::pair{o.out, "--out"}, {o.image, "--image"}, {o.atlas, "--atlas"}, {o.ply, "--ply"},
                             {o.report, "--report"}})
     if (!path.empty()) checkWritable(path, flag);
@@ -86,7 +95,9 @@ int runSolve(const SolveOptions& o) {
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
   SolverState state(scene, atlas);
-  ProgressiveSolver solver(state, o.progressive);
+  const std::unique_ptr<Solver> method = makeSolver(o.method, state, o.progressive);
+  Solver& solver = *method;
+  auto* progressive = dynamic_cast<ProgressiveSolver*>(method.get());  // view-driven shooting, walkthroughs
   const double aspect = double(o.width) / o.height;
   const nlohmann::json identity = checkpointIdentity(scene, atlas, o, solver);
   SolveStatus status;
@@ -96,8 +107,8 @@ int runSolve(const SolveOptions& o) {
     status = solver.restoreState(resumed->solver);
     resumed.reset();
   }
-  if (!o.cameraPath.empty()) return runWalkthrough(o, scene, atlas, state, solver, camera);
-  if (o.progressive.importanceDriven()) solver.look(camera, aspect);  // after a restore: no change
+  if (!o.cameraPath.empty()) return runWalkthrough(o, scene, atlas, state, *progressive, camera);
+  if (o.progressive.importanceDriven()) progressive->look(camera, aspect);  // after a restore: no change
 
   // Shots run in batches between status readbacks; a signal or a due checkpoint is handled
   // between batches, where the GPU state is whole. Batch sizes never change the result.
@@ -144,6 +155,7 @@ int runSolve(const SolveOptions& o) {
   RunInfo run;
   run.backend = backend->name();
   run.renderer = backend->renderer();
+  run.method = methodName(o.method);
   run.algorithm = solver.algorithm();
   run.scene = o.scene;
   run.texelSize = atlas.texelSize;
@@ -151,11 +163,8 @@ int runSolve(const SolveOptions& o) {
   run.itemResolution = o.progressive.itemResolution;
   run.shootLevel = o.progressive.shootLevel;
   run.shootersPerPass = o.progressive.shootersPerPass;
-  run.importanceShots = solver.importanceShots();
-  run.deliveryShots = solver.deliveryShots();
-  run.fovDecayShots = solver.fovDecayShots();
   run.elements = atlas.elements;
-  run.itemTriangles = solver.itemTriangles();
+  if (progressive) describeProgressive(run, *progressive);
   run.atlasWidth = atlas.width;
   run.atlasHeight = atlas.height;
   run.status = status;

@@ -1,10 +1,10 @@
 // `hemirad solve` and `hemirad info`: the commands, apart from flag parsing (src/cli/main.cpp).
 #pragma once
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
 #include "gl/Backend.h"
+#include "src/solver/Methods.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/SceneLoader.h"
@@ -16,7 +16,8 @@ struct SolveOptions {
   std::string scene;
   LoadOptions load;
   Discretisation discretisation;
-  ProgressiveSettings progressive;
+  Method method = Method::Progressive;
+  ProgressiveSettings progressive;  // the progressive method's
   gl::BackendOptions backend;
   std::optional<std::string> camera;
   int width = 512, height = 512, supersample = 2;

@@ -20,6 +20,7 @@ nlohmann::json reportJson(const RunInfo& r) {
   return {
       {"backend", r.backend},
       {"renderer", r.renderer},
+      {"method", r.method},
       {"algorithm", r.algorithm},
       {"scene", r.scene},
       {"elements", r.elements},

@@ -11,7 +11,7 @@
 namespace hemirad {
 
 struct RunInfo {
-  std::string backend, renderer, algorithm, scene;
+  std::string backend, renderer, method, algorithm, scene;  // method: `solve --method`
   double texelSize = 0;
   int itemSubdivision = 0, itemResolution = 0, shootLevel = 0, shootersPerPass = 0;
   unsigned importanceShots = 0;  // importance-driven solves

@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <thread>
 
-#include "src/cli/AmbientFlag.h"
 #include "src/base/AtomicFile.h"
 #include "src/solver/Control.h"
 #include "src/base/Error.h"
@@ -102,51 +101,7 @@ struct WorkerThread {
 
 }  // namespace
 
-void addViewFlags(CLI::App* cmd, ViewerOptions& o) {
-  cmd->footer(std::string("Controls:\n") + kControls);
-  auto& p = o.progressive;
-  p.stop.targetConvergence = 0.999;  // the viewer stops only when there is little left to see
-  cmd->add_option_function<std::string>(
-         "--algorithm", [&p](const std::string& a) { p.algorithm = parseAlgorithm(a); },
-         "Algorithm to start with (keys 1/2/3 switch): progressive (default), importance, perspective")
-      ->check(CLI::IsMember(algorithmNames()));
-  cmd->add_option("--backend", o.backendName, "GL backend of the solver: osmesa (default), egl, auto")
-      ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
-  cmd->add_option("--gpu", o.backend.gpu, "EGL device index")->check(CLI::Range(0, 1023));
-  cmd->add_option("--camera", o.camera, "Start camera: eye=x,y,z,target=x,y,z,up=x,y,z,fov=degrees (default: SCENE.camera)");
-  cmd->add_option("--width", o.width, "Window width (default 800)")->check(CLI::Range(1, 16384));
-  cmd->add_option("--height", o.height, "Window height (default 600)")->check(CLI::Range(1, 16384));
-  cmd->add_option("--exposure", o.exposure, "Exposure in stops over the automatic one (default 0)");
-  addAmbientFlag(cmd, o.ambient);
-  auto* frameMs = cmd->add_option("--frame-ms", o.frameMs, "Shooting time per frame in milliseconds (default 33)")
-                      ->check(CLI::Range(1.0, 60000.0));
-  cmd->add_option("--shots-per-frame", o.shotsPerFrame,
-                  "Shots per frame instead of a time budget (deterministic): frame k shows the solve after "
-                  "k x N shots, rounded up to whole passes")
-      ->check(CLI::Range(1u, 1u << 20))
-      ->excludes(frameMs);
-  cmd->add_option("--frames", o.frames, "Quit after N frames (each frame is presented); with --shots-per-frame the solve also stops at "
-                  "N x --shots-per-frame shots")->check(CLI::Range(1u, 1u << 30));
-  cmd->add_option("--screenshot", o.screenshot, "On quit, write the window's last frame here (.png)");
-  cmd->add_option("--item-subdiv", p.itemSubdivision, "Item-mesh 1-to-4 subdivision level L (default 3)")
-      ->check(CLI::Range(0, 8));
-  cmd->add_option("--item-res", p.itemResolution, "Item buffer resolution in pixels (default 512)")
-      ->check(CLI::Range(16, 16384));
-  cmd->add_option("--shoot-level", p.shootLevel, "Substructuring: shoot from 2^k x 2^k texel blocks (default 1)")
-      ->check(CLI::Range(0, 8));
-  cmd->add_option("--shooters-per-pass", p.shootersPerPass,
-                  fmt::format("Blocks shooting in one pass (default 16, at most {})", kMaxPassShooters))
-      ->check(CLI::Range(1, int(kMaxPassShooters)));
-  cmd->add_option("--converge", p.stop.targetConvergence, "Stop shooting at this convergence (default 0.999)")
-      ->check(CLI::Validator(
-          [](std::string& v) {
-            char* end = nullptr;
-            double x = std::strtod(v.c_str(), &end);
-            return end != v.c_str() && *end == '\0' && x > 0 && x < 1 ? std::string() : "must be in (0, 1)";
-          },
-          "in (0, 1)"));
-  cmd->add_option("--shots", p.stop.maxShots, "Stop shooting after N shots")->check(CLI::Range(1u, 1u << 30));
-}
+const char* viewerControls() { return kControls; }
 
 int runView(ViewerOptions o) {
   if (!o.screenshot.empty()) checkWritable(o.screenshot, "--screenshot");

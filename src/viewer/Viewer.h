@@ -1,7 +1,6 @@
 // `hemirad view SCENE`: a window (GLFW) showing the solution refine live, with mouse and
 // keyboard camera control and a switch between the algorithms.
 #pragma once
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
@@ -16,7 +15,11 @@ struct ViewerOptions {
   std::string scene;
   LoadOptions load;
   Discretisation discretisation;
-  ProgressiveSettings progressive;
+  ProgressiveSettings progressive = [] {
+    ProgressiveSettings p;
+    p.stop.targetConvergence = 0.999;  // the viewer stops only when there is little left to see
+    return p;
+  }();
   gl::BackendOptions backend;
   std::string backendName = "osmesa";
   std::optional<std::string> camera;
@@ -29,7 +32,8 @@ struct ViewerOptions {
   std::string screenshot;       // PNG of the window's last frame, written on quit
 };
 
-void addViewFlags(CLI::App* cmd, ViewerOptions& options);
+// The mouse and key controls, for --help and the terminal.
+const char* viewerControls();
 int runView(ViewerOptions options);
 
 }  // namespace hemirad

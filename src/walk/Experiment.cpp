@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fmt/format.h>
 
-#include "src/cli/AmbientFlag.h"
 #include "src/base/AtomicFile.h"
 #include "src/scene/Atlas.h"
 #include "src/base/Error.h"
@@ -99,35 +98,9 @@ void plotScene(const std::string& out, const std::string& scene, const std::vect
 
 }  // namespace
 
-void addExperimentFlags(CLI::App* cmd, ExperimentOptions& o) {
-  cmd->add_option("--scenes", o.scenes, "OBJ scenes, each with its SCENE.path (default: four_boxes, four_boxes_x2, cornell_x4)")
-      ->delimiter(',')
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--algorithms", o.algorithms, "Algorithms to compare (default progressive,importance,perspective)")
-      ->delimiter(',')
-      ->check(CLI::IsMember(algorithmNames()));
-  cmd->add_option("--elements", o.elements, "About this many elements per scene (default 4000)")
-      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 24));
-  cmd->add_option("--fps", o.walkthrough.fps, "Frames per second of path time (default 10)")->check(CLI::Range(0.01, 1000.0));
-  cmd->add_option("--frame-ms", o.walkthrough.frameMs, "Solver milliseconds per frame (default 100)")
-      ->check(CLI::Range(1.0, 1e7));
-  cmd->add_option("--width", o.walkthrough.width, "Frame width (default 256)")->check(CLI::Range(8, 4096));
-  cmd->add_option("--height", o.walkthrough.height, "Frame height (default 256)")->check(CLI::Range(8, 4096));
-  addAmbientFlag(cmd, o.walkthrough.ambient);
-  cmd->add_option("--reference-convergence", o.referenceConvergence, "Convergence of the reference (default 0.99)")
-      ->check(CLI::Range(0.5, 0.99999));
-  cmd->add_option("--fov-decay", o.progressive.fovDecayShots, "Perspective-driven decay interval in shots (default: a quarter of the blocks)")
-      ->check(CLI::Range(1u, 1u << 30));
-  cmd->add_option("--out", o.out, "Folder for the CSVs, summary and plots (default docs/experiments)");
-  cmd->add_flag("--keep-frames", o.frames, "Also keep every frame as OUT/SCENE_ALGORITHM/frame_NNNN.png");
-  cmd->add_option("--backend", o.backendName, "GL backend: osmesa (default), egl, auto")
-      ->check(CLI::IsMember({"osmesa", "egl", "auto"}));
-  cmd->add_option("--gpu", o.backend.gpu, "EGL device index")->check(CLI::Range(0, 1023));
-}
-
 int runExperiment(ExperimentOptions o) {
   std::filesystem::create_directories(o.out);
-  checkWritable(o.out + "/summary.md", "--out");
+  checkWritable(o.out + "/summary.md", "--out-dir");
   o.backend.kind = gl::parseBackendKind(o.backendName);
   auto backend = gl::createBackend(o.backend);
   std::vector<Run> runs;

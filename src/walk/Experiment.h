@@ -4,7 +4,6 @@
 // time to lighting events (CSV and markdown) and plots of image error and visible convergence
 // over solver time.
 #pragma once
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -22,13 +21,12 @@ struct ExperimentOptions {
   double referenceConvergence = 0.99;
   ProgressiveSettings progressive;
   WalkthroughOptions walkthrough;  // fps, frame budget, frame size
-  std::string out = "docs/experiments";
+  std::string out = "docs/experiments";  // --out-dir
   bool frames = false;             // also keep every frame's PNG
   gl::BackendOptions backend;
   std::string backendName = "osmesa";
 };
 
-void addExperimentFlags(CLI::App* cmd, ExperimentOptions& options);
 int runExperiment(ExperimentOptions options);
 
 }  // namespace hemirad

@@ -1,0 +1,184 @@
+#include "src/cli/Commands.h"
+
+#include <fmt/format.h>
+
+#include "src/cli/CliDocs.h"
+#include "src/cli/Options.h"
+#include "src/solver/Methods.h"
+
+namespace hemirad {
+
+using options::add;
+using options::addSwitch;
+
+namespace {
+
+void addScene(CLI::App* cmd, std::string& scene, LoadOptions& load, Discretisation& d) {
+  cmd->add_option("scene", scene, "Wavefront OBJ (materials from its MTL)")
+      ->required()
+      ->type_name("SCENE")
+      ->check(CLI::ExistingFile);
+  add(cmd, "--emission", load.emission);
+  CLI::Option* texelSize = add(cmd, "--texel-size", d.texelSize, "from --elements");
+  add(cmd, "--elements", d.elements, std::to_string(Discretisation::kDefaultElements))->excludes(texelSize);
+}
+
+}  // namespace
+
+Commands::Commands() {
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "hemirad 0.1.0");
+  addSolve();
+
+  infoCmd = app.add_subcommand("info", "Describe a scene: objects, polygons, area, emitters, elements");
+  addScene(infoCmd, info.scene, info.load, info.discretisation);
+  add(infoCmd, "--item-subdiv", info.itemSubdivision);
+
+  addValidate();
+  benchCmd = app.add_subcommand("bench", "Time the solver: shots and time to convergence, per-pass split");
+  addBenchFlags(benchCmd, bench);
+  addView();
+  addExperiment();
+
+  docsCmd = app.add_subcommand("docs", "Print docs/cli.md (this command line as markdown)")->group("");
+  docsCmd->add_option("what", docs, "cli")->required()->check(CLI::IsMember({"cli"}));
+}
+
+void Commands::addSolve() {
+  CLI::App* s = solveCmd = app.add_subcommand("solve", "Solve a scene and write images, atlas, mesh and report");
+  addScene(s, solve.scene, solve.load, solve.discretisation);
+  ProgressiveSettings& p = solve.progressive;
+  add(s, "--method", solve.method);
+  converge = add(s, "--converge", p.stop.targetConvergence, "0.9; 0.9999 with --camera-path");
+  shots = add(s, "--shots", p.stop.maxShots);
+  add(s, "--item-subdiv", p.itemSubdivision);
+  add(s, "--item-res", p.itemResolution);
+  add(s, "--hemisphere", solveProjection);
+  add(s, "--shoot-level", p.shootLevel);
+  add(s, "--algorithm", p.algorithm);
+  add(s, "--fov-decay", p.fovDecayShots);
+  add(s, "--shooters-per-pass", p.shootersPerPass);
+  addSwitch(s, "--sync-timings", syncTimings);
+  add(s, "--backend", solveBackend);
+  add(s, "--gpu", solve.backend.gpu);
+  addSwitch(s, "--gl-debug", solve.backend.debug);
+  add(s, "--camera", solve.camera);
+  add(s, "--width", solve.width);
+  add(s, "--height", solve.height);
+  add(s, "--supersample", solve.supersample);
+  add(s, "--exposure", solve.exposure);
+  add(s, "--ambient", solve.ambient);
+  addSolveOutputs(s);
+  addWalkthrough(s);
+}
+
+void Commands::addSolveOutputs(CLI::App* s) {
+  for (auto [flag, path] : {std::pair{"--out", &solve.out}, {"--image", &solve.image}, {"--atlas", &solve.atlas},
+                            {"--ply", &solve.ply}, {"--report", &solve.report}})
+    add(s, flag, *path);
+  CLI::Option* checkpoint = add(s, "--checkpoint", solve.checkpoint);
+  add(s, "--checkpoint-every", solve.checkpointEvery)->needs(checkpoint);
+  add(s, "--resume", solve.resume);
+  addSwitch(s, "--quiet", quiet);
+}
+
+void Commands::addWalkthrough(CLI::App* s) {
+  WalkthroughOptions& w = solve.walkthrough;
+  CLI::Option* path = add(s, "--camera-path", solve.cameraPath);
+  path->needs(add(s, "--frames", w.framesDir)->needs(path));
+  add(s, "--fps", w.fps)->needs(path);
+  CLI::Option* frameMs = add(s, "--frame-ms", w.frameMs)->needs(path);
+  add(s, "--frame-shots", w.frameShots)->needs(path)->excludes(frameMs);
+  add(s, "--reference-convergence", solve.referenceConvergence)->needs(path);
+}
+
+void Commands::addValidate() {
+  CLI::App* v = validateCmd =
+      app.add_subcommand("validate", "Check the GPU item buffer and form factors against the exact CPU reference");
+  addScene(v, validate.scene, validate.load, validate.discretisation);
+  add(v, "--levels", validate.levels);
+  add(v, "--shooters", shooters);
+  add(v, "--item-res", validate.itemResolutions);
+  add(v, "--figures", validate.figures);
+  add(v, "--camera", validate.camera);
+  add(v, "--hemisphere", validateProjections);
+  add(v, "--backend", validateBackend);
+  add(v, "--gpu", validate.backend.gpu);
+  add(v, "--report", validate.report);
+  addSwitch(v, "--solution", validate.solution);
+}
+
+void Commands::addView() {
+  CLI::App* w = viewCmd = app.add_subcommand("view", "Open a window showing the solution refine live (GLFW)");
+  w->footer(std::string("Controls:\n") + viewerControls());
+  addScene(w, view.scene, view.load, view.discretisation);
+  ProgressiveSettings& p = view.progressive;
+  add(w, "--algorithm", p.algorithm);
+  add(w, "--backend", view.backendName);
+  add(w, "--gpu", view.backend.gpu);
+  add(w, "--camera", view.camera);
+  add(w, "--width", view.width);
+  add(w, "--height", view.height);
+  add(w, "--exposure", view.exposure);
+  add(w, "--ambient", view.ambient);
+  CLI::Option* frameMs = add(w, "--frame-ms", view.frameMs);
+  add(w, "--frame-shots", view.shotsPerFrame)->excludes(frameMs);
+  add(w, "--frame-count", view.frames);
+  add(w, "--screenshot", view.screenshot);
+  add(w, "--item-subdiv", p.itemSubdivision);
+  add(w, "--item-res", p.itemResolution);
+  add(w, "--shoot-level", p.shootLevel);
+  add(w, "--shooters-per-pass", p.shootersPerPass);
+  add(w, "--converge", p.stop.targetConvergence);
+  add(w, "--shots", p.stop.maxShots);
+}
+
+void Commands::addExperiment() {
+  CLI::App* x = experimentCmd = app.add_subcommand(
+      "experiment", "Seed 004's experiments: progressive vs importance vs perspective along camera paths");
+  ExperimentOptions& e = experiment;
+  add(x, "--scenes", e.scenes);
+  add(x, "--algorithms", e.algorithms);
+  add(x, "--elements", e.elements);
+  add(x, "--fps", e.walkthrough.fps);
+  add(x, "--frame-ms", e.walkthrough.frameMs);
+  add(x, "--width", e.walkthrough.width);
+  add(x, "--height", e.walkthrough.height);
+  add(x, "--ambient", e.walkthrough.ambient);
+  add(x, "--reference-convergence", e.referenceConvergence);
+  add(x, "--fov-decay", e.progressive.fovDecayShots);
+  add(x, "--out-dir", e.out);
+  addSwitch(x, "--keep-frames", e.frames);
+  add(x, "--backend", e.backendName);
+  add(x, "--gpu", e.backend.gpu);
+}
+
+int Commands::runSolve() {
+  ProgressiveSettings& p = solve.progressive;
+  // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told.
+  if (!*shots && !*converge) p.stop.targetConvergence = solve.cameraPath.empty() ? 0.9 : 0.9999;
+  if (syncTimings) p.timings = gl::TimerMode::Synchronous;
+  solve.backend.kind = gl::parseBackendKind(solveBackend);
+  p.projection = parseProjection(solveProjection);
+  solve.progress = !quiet;
+  return hemirad::runSolve(solve);
+}
+
+int Commands::run() {
+  if (*solveCmd) return runSolve();
+  if (*infoCmd) return runInfo(info);
+  if (*benchCmd) return runBench(bench);
+  if (*viewCmd) return runView(view);
+  if (*experimentCmd) return runExperiment(experiment);
+  if (*docsCmd) {
+    fmt::print("{}", options::markdown(app));
+    return 0;
+  }
+  validate.backend.kind = gl::parseBackendKind(validateBackend);
+  validate.projections.clear();
+  for (const auto& name : validateProjections) validate.projections.push_back(parseProjection(name));
+  validate.shooters = shooters == "all" ? std::nullopt : std::optional<std::size_t>(std::stoul(shooters));
+  return runValidate(validate);
+}
+
+}  // namespace hemirad

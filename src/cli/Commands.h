@@ -1,0 +1,50 @@
+// The subcommands of `hemirad` and the flags each takes from the option table (Options.h).
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "src/bench/Bench.h"
+#include "src/cli/Solve.h"
+#include "src/validate/Validate.h"
+#include "src/viewer/Viewer.h"
+#include "src/walk/Experiment.h"
+
+namespace hemirad {
+
+// Built in place (the parser holds pointers into the options): parse `app`, then run().
+struct Commands {
+  Commands();
+  Commands(const Commands&) = delete;
+  // Runs the chosen subcommand, after settling what depends on several flags. Throws InputError.
+  int run();
+
+  CLI::App app{"hemirad: diffuse global illumination by GPU progressive-refinement radiosity", "hemirad"};
+  SolveOptions solve;
+  InfoOptions info;
+  ValidateOptions validate;
+  BenchOptions bench;
+  ViewerOptions view;
+  ExperimentOptions experiment;
+
+ private:
+  void addSolve();
+  void addSolveOutputs(CLI::App* s);
+  void addWalkthrough(CLI::App* s);
+  void addValidate();
+  void addView();
+  void addExperiment();
+  int runSolve();
+
+  // Flags read into text, turned into the options after parsing.
+  std::string solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa",
+              shooters = "16";
+  std::vector<std::string> validateProjections{"stereographic"};
+  bool quiet = false, syncTimings = false;
+  std::string docs;
+  CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
+           *experimentCmd = nullptr, *docsCmd = nullptr;
+  CLI::Option *converge = nullptr, *shots = nullptr;
+};
+
+}  // namespace hemirad

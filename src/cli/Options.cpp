@@ -1,0 +1,216 @@
+#include "src/cli/Options.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <stdexcept>
+
+#include "src/scene/SceneLoader.h"
+#include "src/solver/Control.h"
+#include "src/solver/Methods.h"
+
+namespace hemirad::options {
+
+namespace {
+
+// A number parsed whole (no trailing text), finite, passing `ok`.
+CLI::Validator number(bool (*ok)(double), const std::string& description, const std::string& error) {
+  return CLI::Validator(
+      [ok, error](std::string& v) {
+        char* end = nullptr;
+        double x = std::strtod(v.c_str(), &end);
+        return end != v.c_str() && *end == '\0' && std::isfinite(x) && ok(x) ? std::string()
+                                                                             : error + ", not '" + v + "'";
+      },
+      description);
+}
+
+template <class T>
+CLI::Validator oneOf(const std::map<std::string, T>& names, const std::string& description) {
+  return CLI::Validator(CLI::CheckedTransformer(names, CLI::ignore_case)).description(description);
+}
+
+CLI::Validator names(const std::vector<std::string>& names) {
+  return CLI::Validator(CLI::IsMember(names)).description(fmt::format("{}", fmt::join(names, "|")));
+}
+
+std::map<std::string, Algorithm> algorithms() {
+  std::map<std::string, Algorithm> m;
+  for (const std::string& name : algorithmNames()) m[name] = parseAlgorithm(name);
+  return m;
+}
+
+std::map<std::string, Method> methods() {
+  std::map<std::string, Method> m;
+  for (const auto& [name, method] : methodNames()) m[name] = method;
+  return m;
+}
+
+const CLI::Validator kCount = CLI::Range(1u, 1u << 30);
+const CLI::Validator kLevel = CLI::Range(0, 8);
+const CLI::Validator kPixels = CLI::Range(1, 16384);
+
+const CLI::Validator kNone;  // any value the field parses
+
+std::vector<Flag> sceneAndSolverFlags() {
+  const auto positive = number([](double x) { return x > 0; }, "> 0", "must be a positive number");
+  const auto unit = number([](double x) { return x > 0 && x < 1; }, "in (0, 1)", "must be in (0, 1)");
+  const CLI::Validator none = kNone;
+  return {
+      // The scene and its elements.
+      {"--emission", "KEY", "MTL key that gives emission: ke or ka (the thesis)",
+       oneOf(std::map<std::string, EmissionSource>{{"ke", EmissionSource::Ke}, {"ka", EmissionSource::Ka}}, "ke|ka"),
+       "ke"},
+      {"--texel-size", "SIZE", "Element (texel) side in scene units", positive.description("SIZE > 0")},
+      {"--elements", "N", "Choose the texel size for about N elements",
+       CLI::Range(std::size_t(1), std::size_t(1) << 28)},
+      {"--scenes", "OBJ", "OBJ scenes", CLI::ExistingFile},
+      // The solver.
+      {"--method", "METHOD", "Radiosity method: progressive; stochastic and instant are not built yet",
+       oneOf(methods(), "progressive|stochastic|instant"), "progressive"},
+      {"--algorithm", "NAME",
+       "Progressive shooter choice: progressive; importance: shooters ranked by unshot power x importance from "
+       "the camera; perspective: importance-driven, and only what the view sees receives (seed 004)",
+       oneOf(algorithms(), "progressive|importance|perspective"), "progressive"},
+      {"--algorithms", "NAME", "Algorithms to compare", names(algorithmNames())},
+      {"--converge", "C", "Stop at this convergence, 1 - unshot/emitted power", unit},
+      {"--shots", "N", "Stop after N shots", kCount, "no limit"},
+      {"--item-subdiv", "L", "Item-mesh 1-to-4 subdivision level", kLevel},
+      {"--item-res", "PIXELS", "Item buffer resolution in pixels (the pixel budget's side)", CLI::Range(16, 16384)},
+      {"--hemisphere", "NAME", "Item buffer: stereographic (seed 003) or hemicube (equal pixel budgets)",
+       names({"stereographic", "hemicube"})},
+      {"--shoot-level", "K", "Substructuring: shoot from 2^K x 2^K texel blocks", kLevel},
+      {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass (at most {})",
+                                               kMaxPassShooters),
+       CLI::Range(1, int(kMaxPassShooters))},
+      {"--fov-decay", "SHOTS",
+       "Perspective-driven: shots over which the simulated field of view grows from the camera's to the whole "
+       "scene after each camera move",
+       kCount, "a quarter of the shooter blocks"},
+      {"--sync-timings", "", "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)",
+       none},
+  };
+}
+
+std::vector<Flag> deviceAndOutputFlags() {
+  const auto any = number([](double) { return true; }, "", "must be a number");
+  const CLI::Validator none = kNone;
+  return {
+      // The GL backend.
+      {"--backend", "NAME", "GL backend: osmesa, egl or auto", names({"osmesa", "egl", "auto"})},
+      {"--gpu", "INDEX", "EGL device index", CLI::Range(0, 1023), "the first hardware device"},
+      {"--gl-debug", "", "Report GL errors through KHR_debug", none},
+      // Cameras and images.
+      {"--camera", "CAMERA", "eye=x,y,z,target=x,y,z,up=x,y,z,fov=degrees", none, "SCENE.camera, else the framed bounds"},
+      {"--width", "PIXELS", "Image (or window) width", kPixels},
+      {"--height", "PIXELS", "Image (or window) height", kPixels},
+      {"--supersample", "N", "Samples per pixel side", CLI::Range(1, 8)},
+      {"--exposure", "STOPS", "Exposure in stops over the automatic one", any},
+      {"--ambient", "on|off",
+       "Seed 004's ambient term R x (area-averaged unshot radiosity) x rho on camera images; never in B, the "
+       "report, the atlas or the PLY",
+       oneOf(std::map<std::string, bool>{{"on", true}, {"off", false}}, "on|off"), "on"},
+      // Outputs.
+      {"--out", "FILE", "Linear camera render (.exr)", none},
+      {"--out-dir", "DIR", "Folder for the CSVs, summary and plots", none},
+      {"--image", "FILE", "Tone-mapped camera render (.png)", none},
+      {"--atlas", "FILE", "Radiosity atlas, one texel per element (.exr)", none},
+      {"--ply", "FILE", "Mesh with per-vertex radiosity (.ply)", none},
+      {"--report", "FILE", "Report (.json)", none},
+      {"--json", "FILE", "Results as JSON", none},
+      {"--markdown", "FILE", "The printed tables as markdown (e.g. into docs/bench)", none},
+      {"--quiet", "", "No progress bar", none},
+      // Checkpoints.
+      {"--checkpoint", "FILE",
+       "Write the solve's state here (atomically) at the end, on SIGINT/SIGTERM and every --checkpoint-every shots",
+       none},
+      {"--checkpoint-every", "N", "Also checkpoint every N shots", kCount},
+      {"--resume", "FILE", "Continue from a checkpoint of the same scene and parameters", CLI::ExistingFile},
+  };
+}
+
+std::vector<Flag> frameAndCommandFlags() {
+  const CLI::Validator none = kNone;
+  return {
+      // Walkthroughs, experiments and the viewer: frames along a camera path or in a window.
+      {"--camera-path", "FILE",
+       "Walkthrough: keyframes 'TIME eye=.. target=.. fov=..' per line (docs/walkthroughs.md); writes a frame per "
+       "1/--fps s and frames.csv into --frames",
+       CLI::ExistingFile},
+      {"--frames", "DIR", "Folder for the walkthrough's frames and frames.csv", none},
+      {"--keep-frames", "", "Also keep every frame as OUT-DIR/SCENE_ALGORITHM/frame_NNNN.png", none},
+      {"--fps", "FPS", "Walkthrough frames per second of path time", CLI::Range(0.01, 1000.0)},
+      {"--frame-ms", "MS", "Solver milliseconds per frame", CLI::Range(1.0, 1e7)},
+      {"--frame-shots", "N",
+       "Instead of --frame-ms: shots per frame (reproducible; rounded up to whole passes of --shooters-per-pass)",
+       CLI::Range(1u, 1u << 20), "none: --frame-ms"},
+      {"--frame-count", "N", "Quit after N frames (with --frame-shots the solve also stops at N x --frame-shots shots)",
+       kCount, "when the window closes"},
+      {"--reference-convergence", "C", "Convergence of the reference the frames are compared with",
+       CLI::Range(0.5, 0.99999)},
+      {"--screenshot", "FILE", "On quit, write the window's last frame here (.png)", none},
+      // validate.
+      {"--levels", "L", "Item-mesh subdivision levels to compare", kLevel},
+      {"--shooters", "N|all", "Shooter elements: a count spread over the scene, or all",
+       CLI::Validator(
+           [](std::string& s) {
+             return s == "all" || (!s.empty() && s.size() < 10 && s.find_first_not_of("0123456789") == std::string::npos &&
+                                   std::stoul(s) > 0)
+                        ? std::string()
+                        : "must be a count or 'all'";
+           },
+           "")},
+      {"--figures", "DIR", "Write plots, CSV, heat maps and index.html into this folder", none},
+      {"--solution", "", "Also compare a converged GPU solution with the dense exact one (up to 5,000 elements)",
+       none},
+      // bench.
+      {"--split-shots", "N", "Shots timed pass by pass for the split", CLI::Range(1u, 1u << 20)},
+      {"--compare", "FILE", "Another bench JSON: print per-object differences to its matching rows", none},
+      {"--ceiling", "",
+       "Also measure the device's ceilings (load-store invocations/s, item-buffer triangles/s) and print each "
+       "throughput as a fraction of them",
+       none},
+  };
+}
+
+std::vector<Flag> makeTable() {
+  std::vector<Flag> flags = sceneAndSolverFlags();
+  for (auto part : {deviceAndOutputFlags(), frameAndCommandFlags()}) flags.insert(flags.end(), part.begin(), part.end());
+  return flags;
+}
+
+}  // namespace
+
+const std::vector<Flag>& table() {
+  static const std::vector<Flag> flags = makeTable();
+  return flags;
+}
+
+const Flag& flag(const std::string& name) {
+  for (const Flag& f : table())
+    if (f.name == name) return f;
+  throw std::logic_error("no flag " + name + " in the option table (src/cli/Options.cpp)");
+}
+
+CLI::Option* detail::finish(CLI::Option* option, const Flag& f, bool list, const std::string& defaultText) {
+  option->type_name(f.value);
+  if (list) option->delimiter(',');
+  option->transform(f.check);  // a transform both checks and (for names) converts
+  if (!defaultText.empty())
+    option->default_str(defaultText);
+  else if (!f.defaultText.empty())
+    option->default_str(f.defaultText);
+  else
+    option->capture_default_str();
+  return option;
+}
+
+CLI::Option* addSwitch(CLI::App* cmd, const std::string& name, bool& target) {
+  const Flag& f = flag(name);
+  return cmd->add_flag(f.name, target, f.help);
+}
+
+}  // namespace hemirad::options

@@ -1,0 +1,40 @@
+// Every flag of every command, declared once: name, value, check and help. A command picks the
+// flags it takes by name and binds each to a field of its own options struct, so a flag means
+// the same and is checked the same wherever it appears. Defaults are the commands' own (their
+// structs' initial values), shown in --help and docs/cli.md. This library needs no image,
+// validate or viewer library: the lean hemirad-bench links it.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace hemirad::options {
+
+struct Flag {
+  std::string name;         // "--texel-size"
+  std::string value;        // what it takes, "SIZE"; empty for a switch
+  std::string help;
+  CLI::Validator check;     // the one check of its values (each item of a list)
+  std::string defaultText;  // shown instead of the bound field's value (enumerations)
+};
+
+const std::vector<Flag>& table();
+const Flag& flag(const std::string& name);  // std::logic_error for a name not in the table
+
+namespace detail {
+template <class T> struct IsList : std::false_type {};
+template <class T> struct IsList<std::vector<T>> : std::true_type {};
+CLI::Option* finish(CLI::Option* option, const Flag& flag, bool list, const std::string& defaultText);
+}  // namespace detail
+
+// Adds the table's flag `name` to `cmd`, storing into `target`; a vector takes a comma list.
+// `defaultText` describes a default the field does not hold until after parsing.
+template <class T>
+CLI::Option* add(CLI::App* cmd, const std::string& name, T& target, const std::string& defaultText = {}) {
+  const Flag& f = flag(name);
+  return detail::finish(cmd->add_option(f.name, target, f.help), f, detail::IsList<T>::value, defaultText);
+}
+CLI::Option* addSwitch(CLI::App* cmd, const std::string& name, bool& target);
+
+}  // namespace hemirad::options
