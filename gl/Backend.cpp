@@ -25,6 +25,19 @@ int RenderBackend::maxTextureSize() const {
   return size;
 }
 
+std::optional<double> RenderBackend::freeMemoryMiB() const {
+  constexpr GLenum kCurrentAvailableVidmemNVX = 0x9049;  // GL_NVX_gpu_memory_info, in KiB
+  GLint extensions = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &extensions);
+  for (GLint i = 0; i < extensions; ++i)
+    if (std::string(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)))) == "GL_NVX_gpu_memory_info") {
+      GLint kib = 0;
+      glGetIntegerv(kCurrentAvailableVidmemNVX, &kib);
+      return kib / 1024.0;
+    }
+  return std::nullopt;
+}
+
 void RenderBackend::loadFunctions(void* (*resolve)(const char*), bool debug) {
   int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(resolve));
   if (version == 0) throw Error(fmt::format("{}: could not load GL functions", name()));

@@ -3,6 +3,7 @@
 // where the GL function pointers are resolved (Filament's Platform split).
 #pragma once
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -33,6 +34,9 @@ class RenderBackend {
   // Blocks until the GPU has finished all submitted work.
   void finish() const;
   int maxTextureSize() const;  // GL_MAX_TEXTURE_SIZE
+  // Free device memory in MiB where the driver says (NVIDIA's GL_NVX_gpu_memory_info), else
+  // nullopt (llvmpipe): the bench reports what a solve holds as the drop across it.
+  std::optional<double> freeMemoryMiB() const;
 
  protected:
   RenderBackend() = default;

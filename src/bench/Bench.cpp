@@ -22,7 +22,9 @@ namespace {
 
 struct BenchRow {
   std::string scene;
-  std::size_t elements = 0, itemTriangles = 0, itemPixels = 0;
+  std::size_t elements = 0, itemTriangles = 0, itemPixels = 0, shooterBlocks = 0;
+  int itemResolution = 0;
+  std::optional<double> gpuMemoryMiB;  // what the solve holds on the device, where the driver says
   int shootersPerPass = 1;
   unsigned shots = 0;
   double convergence = 0, solveMs = 0, msPerShot = 0;
@@ -48,28 +50,47 @@ double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveSta
   return msSince(t0);
 }
 
+// A few untimed passes first: drivers compile shaders and page buffers in at their first use,
+// which would otherwise land in the first row's time.
+void warmUp(gl::RenderBackend& backend, const Scene& scene, const Atlas& atlas, ProgressiveSettings settings,
+            const Camera& camera) {
+  SolverState state(scene, atlas);
+  settings.stop = {2u * unsigned(settings.shootersPerPass), 0};
+  ProgressiveSolver solver(state, settings);
+  if (solver.viewDriven()) solver.look(camera, 1.0);
+  SolveStatus status;
+  runToStop(backend, solver, status);
+}
+
 BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& atlas, int shootersPerPass,
                   const BenchOptions& o) {
   BenchRow row;
   row.elements = atlas.elements;
   row.shootersPerPass = shootersPerPass;
 
-  SolverState state(scene, atlas);
   ProgressiveSettings settings = o.progressive;
   settings.shootersPerPass = shootersPerPass;
   settings.stop = {0, o.converge};
   settings.timings = gl::TimerMode::Off;  // the timed run pays for no queries
-  ProgressiveSolver solver(state, settings);
   // View-driven algorithms look from the scene's camera (SCENE.camera), square.
   const Camera camera = resolveCamera(scene, std::nullopt);
+  warmUp(backend, scene, atlas, settings, camera);
+  backend.finish();
+  const std::optional<double> freeBefore = backend.freeMemoryMiB();
+  SolverState state(scene, atlas);
+  ProgressiveSolver solver(state, settings);
   if (solver.viewDriven()) solver.look(camera, 1.0);
   SolveStatus status;
   row.solveMs = runToStop(backend, solver, status);
+  if (const std::optional<double> freeAfter = backend.freeMemoryMiB(); freeBefore && freeAfter)
+    row.gpuMemoryMiB = *freeBefore - *freeAfter;
   row.shots = status.shots;
   row.convergence = status.convergence;
   row.msPerShot = row.shots ? row.solveMs / row.shots : 0;
   row.itemTriangles = solver.itemTriangles();
   row.itemPixels = solver.itemPixels();
+  row.shooterBlocks = solver.shooterBlocks();
+  row.itemResolution = solver.plan().itemResolution;
   std::vector<glm::vec4> B = state.readRadiosity();
   row.hash = radiosityHash(atlas, B);
   row.objects = objectRadiosity(scene, atlas, B);
@@ -174,8 +195,9 @@ int runBench(BenchOptions o) {
   }
   // Per-shot throughputs: item-buffer triangles and pixels (the shot's whole buffer; overdraw
   // makes the fragments more) and gather texel updates, per second of their pass.
-  say(fmt::format("| scene | elements | shooters/pass | shots | time to {:.0f}% (ms) | ms/shot | item buffer ms | gather ms | "
-                  "select ms | item tris/s | item px/s | gather texels/s |{}\n|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
+  say(fmt::format("| scene | elements | shooter blocks | item res | shooters/pass | shots | time to {:.0f}% (ms) | ms/shot | "
+                  "GPU MiB | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s |{}\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
                   o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
                   o.ceiling ? "---|---|---|" : ""));
   nlohmann::json rows = nlohmann::json::array();
@@ -192,13 +214,16 @@ int runBench(BenchOptions o) {
                                     100 * r.itemPixelsPerSecond / ceiling.fragmentsPerSecond,
                                     100 * r.gatherUpdatesPerSecond / ceiling.invocationsPerSecond)
                       : "";
-        say(fmt::format("| {} | {} | {} | {} | {:.1f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
-                        r.scene, r.elements, r.shootersPerPass, r.shots, r.solveMs, r.msPerShot, r.split.itemBuffer,
+        const std::string memory = r.gpuMemoryMiB ? fmt::format("{:.0f}", *r.gpuMemoryMiB) : "n/a";
+        say(fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
+                        r.scene, r.elements, r.shooterBlocks, r.itemResolution, r.shootersPerPass, r.shots, r.solveMs, r.msPerShot, memory, r.split.itemBuffer,
                         r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
                         r.gatherUpdatesPerSecond, fractions));
-        rows.push_back({{"scene", r.scene}, {"elements", r.elements}, {"shooters_per_pass", r.shootersPerPass},
+        rows.push_back({{"scene", r.scene}, {"elements", r.elements}, {"shooter_blocks", r.shooterBlocks},
+                        {"item_resolution", r.itemResolution}, {"shooters_per_pass", r.shootersPerPass},
                         {"shots", r.shots}, {"convergence", r.convergence}, {"time_to_converge_ms", r.solveMs},
                         {"ms_per_shot", r.msPerShot},
+                        {"gpu_memory_mib", r.gpuMemoryMiB ? nlohmann::json(*r.gpuMemoryMiB) : nlohmann::json()},
                         {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
                                                {"select", r.split.select}, {"readback", r.split.readback}}},
                         {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},

@@ -11,6 +11,7 @@
 #include "src/scene/SceneLoader.h"
 #include "src/solver/Control.h"
 #include "src/solver/Methods.h"
+#include "src/solver/ShootingPlan.h"
 
 namespace hemirad::options {
 
@@ -55,6 +56,11 @@ const CLI::Validator kPixels = CLI::Range(1, 16384);
 
 const CLI::Validator kNone;  // any value the field parses
 
+// "auto" (planned from the scene, src/solver/ShootingPlan.h) or a number in range.
+CLI::Validator autoOr(int autoValue, const CLI::Validator& range) {
+  return CLI::Transformer(std::map<std::string, int>{{"auto", autoValue}}) & (range | CLI::IsMember({autoValue}));
+}
+
 std::vector<Flag> sceneAndSolverFlags() {
   const auto positive = number([](double x) { return x > 0; }, "> 0", "must be a positive number");
   const auto unit = number([](double x) { return x > 0 && x < 1; }, "in (0, 1)", "must be in (0, 1)");
@@ -79,10 +85,12 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--converge", "C", "Stop at this convergence, 1 - unshot/emitted power", unit},
       {"--shots", "N", "Stop after N shots", kCount, "no limit"},
       {"--item-subdiv", "L", "Item-mesh 1-to-4 subdivision level", kLevel},
-      {"--item-res", "PIXELS", "Item buffer resolution in pixels (the pixel budget's side)", CLI::Range(16, 16384)},
+      {"--item-res", "PIXELS|auto", "Item buffer resolution in pixels (the pixel budget's side), or auto: from the element size",
+       autoOr(kAutoItemResolution, CLI::Range(16, 16384))},
       {"--hemisphere", "NAME", "Item buffer: stereographic (seed 003) or hemicube (equal pixel budgets)",
        names({"stereographic", "hemicube"})},
-      {"--shoot-level", "K", "Substructuring: shoot from 2^K x 2^K texel blocks", kLevel},
+      {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
+       "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, kLevel)},
       {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass (at most {})",
                                                kMaxPassShooters),
        CLI::Range(1, int(kMaxPassShooters))},

@@ -1,6 +1,7 @@
 #include "src/output/Renderer.h"
 
 #include "gl/Debug.h"
+#include "gl/ReversedDepth.h"
 #include "gl/Shader.h"
 
 namespace hemirad {
@@ -55,15 +56,12 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   fbo.attach(GL_COLOR_ATTACHMENT0, color);
   fbo.attach(GL_DEPTH_ATTACHMENT, depth);
   fbo.checkComplete("camera");
-  const float black[4] = {0, 0, 0, 1}, one = 1.0f;
+  const float black[4] = {0, 0, 0, 1};
   glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, black);
-  glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
 
-  glm::mat4 vp = CameraMesh::viewProjection(camera, double(width) / height, state_.farDistance);
-  fbo.bind();
+  glm::mat4 vp = mesh_.viewProjection(camera, double(width) / height);
+  gl::ReversedDepth depthPass(fbo);
   glViewport(0, 0, w, h);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   state_.bindScene();

@@ -238,9 +238,13 @@ glm::vec3 Atlas::sample(const std::vector<glm::vec4>& values, int polygon, glm::
 }
 
 std::vector<ShooterBlock> Atlas::shooterBlocks(int level) const {
-  const int b = 1 << level;
+  return shooterBlocks(std::vector<int>(charts.size(), level));
+}
+
+std::vector<ShooterBlock> Atlas::shooterBlocks(const std::vector<int>& polygonLevel) const {
   std::vector<ShooterBlock> blocks;
-  for (const Chart& c : charts)
+  for (const Chart& c : charts) {
+    const int b = 1 << polygonLevel[size_t(c.polygon)];
     for (int j = 0; j < c.size.y; j += b)
       for (int i = 0; i < c.size.x; i += b) {
         glm::ivec4 rect(c.origin.x + i, c.origin.y + j, std::min(b, c.size.x - i), std::min(b, c.size.y - j));
@@ -249,6 +253,7 @@ std::vector<ShooterBlock> Atlas::shooterBlocks(int level) const {
           for (int x = rect.x; x < rect.x + rect.z && !any; ++x) any = polygonOf[size_t(y) * width + x] != kNoPolygon;
         if (any) blocks.push_back({rect});
       }
+  }
   return blocks;
 }
 

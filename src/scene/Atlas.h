@@ -43,6 +43,8 @@ class Atlas {
   // The element cut of texel (x, y) as a polygon in 3D (empty if none). Used by outputs and tests.
   Poly3 elementShape(const Scene& scene, int x, int y) const;
   std::vector<ShooterBlock> shooterBlocks(int level) const;
+  // Blocks of 2^polygonLevel[p] texels a side on polygon p's chart.
+  std::vector<ShooterBlock> shooterBlocks(const std::vector<int>& polygonLevel) const;
   // Bilinear lookup of per-texel `values` at atlas coordinate `coord`, weighing only texels of
   // `polygon` (the CPU twin of shaders/camera.frag).
   glm::vec3 sample(const std::vector<glm::vec4>& values, int polygon, glm::dvec2 coord) const;

@@ -11,9 +11,16 @@
 
 namespace hemirad {
 
-glm::mat4 Camera::viewProjection(double aspect, double near, double far) const {
+glm::mat4 Camera::viewProjection(double aspect, double near) const {
   glm::dmat4 view = glm::lookAt(eye, target, up);
-  glm::dmat4 proj = glm::perspective(glm::radians(fovY), aspect, near, far);
+  // Reversed Z with the far plane at infinity, for [0, 1] clip depth (gl/ReversedDepth.h):
+  // clip z = near and w = -z_eye, so depth = near / -z_eye.
+  const double f = 1.0 / std::tan(glm::radians(fovY) / 2);
+  glm::dmat4 proj(0.0);
+  proj[0][0] = f / aspect;
+  proj[1][1] = f;
+  proj[2][3] = -1.0;
+  proj[3][2] = near;
   return glm::mat4(proj * view);
 }
 

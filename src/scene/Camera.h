@@ -14,7 +14,8 @@ struct Camera {
   glm::dvec3 eye{0, 0, 1}, target{0, 0, 0}, up{0, 1, 0};
   double fovY = 45.0;  // vertical field of view, degrees
   bool operator==(const Camera&) const = default;
-  glm::mat4 viewProjection(double aspect, double near, double far) const;
+  // Reversed-Z view-projection with the far plane at infinity ([0, 1] clip depth, GL_GREATER).
+  glm::mat4 viewProjection(double aspect, double near) const;
 };
 
 // Parses `text` over `base` (keys not given keep base's values); throws InputError naming `what`.

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -15,7 +16,8 @@ struct CameraVertex {
 };
 }  // namespace
 
-CameraMesh::CameraMesh(const Scene& scene, const Atlas& atlas) {
+CameraMesh::CameraMesh(const Scene& scene, const Atlas& atlas)
+    : boundsMin_(scene.boundsMin()), boundsMax_(scene.boundsMax()) {
   std::vector<CameraVertex> verts;
   const auto& polys = scene.polygons();
   for (std::uint32_t id = 0; id < polys.size(); ++id) {
@@ -39,9 +41,12 @@ void CameraMesh::draw() const {
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertexCount_));
 }
 
-glm::mat4 CameraMesh::viewProjection(const Camera& camera, double aspect, double farDistance) {
-  double reach = glm::length(camera.target - camera.eye) + farDistance;
-  return camera.viewProjection(aspect, reach * 1e-5, reach);
+glm::mat4 CameraMesh::viewProjection(const Camera& camera, double aspect) const {
+  // Any point in view is at least (its distance) x cos(half the diagonal field of view) in front
+  // of the eye; half the distance to the bounds allows fields of view up to 120 degrees.
+  const glm::dvec3 outside = glm::max(glm::max(boundsMin_ - camera.eye, camera.eye - boundsMax_), glm::dvec3(0.0));
+  const double near = std::max(0.5 * glm::length(outside), 1e-6 * glm::length(boundsMax_ - boundsMin_));
+  return camera.viewProjection(aspect, near);
 }
 
 }  // namespace hemirad

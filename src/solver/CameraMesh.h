@@ -15,13 +15,16 @@ class CameraMesh {
   CameraMesh(const Scene& scene, const Atlas& atlas);
   // Binds the vertex array and draws every triangle (attributes 0 position, 1 atlas, 2 polygon).
   void draw() const;
-  // A camera's view-projection with near and far planes that hold the whole scene.
-  static glm::mat4 viewProjection(const Camera& camera, double aspect, double farDistance);
+  // A camera's reversed-Z view-projection (gl/ReversedDepth.h) whose near plane lies in front
+  // of the whole scene: half the eye's distance to the scene's bounds, or a millionth of the
+  // scene's size when the eye is inside them.
+  glm::mat4 viewProjection(const Camera& camera, double aspect) const;
 
  private:
   gl::Buffer vertices_;
   gl::VertexArray vao_;
   std::size_t vertexCount_ = 0;
+  glm::dvec3 boundsMin_, boundsMax_;
 };
 
 }  // namespace hemirad

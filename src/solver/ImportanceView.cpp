@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gl/ReversedDepth.h"
 #include "gl/Debug.h"
 #include "gl/Shader.h"
 
@@ -28,31 +29,28 @@ void ImportanceView::look(const Camera& camera, double aspect) {
   gl::Framebuffer fbo;
   fbo.attach(GL_DEPTH_ATTACHMENT, depth);
   fbo.checkComplete("importance view");
-  const float far = 1.0f;
   const GLuint zero = 0;
-  glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far);
   glClearTexImage(pixels_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 
-  glm::mat4 vp = CameraMesh::viewProjection(camera, aspect, state_.farDistance);
-  fbo.bind();
-  glViewport(0, 0, w, h);
-  glEnable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  state_.bindScene();
-  pixels_.bindImage(0, GL_READ_WRITE);
-  view_.set("viewProjection", &vp[0][0]);
-  view_.use();
-  // Depth first, then count the pixels whose nearest surface each fragment is (same program,
-  // so the depths match exactly).
-  glDepthFunc(GL_LESS);
-  view_.set("countPixels", 0);
-  mesh_.draw();
-  glDepthFunc(GL_EQUAL);
-  glDepthMask(GL_FALSE);
-  view_.set("countPixels", 1);
-  mesh_.draw();
-  glDepthMask(GL_TRUE);
-  glDepthFunc(GL_LESS);
+  glm::mat4 vp = mesh_.viewProjection(camera, aspect);
+  {
+    gl::ReversedDepth depthPass(fbo);
+    glViewport(0, 0, w, h);
+    glDisable(GL_CULL_FACE);
+    state_.bindScene();
+    pixels_.bindImage(0, GL_READ_WRITE);
+    view_.set("viewProjection", &vp[0][0]);
+    view_.use();
+    // Depth first, then count the pixels whose nearest surface each fragment is (same program,
+    // so the depths match exactly).
+    view_.set("countPixels", 0);
+    mesh_.draw();
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+    view_.set("countPixels", 1);
+    mesh_.draw();
+    glDepthMask(GL_TRUE);
+  }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
   update_.use();

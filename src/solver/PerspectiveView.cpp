@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "gl/ReversedDepth.h"
 #include "gl/Debug.h"
 #include "gl/Shader.h"
 
@@ -92,22 +93,20 @@ std::vector<std::uint8_t> PerspectiveView::renderSeen() {
   fbo.attach(GL_DEPTH_ATTACHMENT, depth);
   fbo.checkComplete("perspective view");
   const GLuint none[4] = {0xFFFFFFFFu, 0, 0, 0}, zero = 0;
-  const float far = 1.0f;
   glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 0, none);
-  glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far);
   glClearNamedBufferData(seen_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 
   Camera wide = camera_;
   wide.fovY = std::min(simulatedFov(), 179.0);
-  glm::mat4 vp = CameraMesh::viewProjection(wide, aspect_, state_.farDistance);
-  fbo.bind();
-  glViewport(0, 0, w, h);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  ids_.set("viewProjection", &vp[0][0]);
-  ids_.use();
-  mesh_.draw();
+  glm::mat4 vp = mesh_.viewProjection(wide, aspect_);
+  {
+    gl::ReversedDepth depthPass(fbo);
+    glViewport(0, 0, w, h);
+    glDisable(GL_CULL_FACE);
+    ids_.set("viewProjection", &vp[0][0]);
+    ids_.use();
+    mesh_.draw();
+  }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 
   ids.bindImage(0, GL_READ_ONLY);

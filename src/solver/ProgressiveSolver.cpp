@@ -46,7 +46,8 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
 
   // Shooter blocks and the reduction levels above them: each workgroup of a level ranks 1024
   // entries and keeps its best `keep`, until select.comp's one workgroup can rank the rest.
-  std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(settings.shootLevel);
+  plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution);
+  std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(plan_.polygonLevel);
   blockCount_ = blocks.size();
   blocks_ = gl::Buffer(std::span<const ShooterBlock>(blocks));
   unsigned left = unsigned(blockCount_);
@@ -54,7 +55,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
     levels_.emplace_back(gl::groupsFor(left, kGroupEntries) * keep * sizeof(float[4]));
 
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
-  itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, settings.itemResolution,
+  itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, plan_.itemResolution,
                                              state.farDistance, settings.projection,
                                              settings.shootersPerPass * (settings.importanceDriven() ? 2 : 1));
   if (settings.importanceDriven()) view_ = std::make_unique<ImportanceView>(state);

@@ -12,6 +12,7 @@
 #include "src/solver/ImportanceView.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/solver/PerspectiveView.h"
+#include "src/solver/ShootingPlan.h"
 #include "src/solver/Solver.h"
 #include "src/solver/SolverState.h"
 
@@ -19,9 +20,9 @@ namespace hemirad {
 
 struct ProgressiveSettings {
   int itemSubdivision = 3;   // 1-to-4 splits of the item mesh
-  int itemResolution = 512;  // item buffer pixels per side (the pixel budget, for the hemicube too)
+  int itemResolution = 512;  // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
   Projection projection = Projection::Hemisphere;
-  int shootLevel = 1;        // substructuring: shoot from 2^k x 2^k texel blocks
+  int shootLevel = 1;        // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
   // Shooters per pass (1..kMaxPassShooters): the best K blocks shoot at once from the same
   // unshot state, so a pass's fixed costs (reduction, launches, barriers) are shared by K shots.
   // 16: the fastest on the H100 and llvmpipe at 10k elements (docs/bench), 1 % more shots.
@@ -67,6 +68,7 @@ class ProgressiveSolver final : public Solver {
   std::size_t itemTriangles() const { return itemBuffer_->triangles(); }
   std::size_t itemPixels() const { return itemBuffer_->pixelsPerShooter(); }
   std::size_t shooterBlocks() const { return blockCount_; }
+  const ShootingPlan& plan() const { return plan_; }
 
  private:
   void selectPass();
@@ -79,6 +81,7 @@ class ProgressiveSolver final : public Solver {
 
   SolverState& state_;
   ProgressiveSettings settings_;
+  ShootingPlan plan_;
   gl::Program reduce_, select_, gather_;
   gl::Buffer blocks_, control_;
   std::unique_ptr<ItemBuffer> itemBuffer_;

@@ -1,0 +1,46 @@
+#include "src/solver/ShootingPlan.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hemirad {
+
+namespace {
+
+// Shooter block sides as fractions of the scene's largest extent: about 8 x 8 blocks on a wall
+// the size of the scene, 32 x 32 on an emitter that size. A Cornell box then needs ~300 shots
+// to 90 % at any element count (docs/bench).
+constexpr double kShooterSide = 1.0 / 4, kEmitterSide = 1.0 / 16;
+// Item-buffer pixels per element across the scene's extent: a receiver element at the far side
+// of the scene spans ~2 pixels of the item buffer (whose disc diameter covers pi radians at most).
+constexpr double kPixelsPerElement = 4.0;
+constexpr int kMinResolution = 128, kMaxResolution = 1024, kMaxLevel = 8;
+
+int levelFor(double side, double texelSize) {
+  return std::clamp(int(std::floor(std::log2(side / texelSize))), 0, kMaxLevel);
+}
+
+int powerOfTwoAtLeast(double x) {
+  int r = 1;
+  while (r < x && r < kMaxResolution) r *= 2;
+  return r;
+}
+
+}  // namespace
+
+ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel, int itemResolution) {
+  const glm::dvec3 size = scene.boundsMax() - scene.boundsMin();
+  const double extent = std::max({size.x, size.y, size.z});
+  ShootingPlan plan;
+  for (const ScenePolygon& p : scene.polygons()) {
+    const bool emitter = scene.materials[p.material].emissive();
+    plan.polygonLevel.push_back(shootLevel != kAutoShootLevel ? shootLevel
+                                : levelFor(extent * (emitter ? kEmitterSide : kShooterSide), atlas.texelSize));
+  }
+  plan.itemResolution = itemResolution != kAutoItemResolution
+                            ? itemResolution
+                            : std::max(kMinResolution, powerOfTwoAtLeast(kPixelsPerElement * extent / atlas.texelSize));
+  return plan;
+}
+
+}  // namespace hemirad
