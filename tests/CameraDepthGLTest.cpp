@@ -6,7 +6,7 @@
 
 #include "src/output/Renderer.h"
 #include "src/scene/SceneLoader.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

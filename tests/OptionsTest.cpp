@@ -10,7 +10,7 @@
 #include "src/cli/Commands.h"
 #include "src/cli/Options.h"
 #include "src/cli/Suggest.h"
-#include "tests/Support.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 using Catch::Contains;
@@ -83,7 +83,7 @@ TEST_CASE("A mistyped flag or subcommand is one error naming the closest valid o
 }
 
 TEST_CASE("--converge is checked the same in every command that takes it", "[cli][bad-input]") {
-  for (const std::string command : {"solve " + kScene, "view " + kScene, std::string("bench")})
+  for (const std::string& command : {"solve " + kScene, "view " + kScene, std::string("bench")})
     for (const std::string value : {"0", "1", "nan", "x"})
       expectOneError(command + " --converge " + value, "--converge: must be in (0, 1), not '" + value + "'");
 }

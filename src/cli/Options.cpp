@@ -56,9 +56,23 @@ const CLI::Validator kPixels = CLI::Range(1, 16384);
 
 const CLI::Validator kNone;  // any value the field parses
 
-// "auto" (planned from the scene, src/solver/ShootingPlan.h) or a number in range.
-CLI::Validator autoOr(int autoValue, const CLI::Validator& range) {
-  return CLI::Transformer(std::map<std::string, int>{{"auto", autoValue}}) & (range | CLI::IsMember({autoValue}));
+// "auto" (planned from the scene, src/solver/ShootingPlan.h; stored as autoValue) or an integer
+// in [lo, hi].
+CLI::Validator autoOr(int autoValue, int lo, int hi) {
+  const std::string range = fmt::format("{} to {}", lo, hi);
+  return CLI::Validator(
+      [=](std::string& v) {
+        if (v == "auto") {
+          v = std::to_string(autoValue);
+          return std::string();
+        }
+        char* end = nullptr;
+        const long x = std::strtol(v.c_str(), &end, 10);
+        return end != v.c_str() && *end == '\0' && x >= lo && x <= hi
+                   ? std::string()
+                   : fmt::format("must be auto or an integer from {}, not '{}'", range, v);
+      },
+      "auto or " + range);
 }
 
 std::vector<Flag> sceneAndSolverFlags() {
@@ -86,11 +100,11 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--shots", "N", "Stop after N shots", kCount, "no limit"},
       {"--item-subdiv", "L", "Item-mesh 1-to-4 subdivision level", kLevel},
       {"--item-res", "PIXELS|auto", "Item buffer resolution in pixels (the pixel budget's side), or auto: from the element size",
-       autoOr(kAutoItemResolution, CLI::Range(16, 16384))},
+       autoOr(kAutoItemResolution, 16, 16384)},
       {"--hemisphere", "NAME", "Item buffer: stereographic (seed 003) or hemicube (equal pixel budgets)",
        names({"stereographic", "hemicube"})},
       {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
-       "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, kLevel)},
+       "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, 0, 8)},
       {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass (at most {})",
                                                kMaxPassShooters),
        CLI::Range(1, int(kMaxPassShooters))},

@@ -7,11 +7,15 @@
 #include <CLI/CLI.hpp>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace hemirad::options {
 
 struct Flag {
+  Flag(std::string name, std::string value, std::string help, CLI::Validator check, std::string defaultText = {})
+      : name(std::move(name)), value(std::move(value)), help(std::move(help)), check(std::move(check)),
+        defaultText(std::move(defaultText)) {}
   std::string name;         // "--texel-size"
   std::string value;        // what it takes, "SIZE"; empty for a switch
   std::string help;
