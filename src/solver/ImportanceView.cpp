@@ -5,6 +5,7 @@
 
 #include "gl/Debug.h"
 #include "gl/Shader.h"
+#include "gl/State.h"
 
 namespace hemirad {
 
@@ -16,9 +17,8 @@ ImportanceView::ImportanceView(SolverState& state, int resolution)
       update_(gl::computeProgram("importance_update.comp")),
       pixels_(GL_R32UI, state.atlas.width, state.atlas.height),
       direct_(GL_R32F, state.atlas.width, state.atlas.height) {
-  const float zero = 0.0f;
-  glClearTexImage(direct_.id(), 0, GL_RED, GL_FLOAT, &zero);
-  glProgramUniform2i(update_.id(), update_.location("atlasSize"), state.atlas.width, state.atlas.height);
+  direct_.clear(0.0f);
+  update_.set("atlasSize", state.atlas.width, state.atlas.height);
 }
 
 void ImportanceView::look(const Camera& camera, double aspect) {
@@ -28,32 +28,24 @@ void ImportanceView::look(const Camera& camera, double aspect) {
   gl::Framebuffer fbo;
   fbo.attach(GL_DEPTH_ATTACHMENT, depth);
   fbo.checkComplete("importance view");
-  const float far = 1.0f;
-  const GLuint zero = 0;
-  glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far);
-  glClearTexImage(pixels_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  fbo.clearDepth(1.0f);
+  pixels_.clear(0u);
 
   glm::mat4 vp = CameraMesh::viewProjection(camera, aspect, state_.farDistance);
   fbo.bind();
-  glViewport(0, 0, w, h);
-  glEnable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
   state_.bindScene();
   pixels_.bindImage(0, GL_READ_WRITE);
   view_.set("viewProjection", &vp[0][0]);
   view_.use();
   // Depth first, then count the pixels whose nearest surface each fragment is (same program,
   // so the depths match exactly).
-  glDepthFunc(GL_LESS);
+  gl::RasterState{.width = w, .height = h}.apply();
   view_.set("countPixels", 0);
   mesh_.draw();
-  glDepthFunc(GL_EQUAL);
-  glDepthMask(GL_FALSE);
+  gl::RasterState{.width = w, .height = h, .depthFunc = gl::DepthFunc::Equal, .depthWrite = false}.apply();
   view_.set("countPixels", 1);
   mesh_.draw();
-  glDepthMask(GL_TRUE);
-  glDepthFunc(GL_LESS);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  gl::barrier(gl::Barrier::Image);
 
   update_.use();
   update_.set("viewPixels", float(w) * float(h));
@@ -62,7 +54,7 @@ void ImportanceView::look(const Camera& camera, double aspect) {
   pixels_.bindImage(2, GL_READ_ONLY);
   direct_.bindImage(3, GL_READ_WRITE);
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16), gl::groupsFor(unsigned(state_.atlas.height), 16));
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch | gl::Barrier::Storage);
   gl::checkErrors("importance view");
 }
 

@@ -9,6 +9,7 @@
 
 #include "gl/Debug.h"
 #include "gl/Shader.h"
+#include "gl/State.h"
 #include "src/solver/Control.h"
 #include "src/base/Error.h"
 
@@ -23,8 +24,7 @@ constexpr unsigned kTimingStride = 16;  // with GPU stamps, one pass in 16 is ti
 
 enum Slot { kSelect, kItemBuffer, kGather };
 
-constexpr GLbitfield kAllBarriers =
-    GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
+constexpr gl::Barrier kAllBarriers = gl::Barrier::Storage | gl::Barrier::Image | gl::Barrier::TextureFetch;
 
 // A quarter of the blocks: solves reach 90 % in about half as many shots as there are blocks,
 // so the view opens up over the first third or so of that, as the thesis's 10 s of ~30 s did.
@@ -93,7 +93,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   reduce_.set("importanceFloor", floor);
   select_.set("importanceFloor", floor);
   select_.set("importanceThreshold", 1e-6f);
-  glProgramUniform2i(gather_.id(), gather_.location("atlasSize"), state.atlas.width, state.atlas.height);
+  gather_.set("atlasSize", state.atlas.width, state.atlas.height);
   gl::checkErrors("progressive solver setup");
 }
 
@@ -160,7 +160,7 @@ void ProgressiveSolver::rankPass(unsigned rankBy, bool importanceShooters) {
     reduce_.set("count", n);
     reduce_.set("fromBlocks", int(fromBlocks));
     gl::Program::dispatch(gl::groupsFor(n, kGroupEntries));
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gl::barrier(gl::Barrier::Storage);
     level.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
     n = gl::groupsFor(n, kGroupEntries) * unsigned(settings_.shootersPerPass);
     fromBlocks = false;
@@ -169,7 +169,7 @@ void ProgressiveSolver::rankPass(unsigned rankBy, bool importanceShooters) {
   select_.set("rankBy", rankBy);
   select_.set("importanceShooters", int(importanceShooters));
   gl::Program::dispatch(1);
-  glMemoryBarrier(kAllBarriers);
+  gl::barrier(kAllBarriers);
 }
 
 void ProgressiveSolver::gatherPass(unsigned viewMode) {
@@ -185,7 +185,7 @@ void ProgressiveSolver::gatherPass(unsigned viewMode) {
   gather_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
                         gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));
-  glMemoryBarrier(kAllBarriers);
+  gl::barrier(kAllBarriers);
 }
 
 SolveStatus ProgressiveSolver::advance(unsigned shots) {
