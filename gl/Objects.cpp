@@ -61,7 +61,9 @@ void Buffer::read(std::size_t offset, std::size_t bytes, void* out) const {
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id_); }
 void Buffer::bind(GLenum target) const { glBindBuffer(target, id_); }
 void Buffer::clear(float value) { glClearNamedBufferData(id_, GL_R32F, GL_RED, GL_FLOAT, &value); }
-void Buffer::clear(std::uint32_t value) { glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value); }
+void Buffer::clear(std::uint32_t value) {
+  glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
+}
 void Buffer::copyTo(Buffer& destination, std::size_t from, std::size_t to, std::size_t bytes) const {
   glCopyNamedBufferSubData(id_, destination.id_, static_cast<GLintptr>(from), static_cast<GLintptr>(to),
                            static_cast<GLsizeiptr>(bytes));

@@ -11,7 +11,7 @@
 namespace hemirad {
 
 Projection parseProjection(const std::string& name) {
-  if (name == "stereographic" || name == "hemisphere") return Projection::Hemisphere;
+  if (name == "stereographic" || name == "hemisphere") return Projection::Stereographic;
   if (name == "hemicube") return Projection::Hemicube;
   throw InputError("--hemisphere must be stereographic or hemicube, not '" + name + "'");
 }
