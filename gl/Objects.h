@@ -28,7 +28,6 @@ class Handle {
   }
   GLuint id() const { return id_; }
   explicit operator bool() const { return id_ != 0; }
-  GLuint release() { return std::exchange(id_, 0); }  // for interop: the caller owns the name
 
  protected:
   void reset() {

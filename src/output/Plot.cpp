@@ -39,10 +39,7 @@ std::vector<double> ticks(double lo, double hi, int count) {
   return t;
 }
 
-std::string label(double v) {
-  std::string s = fmt::format("{:.6g}", v);
-  return s;
-}
+std::string label(double v) { return fmt::format("{:.6g}", v); }
 
 // Series: 2-pixel lines, square markers, legend top right (x1, y0: the plot area's corner).
 template <class Px, class Py>

@@ -33,9 +33,6 @@ class ItemBuffer {
   // Binds the id and depth targets to texture units 2 and 3.
   void bindForLookup() const;
   std::size_t triangles() const { return vertexCount_ / 3; }
-  std::size_t vertexCount() const { return vertexCount_; }
-  int faceResolution() const { return faceResolution_; }
-  int shooters() const { return shooters_; }
   // Pixels one shooter's item buffer covers (all its faces): the fill work of a shot.
   std::size_t pixelsPerShooter() const { return std::size_t(faces_) * faceResolution_ * faceResolution_; }
 
