@@ -73,6 +73,18 @@ void enableDebugOutput() {
   glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
 }
 
+void disableDebugOutput() {
+  if (glDebugMessageCallback) glDebugMessageCallback(nullptr, nullptr);
+  glDisable(GL_DEBUG_OUTPUT);
+}
+
+void insertDebugMessage(unsigned id, bool marker, const char* text) {
+  glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, marker ? GL_DEBUG_TYPE_MARKER : GL_DEBUG_TYPE_OTHER, id,
+                       marker ? GL_DEBUG_SEVERITY_NOTIFICATION : GL_DEBUG_SEVERITY_LOW, -1, text);
+}
+
+unsigned takeError() { return glGetError(); }
+
 std::string takeDebugError() { return std::exchange(firstError, std::string()); }
 
 void checkErrors(std::string_view where) {

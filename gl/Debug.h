@@ -11,6 +11,13 @@ void enableDebugOutput();
 void checkErrors(std::string_view where);
 // The first KHR_debug API error message since the last call (empty if none, or debug output is off).
 std::string takeDebugError();
+// Turns the output enableDebugOutput turned on off again.
+void disableDebugOutput();
+// A message of the application's own through KHR_debug: low severity of type other, or a
+// notification of type marker (tests of the output).
+void insertDebugMessage(unsigned id, bool marker, const char* text);
+// glGetError's pending code (0: none), which it clears.
+unsigned takeError();
 // GL_INVALID_ENUM and friends by name.
 const char* errorName(unsigned error);
 }  // namespace hemirad::gl

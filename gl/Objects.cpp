@@ -60,6 +60,14 @@ void Buffer::read(std::size_t offset, std::size_t bytes, void* out) const {
 }
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id_); }
 void Buffer::bind(GLenum target) const { glBindBuffer(target, id_); }
+void Buffer::clear(float value) { glClearNamedBufferData(id_, GL_R32F, GL_RED, GL_FLOAT, &value); }
+void Buffer::clear(std::uint32_t value) {
+  glClearNamedBufferData(id_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
+}
+void Buffer::copyTo(Buffer& destination, std::size_t from, std::size_t to, std::size_t bytes) const {
+  glCopyNamedBufferSubData(id_, destination.id_, static_cast<GLintptr>(from), static_cast<GLintptr>(to),
+                           static_cast<GLsizeiptr>(bytes));
+}
 
 // ---- Texture
 Texture::Texture(GLenum internalFormat, int width, int height, int layers)
@@ -91,6 +99,8 @@ void Texture::bindUnit(GLuint unit) const { glBindTextureUnit(unit, id_); }
 void Texture::bindImage(GLuint unit, GLenum access) const {
   glBindImageTexture(unit, id_, 0, GL_FALSE, 0, access, format_);
 }
+void Texture::clear(float value) { glClearTexImage(id_, 0, GL_RED, GL_FLOAT, &value); }
+void Texture::clear(std::uint32_t value) { glClearTexImage(id_, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &value); }
 
 // ---- Framebuffer
 Framebuffer::Framebuffer() { glCreateFramebuffers(1, &id_); }
@@ -102,6 +112,18 @@ void Framebuffer::checkComplete(const char* what) const {
   if (status != GL_FRAMEBUFFER_COMPLETE) throw Error(fmt::format("{} framebuffer incomplete (0x{:04x})", what, status));
 }
 void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id_); }
+void Framebuffer::clearColor(float r, float g, float b, float a) {
+  const float v[4] = {r, g, b, a};
+  glClearNamedFramebufferfv(id_, GL_COLOR, 0, v);
+}
+void Framebuffer::clearColor(std::uint32_t value) {
+  const GLuint v[4] = {value, 0, 0, 0};
+  glClearNamedFramebufferuiv(id_, GL_COLOR, 0, v);
+}
+void Framebuffer::clearDepth(float depth) {
+  glDepthMask(GL_TRUE);  // clears honour the depth mask, which a depth-equal pass may have left off
+  glClearNamedFramebufferfv(id_, GL_DEPTH, 0, &depth);
+}
 
 // ---- VertexArray
 VertexArray::VertexArray() { glCreateVertexArrays(1, &id_); }
@@ -136,6 +158,13 @@ void Program::set(const char* uniform, unsigned v) const { glProgramUniform1ui(i
 void Program::set(const char* uniform, float v) const { glProgramUniform1f(id_, location(uniform), v); }
 void Program::set(const char* uniform, const float* mat4) const {
   glProgramUniformMatrix4fv(id_, location(uniform), 1, GL_FALSE, mat4);
+}
+void Program::set(const char* uniform, int x, int y) const { glProgramUniform2i(id_, location(uniform), x, y); }
+void Program::set(const char* uniform, float x, float y, float z) const {
+  glProgramUniform3f(id_, location(uniform), x, y, z);
+}
+void Program::set(const char* uniform, std::span<const unsigned> values) const {
+  glProgramUniform1uiv(id_, location(uniform), GLsizei(values.size()), values.data());
 }
 void Program::dispatch(unsigned x, unsigned y, unsigned z) { glDispatchCompute(x, y, z); }
 

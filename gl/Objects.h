@@ -28,7 +28,6 @@ class Handle {
   }
   GLuint id() const { return id_; }
   explicit operator bool() const { return id_ != 0; }
-  GLuint release() { return std::exchange(id_, 0); }  // for interop: the caller owns the name
 
  protected:
   void reset() {
@@ -57,6 +56,9 @@ class Buffer : public Handle<deleteBuffer> {
   void read(std::size_t offset, std::size_t bytes, void* out) const;
   void bindBase(GLenum target, GLuint index) const;  // SSBO / UBO binding point
   void bind(GLenum target) const;                    // e.g. GL_DISPATCH_INDIRECT_BUFFER
+  void clear(float value);          // every 32-bit word
+  void clear(std::uint32_t value);
+  void copyTo(Buffer& destination, std::size_t from, std::size_t to, std::size_t bytes) const;
 
  private:
   std::size_t size_ = 0;
@@ -75,6 +77,8 @@ class Texture : public Handle<deleteTexture> {
   void read(GLenum format, GLenum type, std::size_t bytes, void* out) const;
   void bindUnit(GLuint unit) const;
   void bindImage(GLuint unit, GLenum access) const;
+  void clear(float value);          // a GL_R32F texture
+  void clear(std::uint32_t value);  // a GL_R32UI texture
 
  private:
   int width_ = 0, height_ = 0, layers_ = 0;
@@ -86,6 +90,10 @@ class Framebuffer : public Handle<deleteFramebuffer> {
   Framebuffer();
   void attach(GLenum attachment, const Texture& texture);
   void checkComplete(const char* what) const;  // throws gl::Error
+  // Colour attachment 0 (every layer of a layered one), and the depth attachment.
+  void clearColor(float r, float g, float b, float a);
+  void clearColor(std::uint32_t value);  // an integer attachment: (value, 0, 0, 0)
+  void clearDepth(float depth);
   void bind() const;
 };
 
@@ -116,6 +124,9 @@ class Program : public Handle<deleteProgram> {
   void set(const char* uniform, unsigned v) const;
   void set(const char* uniform, float v) const;
   void set(const char* uniform, const float* mat4) const;
+  void set(const char* uniform, int x, int y) const;              // ivec2
+  void set(const char* uniform, float x, float y, float z) const;  // vec3
+  void set(const char* uniform, std::span<const unsigned> values) const;  // uint[]
   // Compute dispatch helpers (the program must be in use).
   static void dispatch(unsigned x, unsigned y = 1, unsigned z = 1);
 };

@@ -6,7 +6,8 @@
 
 #include "cpu/Hemisphere.h"
 #include "gl/Shader.h"
-#include "tests/support/Support.h"
+#include "gl/State.h"
+#include "tests/Support.h"
 
 using namespace hemirad;
 
@@ -44,11 +45,11 @@ TEST_CASE("GLSL hemisphere maths equals its C++ mirror", "[gl]") {
   gl::Buffer inBuf{std::span<const glm::vec4>(in)}, outBuf{in.size() * sizeof(glm::vec4)};
   inBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
   outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  glProgramUniform3f(p.id(), p.location("normal"), n.x, n.y, n.z);
-  glProgramUniform3f(p.id(), p.location("origin"), origin.x, origin.y, origin.z);
+  p.set("normal", n.x, n.y, n.z);
+  p.set("origin", origin.x, origin.y, origin.z);
   p.use();
   gl::Program::dispatch(unsigned(in.size()));
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl::barrier(gl::Barrier::BufferUpdate);
   std::vector<glm::vec4> out(in.size());
   outBuf.read(0, out.size() * sizeof(glm::vec4), out.data());
   for (size_t i = 0; i < in.size(); ++i) {

@@ -41,11 +41,7 @@ double msSince(Clock::time_point t0) { return std::chrono::duration<double, std:
 double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveStatus& status) {
   backend.finish();
   auto t0 = Clock::now();
-  for (unsigned batch = 1; !status.done;) {
-    auto b0 = Clock::now();
-    status = solver.advance(batch);
-    batch = nextBatch(batch, msSince(b0) * 1e-3);
-  }
+  status = advanceToStop(solver, status);
   backend.finish();
   return msSince(t0);
 }
@@ -168,6 +164,49 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   options::addSwitch(cmd, "--ceiling", o.ceiling);
 }
 
+namespace {
+
+// Per-shot throughputs: item-buffer triangles and pixels (the shot's whole buffer; overdraw
+// makes the fragments more) and gather texel updates, per second of their pass.
+std::string tableHeader(const BenchOptions& o) {
+  return fmt::format("| scene | elements | shooter blocks | item res | shooters/pass | shots | time to {:.0f}% (ms) | ms/shot | "
+                     "GPU MiB | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s |{}\n"
+                     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
+                     o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
+                     o.ceiling ? "---|---|---|" : "");
+}
+
+// A row of the table, with the fractions of the ceilings when they were measured.
+std::string rowMarkdown(const BenchRow& r, const Ceilings* ceiling) {
+  std::string fractions =
+      ceiling ? fmt::format(" {:.1f} % | {:.1f} % | {:.1f} % |", 100 * r.itemTrianglesPerSecond / ceiling->trianglesPerSecond,
+                            100 * r.itemPixelsPerSecond / ceiling->fragmentsPerSecond,
+                            100 * r.gatherUpdatesPerSecond / ceiling->invocationsPerSecond)
+              : "";
+  const std::string memory = r.gpuMemoryMiB ? fmt::format("{:.0f}", *r.gpuMemoryMiB) : "n/a";
+  return fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
+                     r.scene, r.elements, r.shooterBlocks, r.itemResolution, r.shootersPerPass, r.shots, r.solveMs,
+                     r.msPerShot, memory, r.split.itemBuffer,
+                     r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
+                     r.gatherUpdatesPerSecond, fractions);
+}
+
+nlohmann::json rowJson(const BenchRow& r) {
+  return {{"scene", r.scene}, {"elements", r.elements}, {"shooter_blocks", r.shooterBlocks},
+          {"item_resolution", r.itemResolution}, {"shooters_per_pass", r.shootersPerPass},
+          {"shots", r.shots}, {"convergence", r.convergence}, {"time_to_converge_ms", r.solveMs},
+          {"ms_per_shot", r.msPerShot},
+          {"gpu_memory_mib", r.gpuMemoryMiB ? nlohmann::json(*r.gpuMemoryMiB) : nlohmann::json()},
+          {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
+                                 {"select", r.split.select}, {"readback", r.split.readback}}},
+          {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},
+          {"item_pixels", r.itemPixels}, {"item_pixels_per_s", r.itemPixelsPerSecond},
+          {"gather_texel_updates_per_s", r.gatherUpdatesPerSecond},
+          {"radiosity_hash", fmt::format("{:016x}", r.hash)}, {"objects", objectsJson(r.objects)}};
+}
+
+}  // namespace
+
 int runBench(BenchOptions o) {
   if (!o.json.empty()) checkWritable(o.json, "--json");
   if (!o.markdown.empty()) checkWritable(o.markdown, "--markdown");
@@ -193,13 +232,7 @@ int runBench(BenchOptions o) {
                     "mesh L6), {:.3g} item-buffer fragments/s (fill)\n\n",
                     ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.fragmentsPerSecond));
   }
-  // Per-shot throughputs: item-buffer triangles and pixels (the shot's whole buffer; overdraw
-  // makes the fragments more) and gather texel updates, per second of their pass.
-  say(fmt::format("| scene | elements | shooter blocks | item res | shooters/pass | shots | time to {:.0f}% (ms) | ms/shot | "
-                  "GPU MiB | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s |{}\n"
-                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
-                  o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
-                  o.ceiling ? "---|---|---|" : ""));
+  say(tableHeader(o));
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& path : o.scenes) {
     Scene scene = loadScene(path);
@@ -209,27 +242,8 @@ int runBench(BenchOptions o) {
       for (int k : o.shootersPerPass) {
         BenchRow r = benchOne(*backend, scene, atlas, k, o);
         r.scene = path;
-        std::string fractions =
-            o.ceiling ? fmt::format(" {:.1f} % | {:.1f} % | {:.1f} % |", 100 * r.itemTrianglesPerSecond / ceiling.trianglesPerSecond,
-                                    100 * r.itemPixelsPerSecond / ceiling.fragmentsPerSecond,
-                                    100 * r.gatherUpdatesPerSecond / ceiling.invocationsPerSecond)
-                      : "";
-        const std::string memory = r.gpuMemoryMiB ? fmt::format("{:.0f}", *r.gpuMemoryMiB) : "n/a";
-        say(fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
-                        r.scene, r.elements, r.shooterBlocks, r.itemResolution, r.shootersPerPass, r.shots, r.solveMs, r.msPerShot, memory, r.split.itemBuffer,
-                        r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
-                        r.gatherUpdatesPerSecond, fractions));
-        rows.push_back({{"scene", r.scene}, {"elements", r.elements}, {"shooter_blocks", r.shooterBlocks},
-                        {"item_resolution", r.itemResolution}, {"shooters_per_pass", r.shootersPerPass},
-                        {"shots", r.shots}, {"convergence", r.convergence}, {"time_to_converge_ms", r.solveMs},
-                        {"ms_per_shot", r.msPerShot},
-                        {"gpu_memory_mib", r.gpuMemoryMiB ? nlohmann::json(*r.gpuMemoryMiB) : nlohmann::json()},
-                        {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
-                                               {"select", r.split.select}, {"readback", r.split.readback}}},
-                        {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},
-                        {"item_pixels", r.itemPixels}, {"item_pixels_per_s", r.itemPixelsPerSecond},
-                        {"gather_texel_updates_per_s", r.gatherUpdatesPerSecond},
-                        {"radiosity_hash", fmt::format("{:016x}", r.hash)}, {"objects", objectsJson(r.objects)}});
+        say(rowMarkdown(r, o.ceiling ? &ceiling : nullptr));
+        rows.push_back(rowJson(r));
       }
     }
   }

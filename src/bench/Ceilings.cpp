@@ -6,6 +6,7 @@
 
 #include "gl/Objects.h"
 #include "gl/Shader.h"
+#include "gl/State.h"
 #include "src/solver/Control.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/scene/SceneLoader.h"
@@ -42,7 +43,7 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
     c.invocationsPerSecond = 10.0 * side * side / bestSeconds(backend, [&] {
       for (int k = 0; k < 10; ++k) {
         gl::Program::dispatch(side / 16, side / 16);
-        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        gl::barrier(gl::Barrier::Image);
       }
     });
   }
@@ -58,15 +59,12 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
     fill.set("instances", layers);
     gl::VertexArray empty;
     c.fragmentsPerSecond = double(layers) * fillSide * fillSide / bestSeconds(backend, [&] {
-      const float far = 1.0f;
-      glClearNamedFramebufferfv(target.id(), GL_DEPTH, 0, &far);
+      target.clearDepth(1.0f);
       target.bind();
-      glViewport(0, 0, fillSide, fillSide);
-      glEnable(GL_DEPTH_TEST);
-      glDepthFunc(GL_LESS);
+      gl::RasterState{.width = fillSide, .height = fillSide}.apply();
       fill.use();
       empty.bind();
-      glDrawArraysInstanced(GL_TRIANGLES, 0, 3, layers);
+      gl::drawTriangles(3, layers);
     });
   }
   // Triangles: the item mesh at L6 from the scene's top, 10 times.

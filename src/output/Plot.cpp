@@ -39,9 +39,27 @@ std::vector<double> ticks(double lo, double hi, int count) {
   return t;
 }
 
-std::string label(double v) {
-  std::string s = fmt::format("{:.6g}", v);
-  return s;
+std::string label(double v) { return fmt::format("{:.6g}", v); }
+
+// Series: 2-pixel lines, square markers, legend top right (x1, y0: the plot area's corner).
+template <class Px, class Py>
+void drawSeries(OIIO::ImageBuf& img, const std::vector<PlotSeries>& series, const Px& px, const Py& py, int x1, int y0,
+                const std::string& font) {
+  const float black[3] = {0, 0, 0};
+  for (size_t k = 0; k < series.size(); ++k) {
+    OIIO::cspan<float> c(kPalette[k % 8], 3);
+    const PlotSeries& s = series[k];
+    for (size_t i = 0; i < s.x.size(); ++i) {
+      int ax = px(s.x[i]), ay = py(s.y[i]);
+      OIIO::ImageBufAlgo::render_box(img, ax - 4, ay - 4, ax + 4, ay + 4, c, true);
+      if (i + 1 < s.x.size())
+        for (int d = -1; d <= 1; ++d)
+          OIIO::ImageBufAlgo::render_line(img, ax, ay + d, px(s.x[i + 1]), py(s.y[i + 1]) + d, c);
+    }
+    int ly = y0 + 24 + int(k) * 26;
+    OIIO::ImageBufAlgo::render_box(img, x1 - 300, ly - 12, x1 - 280, ly + 2, c, true);
+    OIIO::ImageBufAlgo::render_text(img, x1 - 270, ly + 2, s.label, 18, font, black);
+  }
 }
 
 }  // namespace
@@ -91,21 +109,7 @@ void writeLinePlot(const std::string& path, const PlotSpec& spec, const std::vec
                                   font, black);
   OIIO::ImageBufAlgo::render_text(img, 10, y0 - 14, spec.yLabel, 18, font, black);
 
-  // Series: 2-pixel lines, square markers, legend top right.
-  for (size_t k = 0; k < series.size(); ++k) {
-    OIIO::cspan<float> c(kPalette[k % 8], 3);
-    const PlotSeries& s = series[k];
-    for (size_t i = 0; i < s.x.size(); ++i) {
-      int ax = px(s.x[i]), ay = py(s.y[i]);
-      OIIO::ImageBufAlgo::render_box(img, ax - 4, ay - 4, ax + 4, ay + 4, c, true);
-      if (i + 1 < s.x.size())
-        for (int d = -1; d <= 1; ++d)
-          OIIO::ImageBufAlgo::render_line(img, ax, ay + d, px(s.x[i + 1]), py(s.y[i + 1]) + d, c);
-    }
-    int ly = y0 + 24 + int(k) * 26;
-    OIIO::ImageBufAlgo::render_box(img, x1 - 300, ly - 12, x1 - 280, ly + 2, c, true);
-    OIIO::ImageBufAlgo::render_text(img, x1 - 270, ly + 2, s.label, 18, font, black);
-  }
+  drawSeries(img, series, px, py, x1, y0, font);
   writeAtomically(path, [&](const std::string& tmp) {
     if (!img.write(tmp, OIIO::TypeDesc::UINT8)) fail("{}: cannot write: {}", path, img.geterror());
   });

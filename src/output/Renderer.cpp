@@ -1,8 +1,8 @@
 #include "src/output/Renderer.h"
 
 #include "gl/Debug.h"
-#include "gl/ReversedDepth.h"
 #include "gl/Shader.h"
+#include "gl/State.h"
 
 namespace hemirad {
 
@@ -24,18 +24,18 @@ Renderer::Renderer(const SolverState& state)
   }
   const glm::dvec3 rhoAvg = area > 0 ? rhoArea / area : glm::dvec3(0.0);
   const glm::vec3 interreflection(1.0 / (1.0 - glm::min(rhoAvg, glm::dvec3(0.999))));
-  glProgramUniform3fv(ambientProgram_.id(), ambientProgram_.location("interreflection"), 1, &interreflection[0]);
+  ambientProgram_.set("interreflection", interreflection.x, interreflection.y, interreflection.z);
   ambientProgram_.set("totalArea", float(area));
 }
 
 void Renderer::updateAmbient() {
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch);
   state_.bindScene();
   state_.deltaB.bindImage(1, GL_READ_ONLY);
   ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
   ambientProgram_.use();
   gl::Program::dispatch(1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl::barrier(gl::Barrier::Storage | gl::Barrier::BufferUpdate);
 }
 
 glm::vec3 Renderer::ambientTerm() {
@@ -56,14 +56,13 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   fbo.attach(GL_COLOR_ATTACHMENT0, color);
   fbo.attach(GL_DEPTH_ATTACHMENT, depth);
   fbo.checkComplete("camera");
-  const float black[4] = {0, 0, 0, 1};
-  glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, black);
+  fbo.clearColor(0, 0, 0, 1);
+  fbo.clearDepth(0.0f);  // reversed depth: 0 is infinitely far
 
   glm::mat4 vp = mesh_.viewProjection(camera, double(width) / height);
-  gl::ReversedDepth depthPass(fbo);
-  glViewport(0, 0, w, h);
-  glDisable(GL_CULL_FACE);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  fbo.bind();
+  gl::cameraView(w, h).apply();
+  gl::barrier(gl::Barrier::TextureFetch);
   state_.bindScene();
   atlasValues.bindUnit(2);
   const bool ambient = ambient_ && &atlasValues == &state_.radiosity;

@@ -13,7 +13,7 @@ namespace hemirad {
 
 glm::mat4 Camera::viewProjection(double aspect, double near) const {
   glm::dmat4 view = glm::lookAt(eye, target, up);
-  // Reversed Z with the far plane at infinity, for [0, 1] clip depth (gl/ReversedDepth.h):
+  // Reversed Z with the far plane at infinity, for [0, 1] clip depth (gl/State.h, DepthRange::Reversed):
   // clip z = near and w = -z_eye, so depth = near / -z_eye.
   const double f = 1.0 / std::tan(glm::radians(fovY) / 2);
   glm::dmat4 proj(0.0);

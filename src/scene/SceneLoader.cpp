@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -179,21 +180,11 @@ Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, co
   return out;
 }
 
-}  // namespace
-
-Scene loadScene(const std::string& path, const LoadOptions& options) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(path, ec)) fail("{}: no such file", path);
-  if (!fs::is_regular_file(path, ec)) fail("{}: is not a readable file (a folder?)", path);
-  if (!std::ifstream(path)) fail("{}: cannot be read", path);
-  ObjLines lines = scanLines(path);
-  const MtlLines mtl = scanMaterialLines(path, lines);
-
+// tinyobjloader's parse; a material library it cannot find is named with its mtllib line.
+void readObj(tinyobj::ObjReader& reader, const std::string& path, const ObjLines& lines) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // polygons keep their planarity
   config.vertex_color = false;
-  tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config)) {
     std::string err = reader.Error();
     fail("{}: {}", path, trim(err.substr(0, err.find('\n'))));
@@ -204,10 +195,11 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
     std::string name = lines.mtllib.empty() ? "" : lines.mtllib.front().first;
     fail("{}:{}: material library '{}' not found next to the OBJ", path, line, name);
   }
-  scanMaterialNumbers(path, lines);
+}
 
-  Scene scene;
-  scene.path = path;
+// The MTL's materials, each defined once, and every usemtl naming one of them.
+void addMaterials(Scene& scene, const tinyobj::ObjReader& reader, const LoadOptions& options, const MtlLines& mtl,
+                  const ObjLines& lines, const std::string& path) {
   std::map<std::string, int> materialIds;
   for (const auto& m : reader.GetMaterials()) {
     if (materialIds.count(m.name)) {
@@ -220,59 +212,87 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
   }
   for (const auto& [name, line] : lines.usemtl)
     if (!materialIds.count(name)) fail("{}:{}: unknown material '{}' (not in the MTL file)", path, line, name);
+}
 
-  int defaultMaterial = -1;
-  const auto& attrib = reader.GetAttrib();
+using FaceSite = std::function<std::string()>;  // "file:line" of the face being read
+
+// A face's `n` vertices from `offset`, without consecutive repeats or a closing repeat.
+Poly3 facePolygon(const tinyobj::attrib_t& attrib, const tinyobj::mesh_t& mesh, size_t offset, size_t n,
+                  const FaceSite& where) {
   const size_t vertexCount = attrib.vertices.size() / 3;
+  Poly3 poly;
+  for (size_t k = 0; k < n; ++k) {
+    int vi = mesh.indices[offset + k].vertex_index;
+    if (vi < 0 || size_t(vi) >= vertexCount)
+      fail("{}: face refers to vertex {} but the file has {} vertices", where(), vi + 1, vertexCount);
+    glm::dvec3 p(attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]);
+    if (poly.empty() || p != poly.back()) poly.push_back(p);
+  }
+  while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
+  return poly;
+}
+
+// A face as scene polygons: none if degenerate, triangles if non-planar or non-convex.
+void addFace(Scene& scene, const Poly3& poly, int material, int object, const FaceSite& where) {
+  double size = 0;
+  for (auto& v : poly) size = std::max(size, glm::length(v - poly.front()));
+  glm::dvec3 normal = poly.size() >= 3 ? newellNormal(poly) : glm::dvec3(0.0);
+  if (poly.size() < 3 || !(glm::length(normal) > 1e-12 * size * size)) {
+    scene.warnings.push_back(fmt::format("{}: degenerate face with zero area skipped", where()));
+    return;
+  }
+  bool planar = planarityError(poly) <= kPlanarTolerance * size;
+  if (planar && isConvex(poly, normal)) {
+    scene.addPolygon(poly, material, object);
+    return;
+  }
+  scene.warnings.push_back(
+      fmt::format("{}: {} polygon split into triangles", where(), planar ? "non-convex" : "non-planar"));
+  std::vector<int> tris = triangulate(poly, normal);
+  for (size_t t = 0; t < tris.size(); t += 3)
+    scene.addPolygon({poly[tris[t]], poly[tris[t + 1]], poly[tris[t + 2]]}, material, object);
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& path, const LoadOptions& options) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) fail("{}: no such file", path);
+  if (!fs::is_regular_file(path, ec)) fail("{}: is not a readable file (a folder?)", path);
+  if (!std::ifstream(path)) fail("{}: cannot be read", path);
+  ObjLines lines = scanLines(path);
+  const MtlLines mtl = scanMaterialLines(path, lines);
+  tinyobj::ObjReader reader;
+  readObj(reader, path, lines);
+  scanMaterialNumbers(path, lines);
+
+  Scene scene;
+  scene.path = path;
+  addMaterials(scene, reader, options, mtl, lines, path);
+  int defaultMaterial = -1;
   size_t faceNo = 0, totalFaces = 0;
   for (const auto& shape : reader.GetShapes()) totalFaces += shape.mesh.num_face_vertices.size();
   const bool haveLines = totalFaces == lines.faces.size();
-  auto where = [&](size_t face) {
-    return haveLines ? fmt::format("{}:{}", path, lines.faces[face]) : fmt::format("{}: face {}", path, face + 1);
+  const FaceSite where = [&] {
+    return haveLines ? fmt::format("{}:{}", path, lines.faces[faceNo]) : fmt::format("{}: face {}", path, faceNo + 1);
   };
-
   for (const auto& shape : reader.GetShapes()) {
     int object = scene.addObject(shape.name.empty() ? "default" : shape.name);
     size_t offset = 0;
     for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++faceNo) {
-      size_t n = shape.mesh.num_face_vertices[f];
-      Poly3 poly;
-      for (size_t k = 0; k < n; ++k) {
-        int vi = shape.mesh.indices[offset + k].vertex_index;
-        if (vi < 0 || size_t(vi) >= vertexCount)
-          fail("{}: face refers to vertex {} but the file has {} vertices", where(faceNo), vi + 1, vertexCount);
-        glm::dvec3 p(attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]);
-        if (poly.empty() || p != poly.back()) poly.push_back(p);
-      }
+      const size_t n = shape.mesh.num_face_vertices[f];
+      const Poly3 poly = facePolygon(reader.GetAttrib(), shape.mesh, offset, n, where);
       offset += n;
-      while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
-
       int material = shape.mesh.material_ids[f];
       if (material < 0) {
         if (defaultMaterial < 0) {
           defaultMaterial = scene.addMaterial({"(default)", glm::dvec3(0.5), glm::dvec3(0.0)});
-          scene.warnings.push_back(fmt::format("{}: faces without a material get reflectance 0.5", where(faceNo)));
+          scene.warnings.push_back(fmt::format("{}: faces without a material get reflectance 0.5", where()));
         }
         material = defaultMaterial;
       }
-
-      double size = 0;
-      for (auto& v : poly) size = std::max(size, glm::length(v - poly.front()));
-      glm::dvec3 normal = poly.size() >= 3 ? newellNormal(poly) : glm::dvec3(0.0);
-      if (poly.size() < 3 || !(glm::length(normal) > 1e-12 * size * size)) {
-        scene.warnings.push_back(fmt::format("{}: degenerate face with zero area skipped", where(faceNo)));
-        continue;
-      }
-      bool planar = planarityError(poly) <= kPlanarTolerance * size;
-      if (planar && isConvex(poly, normal)) {
-        scene.addPolygon(poly, material, object);
-        continue;
-      }
-      scene.warnings.push_back(fmt::format("{}: {} polygon split into triangles", where(faceNo),
-                                           planar ? "non-convex" : "non-planar"));
-      std::vector<int> tris = triangulate(poly, normal);
-      for (size_t t = 0; t < tris.size(); t += 3)
-        scene.addPolygon({poly[tris[t]], poly[tris[t + 1]], poly[tris[t + 2]]}, material, object);
+      addFace(scene, poly, material, object, where);
     }
   }
   return scene;

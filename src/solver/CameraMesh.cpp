@@ -6,6 +6,8 @@
 #include <span>
 #include <vector>
 
+#include "gl/State.h"
+
 namespace hemirad {
 
 namespace {
@@ -38,7 +40,7 @@ CameraMesh::CameraMesh(const Scene& scene, const Atlas& atlas)
 
 void CameraMesh::draw() const {
   vao_.bind();
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertexCount_));
+  gl::drawTriangles(vertexCount_);
 }
 
 glm::mat4 CameraMesh::viewProjection(const Camera& camera, double aspect) const {

@@ -15,7 +15,7 @@ class CameraMesh {
   CameraMesh(const Scene& scene, const Atlas& atlas);
   // Binds the vertex array and draws every triangle (attributes 0 position, 1 atlas, 2 polygon).
   void draw() const;
-  // A camera's reversed-Z view-projection (gl/ReversedDepth.h) whose near plane lies in front
+  // A camera's reversed-Z view-projection (gl/State.h, DepthRange::Reversed) whose near plane lies in front
   // of the whole scene: half the eye's distance to the scene's bounds, or a millionth of the
   // scene's size when the eye is inside them.
   glm::mat4 viewProjection(const Camera& camera, double aspect) const;

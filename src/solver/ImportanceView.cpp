@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gl/ReversedDepth.h"
 #include "gl/Debug.h"
 #include "gl/Shader.h"
+#include "gl/State.h"
 
 namespace hemirad {
 
@@ -17,9 +17,8 @@ ImportanceView::ImportanceView(SolverState& state, int resolution)
       update_(gl::computeProgram("importance_update.comp")),
       pixels_(GL_R32UI, state.atlas.width, state.atlas.height),
       direct_(GL_R32F, state.atlas.width, state.atlas.height) {
-  const float zero = 0.0f;
-  glClearTexImage(direct_.id(), 0, GL_RED, GL_FLOAT, &zero);
-  glProgramUniform2i(update_.id(), update_.location("atlasSize"), state.atlas.width, state.atlas.height);
+  direct_.clear(0.0f);
+  update_.set("atlasSize", state.atlas.width, state.atlas.height);
 }
 
 void ImportanceView::look(const Camera& camera, double aspect) {
@@ -29,29 +28,27 @@ void ImportanceView::look(const Camera& camera, double aspect) {
   gl::Framebuffer fbo;
   fbo.attach(GL_DEPTH_ATTACHMENT, depth);
   fbo.checkComplete("importance view");
-  const GLuint zero = 0;
-  glClearTexImage(pixels_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  fbo.clearDepth(0.0f);  // reversed depth: 0 is infinitely far
+  pixels_.clear(0u);
 
   glm::mat4 vp = mesh_.viewProjection(camera, aspect);
-  {
-    gl::ReversedDepth depthPass(fbo);
-    glViewport(0, 0, w, h);
-    glDisable(GL_CULL_FACE);
-    state_.bindScene();
-    pixels_.bindImage(0, GL_READ_WRITE);
-    view_.set("viewProjection", &vp[0][0]);
-    view_.use();
-    // Depth first, then count the pixels whose nearest surface each fragment is (same program,
-    // so the depths match exactly).
-    view_.set("countPixels", 0);
-    mesh_.draw();
-    glDepthFunc(GL_EQUAL);
-    glDepthMask(GL_FALSE);
-    view_.set("countPixels", 1);
-    mesh_.draw();
-    glDepthMask(GL_TRUE);
-  }
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  fbo.bind();
+  state_.bindScene();
+  pixels_.bindImage(0, GL_READ_WRITE);
+  view_.set("viewProjection", &vp[0][0]);
+  view_.use();
+  // Depth first, then count the pixels whose nearest surface each fragment is (same program,
+  // so the depths match exactly).
+  gl::cameraView(w, h).apply();
+  view_.set("countPixels", 0);
+  mesh_.draw();
+  gl::RasterState equal = gl::cameraView(w, h);
+  equal.depthFunc = gl::DepthFunc::Equal;
+  equal.depthWrite = false;
+  equal.apply();
+  view_.set("countPixels", 1);
+  mesh_.draw();
+  gl::barrier(gl::Barrier::Image);
 
   update_.use();
   update_.set("viewPixels", float(w) * float(h));
@@ -60,7 +57,7 @@ void ImportanceView::look(const Camera& camera, double aspect) {
   pixels_.bindImage(2, GL_READ_ONLY);
   direct_.bindImage(3, GL_READ_WRITE);
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16), gl::groupsFor(unsigned(state_.atlas.height), 16));
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch | gl::Barrier::Storage);
   gl::checkErrors("importance view");
 }
 

@@ -1,6 +1,7 @@
 #include "src/solver/ItemBuffer.h"
 
 #include "gl/Shader.h"
+#include "gl/State.h"
 #include "src/scene/Atlas.h"
 #include "src/base/Error.h"
 #include "src/scene/ItemMesh.h"
@@ -10,7 +11,7 @@
 namespace hemirad {
 
 Projection parseProjection(const std::string& name) {
-  if (name == "stereographic" || name == "hemisphere") return Projection::Hemisphere;
+  if (name == "stereographic" || name == "hemisphere") return Projection::Stereographic;
   if (name == "hemicube") return Projection::Hemicube;
   throw InputError("--hemisphere must be stereographic or hemicube, not '" + name + "'");
 }
@@ -48,21 +49,15 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
 }
 
 void ItemBuffer::render(const gl::Buffer& control) {
-  const GLuint clearId[4] = {kNoPolygon, 0, 0, 0};
-  const float far = 1.0f;
-  glViewport(0, 0, faceResolution_, faceResolution_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);  // every face occludes from both sides
-  glEnable(GL_CLIP_DISTANCE0);
+  // Every face occludes from both sides (no culling); the hemisphere clips at the horizon.
+  gl::RasterState{.width = faceResolution_, .height = faceResolution_, .clipDistance0 = true}.apply();
   control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   program_.use();
   vao_.bind();
-  glClearNamedFramebufferuiv(target_.id(), GL_COLOR, 0, clearId);  // every layer
-  glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &far);
+  target_.clearColor(kNoPolygon);  // every layer
+  target_.clearDepth(1.0f);
   target_.bind();
-  glDrawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertexCount_), faces_ * shooters_);
-  glDisable(GL_CLIP_DISTANCE0);
+  gl::drawTriangles(vertexCount_, faces_ * shooters_);
 }
 
 void ItemBuffer::bindForLookup() const {

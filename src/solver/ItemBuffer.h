@@ -12,9 +12,9 @@
 
 namespace hemirad {
 
-// Seed 003's single-pass hemispherical projection, or the classic five-face hemicube
-// (Cohen & Greenberg 1985) as the baseline.
-enum class Projection { Hemisphere, Hemicube };
+// Seed 003's single-pass stereographic projection of the hemisphere, or the classic five-face
+// hemicube (Cohen & Greenberg 1985) as the baseline.
+enum class Projection { Stereographic, Hemicube };
 Projection parseProjection(const std::string& name);  // "stereographic" or "hemicube"
 std::string projectionName(Projection p);
 
@@ -24,7 +24,7 @@ class ItemBuffer {
   // hemicube five faces of side resolution / sqrt(3) (top + four half faces = the same budget).
   // `shooters`: the most shooters one render() draws (layers are allocated for each).
   ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance,
-             Projection projection = Projection::Hemisphere, int shooters = 1);
+             Projection projection = Projection::Stereographic, int shooters = 1);
   // Shader defines that select the projection: every program that looks receivers up needs them.
   const gl::Defines& defines() const { return defines_; }
   // Draws from the shooters of the pass in `control` (SSBO 3); layers past its shooter count
@@ -33,9 +33,6 @@ class ItemBuffer {
   // Binds the id and depth targets to texture units 2 and 3.
   void bindForLookup() const;
   std::size_t triangles() const { return vertexCount_ / 3; }
-  std::size_t vertexCount() const { return vertexCount_; }
-  int faceResolution() const { return faceResolution_; }
-  int shooters() const { return shooters_; }
   // Pixels one shooter's item buffer covers (all its faces): the fill work of a shot.
   std::size_t pixelsPerShooter() const { return std::size_t(faces_) * faceResolution_ * faceResolution_; }
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "gl/ReversedDepth.h"
 #include "gl/Debug.h"
 #include "gl/Shader.h"
+#include "gl/State.h"
 
 namespace hemirad {
 
@@ -33,8 +33,7 @@ PerspectiveView::PerspectiveView(const SolverState& state, std::size_t blockCoun
       deferredBlocks_(blocks_ * sizeof(std::uint32_t)),
       visible_(surfaces_, 1),
       epoch_(surfaces_, -1) {
-  const float zero = 0;
-  glClearNamedBufferData(shotSoFar_.id(), GL_R32F, GL_RED, GL_FLOAT, &zero);
+  shotSoFar_.clear(0.0f);
   pendingPass_.set("blockCount", unsigned(blocks_));
   uploadSurfaces(false);
 }
@@ -92,28 +91,25 @@ std::vector<std::uint8_t> PerspectiveView::renderSeen() {
   fbo.attach(GL_COLOR_ATTACHMENT0, ids);
   fbo.attach(GL_DEPTH_ATTACHMENT, depth);
   fbo.checkComplete("perspective view");
-  const GLuint none[4] = {0xFFFFFFFFu, 0, 0, 0}, zero = 0;
-  glClearNamedFramebufferuiv(fbo.id(), GL_COLOR, 0, none);
-  glClearNamedBufferData(seen_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  fbo.clearColor(0xFFFFFFFFu);
+  fbo.clearDepth(0.0f);  // reversed depth: 0 is infinitely far
+  seen_.clear(0u);
 
   Camera wide = camera_;
   wide.fovY = std::min(simulatedFov(), 179.0);
   glm::mat4 vp = mesh_.viewProjection(wide, aspect_);
-  {
-    gl::ReversedDepth depthPass(fbo);
-    glViewport(0, 0, w, h);
-    glDisable(GL_CULL_FACE);
-    ids_.set("viewProjection", &vp[0][0]);
-    ids_.use();
-    mesh_.draw();
-  }
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  fbo.bind();
+  gl::cameraView(w, h).apply();
+  ids_.set("viewProjection", &vp[0][0]);
+  ids_.use();
+  mesh_.draw();
+  gl::barrier(gl::Barrier::Image | gl::Barrier::Framebuffer);
 
   ids.bindImage(0, GL_READ_ONLY);
   seen_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
   seenPass_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(w), 16), gl::groupsFor(unsigned(h), 16));
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl::barrier(gl::Barrier::BufferUpdate);
   std::vector<std::uint32_t> seen(surfaces_);
   seen_.read(0, seen.size() * sizeof(std::uint32_t), seen.data());
   return {seen.begin(), seen.end()};
@@ -127,7 +123,7 @@ unsigned PerspectiveView::takeEpoch(const std::vector<std::uint8_t>& seen) {
   if (capacity_ < kMaxEpochs) {
     const unsigned grown = std::min(kMaxEpochs, std::max(kFirstEpochs, 2 * capacity_));
     gl::Buffer bigger(std::size_t(grown) * blocks_ * kVec4);
-    if (capacity_) glCopyNamedBufferSubData(snapshots_.id(), bigger.id(), 0, 0, std::size_t(capacity_) * blocks_ * kVec4);
+    if (capacity_) snapshots_.copyTo(bigger, 0, 0, std::size_t(capacity_) * blocks_ * kVec4);
     snapshots_ = std::move(bigger);
     epochBirth_.resize(grown, 0);
     const unsigned e = capacity_;
@@ -162,12 +158,12 @@ void PerspectiveView::applyView() {
   for (std::uint32_t p : entering_)
     if (std::find(epochs.begin(), epochs.end(), GLuint(epoch_[p])) == epochs.end()) epochs.push_back(GLuint(epoch_[p]));
   pendingPass_.set("epochCount", unsigned(epochs.size()));
-  glProgramUniform1uiv(pendingPass_.id(), pendingPass_.location("epochs"), GLsizei(epochs.size()), epochs.data());
+  pendingPass_.set("epochs", std::span<const unsigned>(epochs));
   bind();
   pending_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
   pendingPass_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(blocks_), 256));
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl::barrier(gl::Barrier::BufferUpdate);
   std::vector<std::uint32_t> pending(blocks_), list;
   pending_.read(0, pending.size() * sizeof(std::uint32_t), pending.data());
   for (std::uint32_t b = 0; b < blocks_; ++b)
@@ -187,7 +183,7 @@ void PerspectiveView::describeDeliveries(unsigned count, const gl::Buffer& block
   deferredPass_.set("count", count);
   deferredPass_.use();
   gl::Program::dispatch(gl::groupsFor(count, 64));
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  gl::barrier(gl::Barrier::Storage | gl::Barrier::Command);
   next_ += count;
 }
 
@@ -198,10 +194,8 @@ void PerspectiveView::finishDeliveries() {
   for (unsigned e = 0; e < capacity_; ++e)
     if (epochBirth_[e] && int(e) != newEpoch_ && std::find(epoch_.begin(), epoch_.end(), int(e)) == epoch_.end())
       epochBirth_[e] = 0;
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  if (newEpoch_ >= 0)
-    glCopyNamedBufferSubData(shotSoFar_.id(), snapshots_.id(), 0, std::size_t(newEpoch_) * blocks_ * kVec4,
-                             blocks_ * kVec4);
+  gl::barrier(gl::Barrier::BufferUpdate);
+  if (newEpoch_ >= 0) shotSoFar_.copyTo(snapshots_, 0, std::size_t(newEpoch_) * blocks_ * kVec4, blocks_ * kVec4);
   entering_.clear();
   staysOut_.clear();
   newEpoch_ = -1;

@@ -9,6 +9,7 @@
 
 #include "gl/Debug.h"
 #include "gl/Shader.h"
+#include "gl/State.h"
 #include "src/solver/Control.h"
 #include "src/base/Error.h"
 
@@ -23,8 +24,7 @@ constexpr unsigned kTimingStride = 16;  // with GPU stamps, one pass in 16 is ti
 
 enum Slot { kSelect, kItemBuffer, kGather };
 
-constexpr GLbitfield kAllBarriers =
-    GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
+constexpr gl::Barrier kAllBarriers = gl::Barrier::Storage | gl::Barrier::Image | gl::Barrier::TextureFetch;
 
 // A quarter of the blocks: solves reach 90 % in about half as many shots as there are blocks,
 // so the view opens up over the first third or so of that, as the thesis's 10 s of ~30 s did.
@@ -41,18 +41,8 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   const unsigned keep = unsigned(settings.shootersPerPass);
   const bool perspective = settings.algorithm == Algorithm::Perspective;
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
-  reduce_ = gl::computeProgram("reduce.comp");
-  select_ = gl::computeProgram("select.comp", defines);
-
-  // Shooter blocks and the reduction levels above them: each workgroup of a level ranks 1024
-  // entries and keeps its best `keep`, until select.comp's one workgroup can rank the rest.
   plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution);
-  std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(plan_.polygonLevel);
-  blockCount_ = blocks.size();
-  blocks_ = gl::Buffer(std::span<const ShooterBlock>(blocks));
-  unsigned left = unsigned(blockCount_);
-  for (; left > kGroupEntries; left = gl::groupsFor(left, kGroupEntries) * keep)
-    levels_.emplace_back(gl::groupsFor(left, kGroupEntries) * keep * sizeof(float[4]));
+  setUpReduction(state.atlas.shooterBlocks(plan_.polygonLevel), keep, defines);
 
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
   itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, plan_.itemResolution,
@@ -67,20 +57,23 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
         state, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep));
     gather_.set("blockCount", unsigned(blockCount_));
   }
-
-  // The control block: stop rule, convergence history.
-  const StopRule& stop = settings.stop;
-  historyCapacity_ = stop.maxShots ? stop.maxShots + 1 : kUnlimitedHistory;
-  ControlBlock c{};
-  c.maxShots = stop.maxShots;
-  c.targetConvergence = float(stop.targetConvergence);
-  c.emittedPower = float(state.emittedPower);
-  c.historyCapacity = historyCapacity_;
-  c.shootersPerPass = keep;
-  control_ = gl::Buffer(sizeof(ControlBlock) + historyCapacity_ * sizeof(float));
-  control_.upload(0, sizeof c, &c);
-
+  setUpControl(settings.stop, keep);
   gather_.set("farDistance", float(state.farDistance));
+  gather_.set("atlasSize", state.atlas.width, state.atlas.height);
+  gl::checkErrors("progressive solver setup");
+}
+
+// Shooter blocks and the reduction levels above them: each workgroup of a level ranks 1024
+// entries and keeps its best `keep`, until select.comp's one workgroup can rank the rest.
+void ProgressiveSolver::setUpReduction(const std::vector<ShooterBlock>& blocks, unsigned keep,
+                                       const gl::Defines& defines) {
+  reduce_ = gl::computeProgram("reduce.comp");
+  select_ = gl::computeProgram("select.comp", defines);
+  blockCount_ = blocks.size();
+  blocks_ = gl::Buffer(std::span<const ShooterBlock>(blocks));
+  unsigned left = unsigned(blockCount_);
+  for (; left > kGroupEntries; left = gl::groupsFor(left, kGroupEntries) * keep)
+    levels_.emplace_back(gl::groupsFor(left, kGroupEntries) * keep * sizeof(float[4]));
   // select.comp folds what the parallel levels leave: the blocks themselves when there are none.
   select_.set("count", left);
   select_.set("keep", keep);
@@ -89,13 +82,24 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   // Importance is a view fraction per unit area: 1 / (total area) if spread evenly. An
   // importance shot is not worth it below a millionth of the view's importance.
   double area = 0;
-  for (const auto& pa : state.atlas.positionArea) area += pa.w;
-  const float floor = float(settings.importanceFloor / area);
+  for (const auto& pa : state_.atlas.positionArea) area += pa.w;
+  const float floor = float(settings_.importanceFloor / area);
   reduce_.set("importanceFloor", floor);
   select_.set("importanceFloor", floor);
   select_.set("importanceThreshold", 1e-6f);
-  glProgramUniform2i(gather_.id(), gather_.location("atlasSize"), state.atlas.width, state.atlas.height);
-  gl::checkErrors("progressive solver setup");
+}
+
+// The control block: stop rule, convergence history.
+void ProgressiveSolver::setUpControl(const StopRule& stop, unsigned keep) {
+  historyCapacity_ = stop.maxShots ? stop.maxShots + 1 : kUnlimitedHistory;
+  ControlBlock c{};
+  c.maxShots = stop.maxShots;
+  c.targetConvergence = float(stop.targetConvergence);
+  c.emittedPower = float(state_.emittedPower);
+  c.historyCapacity = historyCapacity_;
+  c.shootersPerPass = keep;
+  control_ = gl::Buffer(sizeof(ControlBlock) + historyCapacity_ * sizeof(float));
+  control_.upload(0, sizeof c, &c);
 }
 
 ProgressiveSolver::~ProgressiveSolver() = default;
@@ -107,8 +111,8 @@ void ProgressiveSolver::selectPass() {
   blocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   if (perspective_) perspective_->bind();
-  rankPass(settings_.importanceDriven() ? 1 : 0, false);
-  if (settings_.importanceDriven()) rankPass(2, true);
+  rankPass(settings_.importanceDriven() ? Rank::PowerByImportance : Rank::Power, false);
+  if (settings_.importanceDriven()) rankPass(Rank::Importance, true);
 }
 
 void ProgressiveSolver::look(const Camera& camera, double aspect) {
@@ -122,7 +126,7 @@ void ProgressiveSolver::look(const Camera& camera, double aspect) {
 }
 
 // Seed 004 §5.5.3: one item buffer per block with entries for the surfaces entering the view,
-// up to K a pass, each entering surface receiving its own entry (gather.comp, viewMode 2).
+// up to K a pass, each entering surface receiving its own entry (Receivers::Entering).
 // Applies a waiting view first; uses at most `budget` item buffers and returns how many.
 unsigned ProgressiveSolver::deliverStored(unsigned budget) {
   const unsigned K = unsigned(settings_.shootersPerPass);
@@ -132,7 +136,7 @@ unsigned ProgressiveSolver::deliverStored(unsigned budget) {
     const unsigned n = unsigned(std::min<std::size_t>({K, budget - used, perspective_->deliveriesLeft()}));
     perspective_->describeDeliveries(n, blocks_, control_);
     itemBuffer_->render(control_);
-    gatherPass(2);
+    gatherPass(Receivers::Entering);
     used += n;
     deliveryShots_ += n;
     if (perspective_->deliveriesLeft() == 0) {
@@ -149,8 +153,9 @@ unsigned ProgressiveSolver::deliverStored(unsigned budget) {
   return used;
 }
 
-// One ranking of the blocks (reduce_entry.glsl's rankBy) and the selection from it.
-void ProgressiveSolver::rankPass(unsigned rankBy, bool importanceShooters) {
+// One ranking of the blocks and the selection from it.
+void ProgressiveSolver::rankPass(Rank rank, bool importanceShooters) {
+  const unsigned rankBy = unsigned(rank);
   // Many blocks: rank them 1024 at a time in parallel first; the last ranking runs in select.comp.
   unsigned n = unsigned(blockCount_);
   bool fromBlocks = true;
@@ -161,7 +166,7 @@ void ProgressiveSolver::rankPass(unsigned rankBy, bool importanceShooters) {
     reduce_.set("count", n);
     reduce_.set("fromBlocks", int(fromBlocks));
     gl::Program::dispatch(gl::groupsFor(n, kGroupEntries));
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gl::barrier(gl::Barrier::Storage);
     level.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
     n = gl::groupsFor(n, kGroupEntries) * unsigned(settings_.shootersPerPass);
     fromBlocks = false;
@@ -170,14 +175,14 @@ void ProgressiveSolver::rankPass(unsigned rankBy, bool importanceShooters) {
   select_.set("rankBy", rankBy);
   select_.set("importanceShooters", int(importanceShooters));
   gl::Program::dispatch(1);
-  glMemoryBarrier(kAllBarriers);
+  gl::barrier(kAllBarriers);
 }
 
-void ProgressiveSolver::gatherPass(unsigned viewMode) {
+void ProgressiveSolver::gatherPass(Receivers receivers) {
   state_.bindScene();
   if (perspective_) {
     perspective_->bind();
-    gather_.set("viewMode", viewMode);
+    gather_.set("viewMode", unsigned(receivers));
   }
   state_.radiosity.bindImage(0, GL_READ_WRITE);
   state_.deltaB.bindImage(1, GL_READ_WRITE);
@@ -186,39 +191,54 @@ void ProgressiveSolver::gatherPass(unsigned viewMode) {
   gather_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
                         gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));
-  glMemoryBarrier(kAllBarriers);
+  gl::barrier(kAllBarriers);
 }
 
 SolveStatus ProgressiveSolver::advance(unsigned shots) {
   const unsigned K = unsigned(settings_.shootersPerPass);
-  unsigned passes = (shots + K - 1) / K;
+  const unsigned passes = (shots + K - 1) / K;
   if (!perspective_) {
     runPasses(passes);
     return readStatus();
   }
-  // Perspective-driven: item buffers for deliveries and for shots share the budget, and nothing
-  // is shot while deliveries are due. The area of interest grows at fixed shot counts, so passes
-  // stop there (every pass but a solve's last shoots K) whatever the batch sizes asked for.
-  unsigned budget = passes * K;
+  advancePerspective(passes * K);
+  return status_;
+}
+
+// Perspective-driven: nothing is shot while deliveries are due. The area of interest grows at
+// fixed shot counts, so passes stop there (every pass but a solve's last shoots K) whatever
+// the batch sizes asked for.
+void ProgressiveSolver::advancePerspective(unsigned budget) {
   while (budget > 0) {
     budget -= deliverStored(budget);
-    if (budget == 0 || perspective_->delivering()) break;
+    if (budget == 0 || perspective_->delivering()) return;
     if (status_.done) {
-      // Out of unshot light (or at the target) with entries still held back: the area of
-      // interest becomes the whole scene, so the solve ends where progressive refinement does.
-      if (budgetSpent() || perspective_->wholeScene()) break;
-      perspective_->showAll();
+      if (!openWholeView()) return;
       continue;
     }
-    const unsigned toStep = perspective_->shotsToNextStep(status_.shots);
-    const unsigned most = (budget + K - 1) / K;
-    const unsigned run = toStep == PerspectiveView::kNoStep ? most : std::clamp((toStep + K - 1) / K, 1u, most);
-    runPasses(run);
-    budget -= std::min(budget, run * K);
-    readStatus();
-    perspective_->grow(status_.shots);
+    budget -= std::min(budget, shootToNextStep(budget));
   }
-  return status_;
+}
+
+// Out of unshot light (or at the target) with entries still held back: the area of interest
+// becomes the whole scene, so the solve ends where progressive refinement does. False when
+// there is nothing left to open (or the shots are spent).
+bool ProgressiveSolver::openWholeView() {
+  if (budgetSpent() || perspective_->wholeScene()) return false;
+  perspective_->showAll();
+  return true;
+}
+
+// Whole passes up to the area of interest's next step (or the budget), then the step.
+unsigned ProgressiveSolver::shootToNextStep(unsigned budget) {
+  const unsigned K = unsigned(settings_.shootersPerPass);
+  const unsigned toStep = perspective_->shotsToNextStep(status_.shots);
+  const unsigned most = (budget + K - 1) / K;
+  const unsigned run = toStep == PerspectiveView::kNoStep ? most : std::clamp((toStep + K - 1) / K, 1u, most);
+  runPasses(run);
+  readStatus();
+  perspective_->grow(status_.shots);
+  return run * K;
 }
 
 void ProgressiveSolver::runPasses(unsigned passes) {
@@ -231,7 +251,7 @@ void ProgressiveSolver::runPasses(unsigned passes) {
     if (timed) timer_.mark(kItemBuffer);
     itemBuffer_->render(control_);
     if (timed) timer_.mark(kGather);
-    gatherPass(1);
+    gatherPass(Receivers::InView);  // everyone receives when not perspective-driven
     if (timed) timer_.stop(), ++timed_;
   }
 }

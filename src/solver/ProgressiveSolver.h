@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "gl/Objects.h"
+#include "gl/Shader.h"
 #include "gl/Timer.h"
 #include "src/scene/Camera.h"
 #include "src/solver/ImportanceView.h"
@@ -21,7 +22,7 @@ namespace hemirad {
 struct ProgressiveSettings {
   int itemSubdivision = 3;   // 1-to-4 splits of the item mesh
   int itemResolution = 512;  // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
-  Projection projection = Projection::Hemisphere;
+  Projection projection = Projection::Stereographic;
   int shootLevel = 1;        // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
   // Shooters per pass (1..kMaxPassShooters): the best K blocks shoot at once from the same
   // unshot state, so a pass's fixed costs (reduction, launches, barriers) are shared by K shots.
@@ -71,11 +72,29 @@ class ProgressiveSolver final : public Solver {
   const ShootingPlan& plan() const { return plan_; }
 
  private:
+  // What a ranking orders the blocks by (reduce_entry.glsl's rankBy).
+  enum class Rank : unsigned {
+    Power = 0,                // unshot power: plain progressive refinement
+    PowerByImportance = 1,    // unshot power x (largest importance + floor), seed 004 §4.2.4
+    Importance = 2,           // |unshot importance| x area: the importance shooters
+  };
+  // Who receives a gather (gather.comp's viewMode; perspective-driven solves only).
+  enum class Receivers : unsigned {
+    InView = 1,    // a shot: only surfaces in the area of interest
+    Entering = 2,  // a delivery: only surfaces entering the view, each its stored entry
+  };
+
+  void setUpReduction(const std::vector<ShooterBlock>& blocks, unsigned keep, const gl::Defines& defines);
+  void setUpControl(const StopRule& stop, unsigned keep);
   void selectPass();
-  void rankPass(unsigned rankBy, bool importanceShooters);
-  void gatherPass(unsigned viewMode);
+  void rankPass(Rank rank, bool importanceShooters);
+  void gatherPass(Receivers receivers);
   void runPasses(unsigned passes);
-  unsigned deliverStored(unsigned budget);  // perspective-driven: entries for surfaces entering the view
+  // Perspective-driven: item buffers for deliveries and for shots share `budget`.
+  void advancePerspective(unsigned budget);
+  unsigned deliverStored(unsigned budget);  // entries for surfaces entering the view
+  bool openWholeView();                     // out of light with entries held back
+  unsigned shootToNextStep(unsigned budget);  // returns the shots enqueued
   bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
   SolveStatus readStatus();
 

@@ -1,6 +1,7 @@
 // The seam between the CLI and the radiosity algorithms. Each algorithm advances a
 // SolverState shot by shot (or iteration by iteration) and says where it stands.
 #pragma once
+#include <chrono>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -40,6 +41,16 @@ inline unsigned nextBatch(unsigned batch, double seconds) {
   return seconds < 0.05 ? (batch < 512 ? batch * 2 : 1024) : (batch > 1 ? batch / 2 : 1);
 }
 
+class Solver;
+
+// Batches of shots while the stop rule has not fired and `more()` holds (asked before each
+// batch), sized by nextBatch from `batch`, which is left for the caller's next call. Batch
+// sizes never change the result, only how often the status is read.
+template <class More>
+SolveStatus advanceWhile(Solver& solver, SolveStatus status, unsigned& batch, More more);
+// The same until the stop rule fires.
+SolveStatus advanceToStop(Solver& solver, SolveStatus status);
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -55,5 +66,20 @@ class Solver {
   virtual std::vector<std::uint8_t> saveState() const = 0;
   virtual SolveStatus restoreState(std::span<const std::uint8_t> bytes) = 0;
 };
+
+template <class More>
+SolveStatus advanceWhile(Solver& solver, SolveStatus status, unsigned& batch, More more) {
+  while (!status.done && more()) {
+    const auto t0 = std::chrono::steady_clock::now();
+    status = solver.advance(batch);
+    batch = nextBatch(batch, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  return status;
+}
+
+inline SolveStatus advanceToStop(Solver& solver, SolveStatus status) {
+  unsigned batch = 1;
+  return advanceWhile(solver, status, batch, [] { return true; });
+}
 
 }  // namespace hemirad

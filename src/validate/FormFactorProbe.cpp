@@ -4,6 +4,7 @@
 
 #include "gl/Debug.h"
 #include "gl/Shader.h"
+#include "gl/State.h"
 #include "src/solver/Control.h"
 
 namespace hemirad {
@@ -15,7 +16,7 @@ FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int 
       control_(sizeof(ControlBlock)),
       result_(GL_RGBA32F, state.atlas.width, state.atlas.height) {
   program_.set("farDistance", float(state.farDistance));
-  glProgramUniform2i(program_.id(), program_.location("atlasSize"), state.atlas.width, state.atlas.height);
+  program_.set("atlasSize", state.atlas.width, state.atlas.height);
 }
 
 std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
@@ -31,7 +32,7 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   shooter.polygon = polygon;
   control_.upload(0, sizeof c, &c);
 
-  glFinish();
+  gl::finish();
   auto t0 = std::chrono::steady_clock::now();
   itemBuffer_.render(control_);
   state_.bindScene();
@@ -40,8 +41,8 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   program_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(a.width), 16), gl::groupsFor(unsigned(a.height), 16));
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  glFinish();
+  gl::barrier(gl::Barrier::TextureUpdate);
+  gl::finish();
   gpuMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::vector<ProbeSample> out(a.polygonOf.size());
   result_.read(GL_RGBA, GL_FLOAT, out.size() * sizeof(ProbeSample), out.data());

@@ -34,6 +34,56 @@ struct ObjectSums {
   explicit ObjectSums(size_t objects) : shooterArea(objects, 0.0), handedOn(objects, std::vector<double>(objects, 0.0)) {}
 };
 
+// Shooter s's exact samples, added to the object sums.
+template <class ObjectOf>
+std::vector<PairSample> exactFromShooter(ExactReference& exact, std::size_t s, const ObjectOf& objectOf,
+                                         const Atlas& atlas, ObjectSums& sums) {
+  std::vector<PairSample> samples = exact.fromShooter(s);
+  sums.shooterArea[objectOf(s)] += atlas.positionArea[s].w;
+  for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
+    if (samples[t].formFactor > 0) sums.handedOn[objectOf(s)][objectOf(t)] += samples[t].formFactor * atlas.positionArea[t].w;
+  return samples;
+}
+
+// One configuration's comparison, shooter by shooter.
+struct LevelTally {
+  ObjectSums sums;
+  std::vector<double> relErrors;
+  std::size_t agree = 0;
+  explicit LevelTally(size_t objects) : sums(objects) {}
+
+  // Shooter s's GPU samples against the exact ones. Returns the form factor its visibility errors
+  // add or remove, or -1 if it sees nothing (shooters inside closed solids, under a block, never shoot).
+  template <class ObjectOf>
+  double add(const std::vector<ProbeSample>& gpu, const std::vector<PairSample>& reference, std::size_t s,
+             const ObjectOf& objectOf, const Atlas& atlas, LevelStats& st) {
+    sums.shooterArea[objectOf(s)] += atlas.positionArea[s].w;
+    double misplaced = 0;
+    bool seesAnything = false;
+    for (std::size_t t = 0; t < gpu.size(); ++t) {
+      const PairSample& ref = reference[t];
+      if (gpu[t].formFactor > 0) sums.handedOn[objectOf(s)][objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
+      if (!ref.facing) continue;
+      ++st.texelPairs;
+      bool gv = gpu[t].visible > 0.5f;
+      agree += gv == ref.visible;
+      if (gv != ref.visible) misplaced += std::abs(double(gpu[t].formFactor) - ref.formFactor);
+      seesAnything = seesAnything || ref.visible;
+      st.falseVisible += gv && !ref.visible;
+      st.falseHidden += !gv && ref.visible;
+      if (ref.formFactor > 0) relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
+    }
+    return seesAnything ? misplaced : -1.0;
+  }
+
+  void finish(LevelStats& st) {
+    st.visibilityAgreement = st.texelPairs ? double(agree) / double(st.texelPairs) : 1.0;
+    st.ffRelErrorMedian = percentile(relErrors, 0.5);
+    st.ffRelErrorP95 = percentile(relErrors, 0.95);
+    st.ffRelErrorMax = relErrors.empty() ? 0 : *std::max_element(relErrors.begin(), relErrors.end());
+  }
+};
+
 // A converged GPU solve (per-element shooting, the finest level asked for) against the dense one.
 void compareSolution(const Scene& scene, const Atlas& atlas, const cpu::ExactVisibility& visibility,
                      const ValidateOptions& o, Validation& v) {
@@ -98,14 +148,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
   ExactReference exact(scene, atlas);
   std::vector<std::vector<PairSample>> reference;
   ObjectSums exactSums(objects);
-  for (std::size_t s : shooters) {
-    reference.push_back(exact.fromShooter(s));
-    double As = atlas.positionArea[s].w;
-    exactSums.shooterArea[objectOf(s)] += As;
-    for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
-      if (reference.back()[t].formFactor > 0)
-        exactSums.handedOn[objectOf(s)][objectOf(t)] += reference.back()[t].formFactor * atlas.positionArea[t].w;
-  }
+  for (std::size_t s : shooters) reference.push_back(exactFromShooter(exact, s, objectOf, atlas, exactSums));
   v.exactMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
   SolverState state(scene, atlas);
@@ -122,38 +165,16 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
         st.itemResolution = resolution;
         st.itemSubdivision = level;
         st.itemTriangles = probe.itemTriangles();
-        std::vector<double> relErrors;
-        std::size_t agree = 0;
-        ObjectSums levelSums(objects);
+        LevelTally tally(objects);
         for (std::size_t k = 0; k < shooters.size(); ++k) {
-          std::vector<ProbeSample> gpu = probe.fromShooter(shooters[k]);
-          levelSums.shooterArea[objectOf(shooters[k])] += atlas.positionArea[shooters[k]].w;
-          double misplaced = 0;  // form factor the visibility errors add or remove
-          bool seesAnything = false;  // shooters inside closed solids (under a block) never shoot
-          for (std::size_t t = 0; t < gpu.size(); ++t) {
-            const PairSample& ref = reference[k][t];
-            if (gpu[t].formFactor > 0)
-              levelSums.handedOn[objectOf(shooters[k])][objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
-            if (!ref.facing) continue;
-            ++st.texelPairs;
-            bool gv = gpu[t].visible > 0.5f;
-            agree += gv == ref.visible;
-            if (gv != ref.visible) misplaced += std::abs(double(gpu[t].formFactor) - ref.formFactor);
-            seesAnything = seesAnything || ref.visible;
-            st.falseVisible += gv && !ref.visible;
-            st.falseHidden += !gv && ref.visible;
-            if (ref.formFactor > 0)
-              relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
-          }
-          if (first && seesAnything && misplaced > worstError) worstError = misplaced, figureIndex = k;
+          const double misplaced =
+              tally.add(probe.fromShooter(shooters[k]), reference[k], shooters[k], objectOf, atlas, st);
+          if (first && misplaced > worstError) worstError = misplaced, figureIndex = k;
         }
-        st.visibilityAgreement = st.texelPairs ? double(agree) / double(st.texelPairs) : 1.0;
-        st.ffRelErrorMedian = percentile(relErrors, 0.5);
-        st.ffRelErrorP95 = percentile(relErrors, 0.95);
-        st.ffRelErrorMax = relErrors.empty() ? 0 : *std::max_element(relErrors.begin(), relErrors.end());
+        tally.finish(st);
         st.gpuMs = probe.gpuMilliseconds();
         v.levels.push_back(st);
-        if (figureConfig && level == o.levels.back()) gpuSums = levelSums;  // object F: first config, highest L
+        if (figureConfig && level == o.levels.back()) gpuSums = tally.sums;  // object F: first config, highest L
         // Figure samples: the chosen shooter at the first configuration's lowest and highest level.
         if (figureConfig && (level == o.levels.front() || level == o.levels.back())) {
           std::vector<ProbeSample> gpu = probe.fromShooter(shooters[figureIndex]);

@@ -24,7 +24,7 @@ struct ValidateOptions {
   std::optional<std::size_t> shooters = 16;  // nullopt: every element
   // Every projection at every resolution is one configuration, compared at every level.
   std::vector<int> itemResolutions{512};
-  std::vector<Projection> projections{Projection::Hemisphere};
+  std::vector<Projection> projections{Projection::Stereographic};
   gl::BackendOptions backend;
   std::optional<std::string> camera;  // for the camera-view figures
   std::string report, figures;
@@ -33,7 +33,7 @@ struct ValidateOptions {
 };
 
 struct LevelStats {
-  Projection projection = Projection::Hemisphere;
+  Projection projection = Projection::Stereographic;
   int itemResolution = 0;
   int itemSubdivision = 0;
   std::size_t itemTriangles = 0, texelPairs = 0, falseVisible = 0, falseHidden = 0;

@@ -82,9 +82,10 @@ void prepareFigureFolder(const std::string& dir) {
   plotFont();
 }
 
-void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas, const SolverState& state,
-                  const Camera& camera, const ValidateOptions& o, const Validation& v) {
-  // CSV and plots against L, one series per item-buffer configuration.
+namespace {
+
+// CSV and plots against L, one series per item-buffer configuration.
+void writeLevelPlots(const std::string& dir, const std::string& title, const Validation& v) {
   std::string csv =
       "hemisphere,item_resolution,item_subdivision,item_triangles,texel_pairs,visibility_agreement,false_visible,"
       "false_hidden,ff_rel_error_median,ff_rel_error_p95,ff_rel_error_max,gpu_ms\n";
@@ -107,7 +108,6 @@ void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas
     w.x.push_back(s.itemSubdivision), w.y.push_back(double(s.falseVisible + s.falseHidden) / double(s.texelPairs));
   }
   writeTextFile(dir + "/levels.csv", csv);
-  std::string title = std::filesystem::path(o.scene).filename().string();
   writeLinePlot(dir + "/agreement_vs_level.png",
                 {title + ": item-buffer visibility vs exact (CGAL)", "item-mesh subdivision level L",
                  "fraction of shooter-receiver pairs agreeing"},
@@ -121,17 +121,14 @@ void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas
                  "95th-percentile relative error of F", true},
                 ffError);
 
-  const int low = o.levels.front(), high = o.levels.back();
-  std::string config = configName(v.levels.front());
-  writeAtlasImage(dir + fmt::format("/atlas_visibility_L{}.png", low), atlas, classify(atlas, v, 0));
-  writeAtlasImage(dir + fmt::format("/atlas_visibility_L{}.png", high), atlas, classify(atlas, v, 1));
-  writeAtlasImage(dir + fmt::format("/atlas_ff_error_L{}.png", high), atlas, formFactorErrors(atlas, v));
-  Renderer renderer(state);
-  writeViewImage(dir + fmt::format("/view_visibility_L{}.png", low), renderer, atlas, camera, classify(atlas, v, 0));
-  writeViewImage(dir + fmt::format("/view_visibility_L{}.png", high), renderer, atlas, camera, classify(atlas, v, 1));
+}
 
+// The page that shows them all.
+std::string indexHtml(const std::string& title, const Scene& scene, const Atlas& atlas, const Validation& v, int low,
+                      int high) {
+  const std::string config = configName(v.levels.front());
   glm::dvec3 shooter(atlas.positionArea[v.figureShooter]);
-  std::string html = fmt::format(
+  return fmt::format(
       "<!doctype html><html><head><meta charset=\"utf-8\"><title>hemirad validation: {0}</title>"
       "<style>body{{font-family:sans-serif;max-width:1000px;margin:2em auto}}img{{max-width:100%}}"
       "table{{border-collapse:collapse;font-size:90%}}td,th{{border:1px solid #ccc;padding:3px 6px}}</style></head><body>"
@@ -150,7 +147,23 @@ void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas
       title, v.elements, v.shooters, shooter.x, shooter.y, shooter.z,
       scene.objects[size_t(scene.polygons()[atlas.polygonOf[v.figureShooter]].object)].name, low, config, high,
       levelTable(v));
-  writeTextFile(dir + "/index.html", html);
+}
+
+}  // namespace
+
+void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas, const SolverState& state,
+                  const Camera& camera, const ValidateOptions& o, const Validation& v) {
+  const std::string title = std::filesystem::path(o.scene).filename().string();
+  writeLevelPlots(dir, title, v);
+  const int low = o.levels.front(), high = o.levels.back();
+  writeAtlasImage(dir + fmt::format("/atlas_visibility_L{}.png", low), atlas, classify(atlas, v, 0));
+  writeAtlasImage(dir + fmt::format("/atlas_visibility_L{}.png", high), atlas, classify(atlas, v, 1));
+  writeAtlasImage(dir + fmt::format("/atlas_ff_error_L{}.png", high), atlas, formFactorErrors(atlas, v));
+  Renderer renderer(state);
+  writeViewImage(dir + fmt::format("/view_visibility_L{}.png", low), renderer, atlas, camera, classify(atlas, v, 0));
+  writeViewImage(dir + fmt::format("/view_visibility_L{}.png", high), renderer, atlas, camera, classify(atlas, v, 1));
+
+  writeTextFile(dir + "/index.html", indexHtml(title, scene, atlas, v, low, high));
 }
 
 }  // namespace hemirad

@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <optional>
 #include <thread>
 
 #include "src/base/AtomicFile.h"
@@ -99,9 +101,104 @@ struct WorkerThread {
   }
 };
 
+ViewerControls initialControls(const ViewerOptions& o, const Camera& start, glm::ivec2 size) {
+  ViewerControls controls;
+  controls.camera = start;
+  controls.algorithm = o.progressive.algorithm;
+  controls.ambient = o.ambient;
+  controls.width = std::max(size.x, 1);
+  controls.height = std::max(size.y, 1);
+  controls.version = 1;
+  return controls;
+}
+
+// The controls after a frame's input (moves of `step`, a resize, keys but quit and screenshot);
+// `changed` when they differ.
+ViewerControls steered(const ViewerControls& controls, const ViewerWindow::Input& in, glm::ivec2 size, double step,
+                       bool& changed) {
+  ViewerControls next = controls;
+  if (in.drag != glm::dvec2(0.0)) next.camera = turned(next.camera, in.drag.x * 0.005, -in.drag.y * 0.005);
+  if (in.move != glm::dvec3(0.0)) next.camera = moved(next.camera, in.move, step * (in.fast ? 4 : 1));
+  if (size.x > 0 && size.y > 0) next.width = size.x, next.height = size.y;  // not while minimised
+  changed = in.drag != glm::dvec2(0.0) || in.move != glm::dvec3(0.0) || next.width != controls.width ||
+            next.height != controls.height;
+  for (ViewerWindow::Action a : in.actions)
+    if (a != ViewerWindow::Action::Quit && a != ViewerWindow::Action::Screenshot) apply(next, a), changed = true;
+  return next;
+}
+
+// Frames presented per second, over half a second or more.
+struct FrameRate {
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  unsigned frames = 0;
+  double fps = 0;
+  void presented(std::chrono::steady_clock::time_point now) {
+    ++frames;
+    if (double s = std::chrono::duration<double>(now - start).count(); s >= 0.5) fps = frames / s, frames = 0, start = now;
+  }
+};
+
 }  // namespace
 
 const char* viewerControls() { return kControls; }
+
+namespace {
+
+// The window's loop: input becomes the worker's controls, the worker's frames are shown, until
+// quit, the window closes, the worker fails or --frames frames were presented.
+void interact(const ViewerOptions& o, ViewerWindow& window, ViewerLink& link, ViewerControls& controls,
+              std::optional<ViewerFrame>& shown, unsigned& presented, double speed,
+              const std::function<void(const std::string&)>& screenshot) {
+  using Clock = std::chrono::steady_clock;
+  auto last = Clock::now();
+  FrameRate rate;
+  bool quit = false;
+  while (!quit && !window.closing()) {
+    window.wait(1.0 / 60);
+    const auto now = Clock::now();
+    const double dt = std::min(std::chrono::duration<double>(now - last).count(), 0.1);
+    last = now;
+
+    ViewerWindow::Input in = window.input();
+    bool changed = false;
+    ViewerControls next = steered(controls, in, window.framebufferSize(), speed * dt, changed);
+    for (ViewerWindow::Action a : in.actions) {
+      if (a == ViewerWindow::Action::Quit) quit = true;
+      if (a != ViewerWindow::Action::Screenshot) continue;
+      const std::string path = o.screenshot.empty() ? "hemirad-view.png" : o.screenshot;
+      try {  // a failure is worth a warning, not the session
+        screenshot(path);
+        fmt::print(stderr, "hemirad view: screenshot written: {}\n", path);
+      } catch (const std::exception& e) {
+        warn(e.what());
+      }
+      window.swap();
+    }
+    if (changed) {
+      ++next.version;
+      controls = next;
+      link.update(controls);
+    }
+    {
+      std::lock_guard lock(link.mutex);
+      if (link.error) break;
+    }
+    if (std::optional<ViewerFrame> f = link.take()) {
+      shown = std::move(f);
+      window.draw(*shown);
+      window.swap();
+      ++presented;
+      rate.presented(now);
+      window.setTitle(title(*shown, rate.fps, controls.paused));
+      if (o.frames && presented >= o.frames) break;
+    } else if (window.damaged() && shown) {
+      window.draw(*shown);
+      window.swap();
+    }
+  }
+}
+
+}  // namespace
 
 int runView(ViewerOptions o) {
   if (!o.screenshot.empty()) checkWritable(o.screenshot, "--screenshot");
@@ -123,14 +220,7 @@ int runView(ViewerOptions o) {
   fmt::print(stderr, "hemirad view: controls:\n{}", kControls);
   ViewerLink link;
   link.wake = &ViewerWindow::wake;
-  ViewerControls controls;
-  controls.camera = start;
-  controls.algorithm = o.progressive.algorithm;
-  controls.ambient = o.ambient;
-  const glm::ivec2 size0 = window.framebufferSize();
-  controls.width = std::max(size0.x, 1);
-  controls.height = std::max(size0.y, 1);
-  controls.version = 1;
+  ViewerControls controls = initialControls(o, start, window.framebufferSize());
   link.controls = controls;
 
   std::optional<ViewerFrame> shown;
@@ -142,65 +232,7 @@ int runView(ViewerOptions o) {
   };
   {
     WorkerThread worker{link, std::thread(runViewerWorker, std::cref(o), std::cref(scene), std::ref(link))};
-    using Clock = std::chrono::steady_clock;
-    auto last = Clock::now(), fpsStart = last;
-    unsigned fpsFrames = 0;
-    double fps = 0;
-    bool quit = false;
-    while (!quit && !window.closing()) {
-      window.wait(1.0 / 60);
-      const auto now = Clock::now();
-      const double dt = std::min(std::chrono::duration<double>(now - last).count(), 0.1);
-      last = now;
-
-      ViewerWindow::Input in = window.input();
-      ViewerControls next = controls;
-      if (in.drag != glm::dvec2(0.0)) next.camera = turned(next.camera, in.drag.x * 0.005, -in.drag.y * 0.005);
-      if (in.move != glm::dvec3(0.0)) next.camera = moved(next.camera, in.move, speed * dt * (in.fast ? 4 : 1));
-      const glm::ivec2 size = window.framebufferSize();
-      if (size.x > 0 && size.y > 0) next.width = size.x, next.height = size.y;  // not while minimised
-      bool changed = in.drag != glm::dvec2(0.0) || in.move != glm::dvec3(0.0) || next.width != controls.width ||
-                     next.height != controls.height;
-      for (ViewerWindow::Action a : in.actions) {
-        if (a == ViewerWindow::Action::Quit) {
-          quit = true;
-        } else if (a == ViewerWindow::Action::Screenshot) {  // a failure is worth a warning, not the session
-          const std::string path = o.screenshot.empty() ? "hemirad-view.png" : o.screenshot;
-          try {
-            screenshot(path);
-            fmt::print(stderr, "hemirad view: screenshot written: {}\n", path);
-          } catch (const std::exception& e) {
-            warn(e.what());
-          }
-          window.swap();
-        } else {
-          apply(next, a);
-          changed = true;
-        }
-      }
-      if (changed) {
-        ++next.version;
-        controls = next;
-        link.update(controls);
-      }
-      {
-        std::lock_guard lock(link.mutex);
-        if (link.error) break;
-      }
-      if (std::optional<ViewerFrame> f = link.take()) {
-        shown = std::move(f);
-        window.draw(*shown);
-        window.swap();
-        ++presented, ++fpsFrames;
-        if (double s = std::chrono::duration<double>(now - fpsStart).count(); s >= 0.5)
-          fps = fpsFrames / s, fpsFrames = 0, fpsStart = now;
-        window.setTitle(title(*shown, fps, controls.paused));
-        if (o.frames && presented >= o.frames) break;
-      } else if (window.damaged() && shown) {
-        window.draw(*shown);
-        window.swap();
-      }
-    }
+    interact(o, window, link, controls, shown, presented, speed, screenshot);
   }  // the worker has stopped
   if (link.error) std::rethrow_exception(link.error);
   if (!o.screenshot.empty()) screenshot(o.screenshot);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <utility>
 
 #include "src/scene/Atlas.h"
 #include "src/output/Image.h"
@@ -29,6 +30,33 @@ std::vector<std::uint8_t> bottomUpRgba(const std::vector<unsigned char>& rgb, in
       for (int c = 0; c < 3; ++c)
         rgba[(std::size_t(height - 1 - y) * width + x) * 4 + c] = rgb[(std::size_t(y) * width + x) * 3 + c];
   return rgba;
+}
+
+// One frame's shots, from a solve's `solveFrames`-th frame that started at t0.
+SolveStatus shootFrame(const ViewerOptions& o, ProgressiveSolver& solver, SolveStatus status, unsigned& batch,
+                       unsigned solveFrames, Clock::time_point t0) {
+  if (o.shotsPerFrame) {
+    // Whole passes until k x N shots at this solve's k-th frame: a pass shoots up to
+    // --shooters-per-pass blocks, fewer while few have unshot power, so passes cannot be counted.
+    const std::uint64_t target = std::uint64_t(solveFrames + 1) * o.shotsPerFrame;
+    while (!status.done && status.shots < target)
+      status = solver.advance(unsigned(std::min<std::uint64_t>(target - status.shots, o.shotsPerFrame)));
+    return status;
+  }
+  bool first = true;  // batches until the frame's budget is spent, at least one a frame
+  return advanceWhile(solver, status, batch, [&] { return std::exchange(first, false) || msSince(t0) < o.frameMs; });
+}
+
+// Hands the frame to the window once it took the last one; false when the viewer stops.
+bool publish(ViewerLink& link, ViewerFrame&& frame) {
+  {
+    std::unique_lock lock(link.mutex);
+    link.changed.wait(lock, [&] { return link.stop || !link.frame; });
+    if (link.stop) return false;
+    link.frame = std::move(frame);
+  }
+  link.wake();
+  return true;
 }
 
 void work(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
@@ -78,34 +106,14 @@ void work(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
       solver->look(c.camera, double(c.width) / c.height);
       status = solver->advance(0);  // a perspective-driven solve has entries to deliver again
     }
-    if (!c.paused && !status.done) {
-      if (o.shotsPerFrame) {
-        // Whole passes until k x N shots at this solve's k-th frame: a pass shoots up to
-        // --shooters-per-pass blocks, fewer while few have unshot power, so passes cannot be counted.
-        const std::uint64_t target = std::uint64_t(solveFrames + 1) * o.shotsPerFrame;
-        while (!status.done && status.shots < target)
-          status = solver->advance(unsigned(std::min<std::uint64_t>(target - status.shots, o.shotsPerFrame)));
-      } else {
-        do {  // batches until the frame's budget is spent
-          const auto b0 = Clock::now();
-          status = solver->advance(batch);
-          batch = nextBatch(batch, msSince(b0) * 1e-3);
-        } while (!status.done && msSince(t0) < o.frameMs);
-      }
-    }
+    if (!c.paused && !status.done) status = shootFrame(o, *solver, status, batch, solveFrames, t0);
     renderer->setAmbient(c.ambient);
     Image image = renderer->render(c.camera, c.width, c.height, 1);
     ViewerFrame frame{c.width, c.height, bottomUpRgba(toneMap(image, exposureScale(image, o.exposure)), c.width, c.height),
                       solver->algorithm(), status, msSince(t0)};
     shown = c;
     ++frames, ++solveFrames;
-    {
-      std::unique_lock lock(link.mutex);
-      link.changed.wait(lock, [&] { return link.stop || !link.frame; });
-      if (link.stop) return;
-      link.frame = std::move(frame);
-    }
-    link.wake();
+    if (!publish(link, std::move(frame))) return;
   }
 }
 

@@ -48,11 +48,8 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
     if (o.frameShots) {
       if (!status.done) status = solver.advance(o.frameShots);
     } else {
-      for (unsigned batch = 1; !status.done && elapsedMs() < o.frameMs;) {
-        const double before = elapsedMs();
-        status = solver.advance(batch);
-        batch = nextBatch(batch, (elapsedMs() - before) / 1e3);
-      }
+      unsigned batch = 1;
+      status = advanceWhile(solver, status, batch, [&] { return elapsedMs() < o.frameMs; });
     }
     solveMs += elapsedMs();
 

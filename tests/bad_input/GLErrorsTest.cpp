@@ -55,7 +55,7 @@ TEST_CASE("GL_OUT_OF_MEMORY allocating a buffer or texture is an error naming th
   CHECK_THROWS_WITH(gl::Buffer(std::size_t(1) << 42), Contains("out of GPU memory allocating a buffer of 4398046511104 bytes (4096.00 GiB)"));
   CHECK_THROWS_WITH(gl::Texture(GL_RGBA32F, 16384, 16384, 2048),
                     Contains("out of GPU memory allocating a 16384 x 16384 x 2048 GL_RGBA32F texture (8192.00 GiB)"));
-  CHECK(glGetError() == GL_NO_ERROR);
+  CHECK(gl::takeError() == 0);
   CHECK_NOTHROW(gl::Buffer(64));  // and the context goes on working
 }
 
@@ -65,17 +65,15 @@ TEST_CASE("With GL debug output every KHR_debug message is reported and a GL err
   std::string printed = captureStderr([&] {
     gl::enableDebugOutput();
     const char* low = "hemirad test: a low-severity message";
-    glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_OTHER, 1, GL_DEBUG_SEVERITY_LOW, -1, low);
-    glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_MARKER, 2, GL_DEBUG_SEVERITY_NOTIFICATION, -1,
-                         "hemirad test: a notification");
-    glBindBuffer(0xdead, 0);  // GL_INVALID_ENUM
+    gl::insertDebugMessage(1, false, low);
+    gl::insertDebugMessage(2, true, "hemirad test: a notification");
+    gl::Buffer().bind(0xdead);  // GL_INVALID_ENUM
     try {
       gl::checkErrors("the test");
     } catch (const gl::Error& e) {
       error = e.what();
     }
-    glDebugMessageCallback(nullptr, nullptr);
-    glDisable(GL_DEBUG_OUTPUT);
+    gl::disableDebugOutput();
   });
   INFO(printed);
   CHECK_THAT(printed, Contains("hemirad: GL debug: other (low, id 1): hemirad test: a low-severity message"));

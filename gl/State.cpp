@@ -1,0 +1,30 @@
+#include "gl/State.h"
+
+namespace hemirad::gl {
+
+namespace {
+void enable(GLenum cap, bool on) { on ? glEnable(cap) : glDisable(cap); }
+}  // namespace
+
+void RasterState::apply() const {
+  glViewport(0, 0, width, height);
+  enable(GL_DEPTH_TEST, depthTest);
+  glDepthFunc(GLenum(depthFunc));
+  glClipControl(GL_LOWER_LEFT, depthRange == DepthRange::Reversed ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+  glDepthMask(depthWrite ? GL_TRUE : GL_FALSE);
+  enable(GL_CULL_FACE, cullFaces);
+  enable(GL_CLIP_DISTANCE0, clipDistance0);
+}
+
+void barrier(Barrier bits) { glMemoryBarrier(GLbitfield(bits)); }
+
+void drawTriangles(std::size_t vertices, int instances) {
+  if (instances == 1)
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices));
+  else
+    glDrawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertices), instances);
+}
+
+void finish() { glFinish(); }
+
+}  // namespace hemirad::gl
