@@ -74,6 +74,23 @@ vec4 itemClipPosition(vec3 local, float farDistance, int face) {
 #endif
 }
 
+// The shooter-frame direction (not normalised) through item-buffer point ndc of layer `face`:
+// the inverse of the projection, for exact per-pixel depths (itembuffer.frag). Outside the
+// hemisphere's disc it returns the nearest horizon direction.
+vec3 itemDirection(vec2 ndc, int face) {
+#ifdef HEMICUBE
+  vec3 f = vec3(ndc, 1.0);  // inverse of cubeFace
+  if (face == 0) return f;
+  if (face == 1) return vec3(f.z, f.x, f.y);
+  if (face == 2) return vec3(-f.z, -f.x, f.y);
+  if (face == 3) return vec3(-f.x, f.z, f.y);
+  return vec3(f.x, -f.z, f.y);
+#else
+  float r2 = dot(ndc, ndc);
+  return r2 < 1.0 ? vec3(ndc, sqrt(1.0 - r2)) : vec3(ndc * inversesqrt(r2), 0.0);
+#endif
+}
+
 // The item-buffer texel (x, y, layer) a shooter-frame direction falls in.
 ivec3 itemTexel(vec3 local, ivec2 size) {
 #ifdef HEMICUBE

@@ -45,6 +45,10 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
   target_.attach(GL_DEPTH_ATTACHMENT, depth_);
   target_.checkComplete("item buffer");
   program_.set("farDistance", float(farDistance));
+  program_.set("faceSize", float(faceResolution_));
+  std::vector<glm::vec4> planes;
+  for (auto& p : scene.polygons()) planes.push_back(glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))));
+  planes_ = gl::Buffer(std::span<const glm::vec4>(planes));
 }
 
 void ItemBuffer::render(const gl::Buffer& control) {
@@ -56,6 +60,7 @@ void ItemBuffer::render(const gl::Buffer& control) {
   glDisable(GL_CULL_FACE);  // every face occludes from both sides
   glEnable(GL_CLIP_DISTANCE0);
   control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  planes_.bindBase(GL_SHADER_STORAGE_BUFFER, 12);
   program_.use();
   vao_.bind();
   glClearNamedFramebufferuiv(target_.id(), GL_COLOR, 0, clearId);  // every layer

@@ -49,6 +49,9 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(settings.shootLevel);
   blockCount_ = blocks.size();
   blocks_ = gl::Buffer(std::span<const ShooterBlock>(blocks));
+  std::vector<glm::ivec4> rects;
+  for (const ShooterBlock& b : blocks) rects.push_back(b.rect);
+  shapes_ = gl::Buffer(std::span<const glm::vec4>(shapeTable(state.scene, state.atlas, rects)));
   unsigned left = unsigned(blockCount_);
   for (; left > kGroupEntries; left = gl::groupsFor(left, kGroupEntries) * keep)
     levels_.emplace_back(gl::groupsFor(left, kGroupEntries) * keep * sizeof(float[4]));
@@ -182,6 +185,7 @@ void ProgressiveSolver::gatherPass(unsigned viewMode) {
   state_.deltaB.bindImage(1, GL_READ_WRITE);
   itemBuffer_->bindForLookup();
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, 11);
   gather_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
                         gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));
