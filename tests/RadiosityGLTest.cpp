@@ -37,7 +37,7 @@ TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho) wi
   // wall settles at E / (1 - rho); the disc approximation of DESIGN.md lost 2.3% here (rho 0.5:
   // 1.953 for 2). Batched passes (16 shooters from one unshot state) and shooting blocks must
   // reach the same answer.
-  for (auto [rho, shooters, level] : {std::tuple{0.5, 16, 0}, {0.6, 16, 0}, {0.5, 1, 2}}) {
+  for (auto [rho, shooters, level] : {std::tuple{0.5, 16, 0}, {0.5, 1, 2}}) {
     Scene s = furnace(rho, 1.0);
     ProgressiveSettings settings;
     settings.shootLevel = level;

@@ -91,6 +91,13 @@ double exactRowSum(const Scene& scene, const Atlas& a, size_t s) {
   return sum / a.positionArea[s].w;
 }
 
+double meanExactRowSum(const Scene& scene, const Atlas& a) {
+  double sigma = 0, area = 0;
+  for (std::size_t t = 0; t < a.polygonOf.size(); ++t)
+    if (a.polygonOf[t] != kNoPolygon) sigma += exactRowSum(scene, a, t) * a.positionArea[t].w, area += a.positionArea[t].w;
+  return sigma / area;
+}
+
 double meanDiscRowSum(const Scene& scene, const Atlas& a) {
   double sigma = 0, area = 0;
   for (std::size_t t = 0; t < a.polygonOf.size(); ++t)
