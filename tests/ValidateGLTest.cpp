@@ -1,5 +1,6 @@
 // The validation itself: the exact reference is exact where it must be, and on the Cornell box
-// the item buffer agrees better with the exact visibility as the item mesh is subdivided.
+// the item buffer agrees better with the exact visibility as the item mesh is subdivided, to
+// 99.9% overall and 99% at contacts at L = 4, and no light leaks above a lowered ceiling light.
 #include <catch2/catch.hpp>
 
 #include "src/validate/DenseSolver.h"
@@ -52,13 +53,16 @@ TEST_CASE("Cornell box: item-buffer visibility agreement rises with the item-mes
   REQUIRE(v.levels.size() == 3);
   for (const LevelStats& l : v.levels)
     INFO("L" << l.itemSubdivision << " agreement " << l.visibilityAgreement << " FF p95 " << l.ffRelErrorP95);
-  // Measured (16 shooters, 512^2): 0.932, 0.988, 0.995; FF median relative error 3e-4, p95 4e-3.
+  // Measured (16 shooters, 512^2): 0.925, 0.990, 0.9992, never falsely hidden (occluders are
+  // tested exactly; the curved projection's straight-edged item mesh only fails to nominate
+  // some at low L). Exact form factors: median relative error < 5e-5, p95 3e-4.
   CHECK(v.levels[0].visibilityAgreement < v.levels[1].visibilityAgreement);
   CHECK(v.levels[1].visibilityAgreement < v.levels[2].visibilityAgreement);
   CHECK(v.levels[0].visibilityAgreement > 0.90);
-  CHECK(v.levels[2].visibilityAgreement > 0.99);
-  CHECK(v.levels[2].ffRelErrorMedian < 1e-3);
-  CHECK(v.levels[2].ffRelErrorP95 < 0.01);
+  CHECK(v.levels[2].visibilityAgreement > 0.999);
+  for (const LevelStats& l : v.levels) CHECK(l.falseHidden == 0);
+  CHECK(v.levels[2].ffRelErrorMedian < 1e-4);
+  CHECK(v.levels[2].ffRelErrorP95 < 1e-3);
   CHECK(v.levels[1].itemTriangles * 16 == v.levels[2].itemTriangles);
   // Object form factors: the exact and GPU estimates of floor -> back wall agree to 2%.
   for (const auto& f : v.objectFormFactors)
@@ -74,8 +78,8 @@ TEST_CASE("Hemicube baseline: straight edges stay straight, so it agrees well wi
   Validation hemisphere = validate(s, atlas, o);
   o.projections = {Projection::Hemicube};
   Validation hemicube = validate(s, atlas, o);
-  // Measured at L = 0, equal 512^2 budgets: hemisphere 0.932, hemicube 0.996.
-  CHECK(hemicube.levels[0].visibilityAgreement > 0.99);
+  // Measured at L = 0, equal 512^2 budgets: hemisphere 0.925, hemicube 0.99999.
+  CHECK(hemicube.levels[0].visibilityAgreement > 0.999);
   CHECK(hemicube.levels[0].visibilityAgreement > hemisphere.levels[0].visibilityAgreement + 0.03);
   CHECK(hemicube.levels[0].ffRelErrorP95 < 0.01);
 }
