@@ -106,7 +106,11 @@ TEST_CASE("GLSL exact form factor (formfactor.glsl) equals cpu::pointToPolygon o
     cpu::Polygon poly;
     const int k = 3 + i % 6;
     for (int j = 0; j < k; ++j) poly.push_back(centre + std::cos(2 * M_PI * j / k) * a + std::sin(2 * M_PI * j / k) * b);
-    expect.push_back(cpu::pointToPolygon(x, n, poly, nf));
+    // The GPU gets the inputs rounded to float: the reference takes the same rounded inputs.
+    auto f = [](const glm::dvec3& d) { return glm::dvec3(glm::vec3(d)); };
+    cpu::Polygon rounded;
+    for (auto& v : poly) rounded.push_back(f(v));
+    expect.push_back(cpu::pointToPolygon(f(x), f(n), rounded, f(nf)));
     in.push_back(glm::vec4(glm::vec3(x), 0));
     in.push_back(glm::vec4(glm::vec3(n), float(k)));
     in.push_back(glm::vec4(glm::vec3(nf), 0));
@@ -123,8 +127,9 @@ TEST_CASE("GLSL exact form factor (formfactor.glsl) equals cpu::pointToPolygon o
   int zero = 0;
   for (int i = 0; i < cases; ++i) {
     INFO("case " << i << ": GLSL " << out[size_t(i)] << ", C++ " << expect[size_t(i)]);
-    // Float: the contour terms of a polygon subtending angle a lose ~1e-7 / a relative.
-    CHECK(std::abs(out[size_t(i)] - expect[size_t(i)]) <= 1e-4 * expect[size_t(i)] + 1e-9);
+    // Float: 1e-4 relative, and a millionth of the hemisphere absolute (F sums contour terms of
+    // order 1 for a near polygon, each rounded to ~1e-7 by float and GLSL's atan; measured < 6e-7).
+    CHECK(std::abs(out[size_t(i)] - expect[size_t(i)]) <= 1e-4 * expect[size_t(i)] + 1e-6);
     zero += expect[size_t(i)] == 0;
   }
   INFO(zero << " cases with F = 0");
