@@ -28,7 +28,8 @@ vec2 hemiProject(vec3 local) {
   return len > 0.0 ? local.xy / len : vec2(0.0);
 }
 
-// DESIGN.md's disc form factor: receiving element j from a shooter of area A_s at distance r.
+// DESIGN.md's disc form factor: receiving element j from a shooter of area A_s at distance r. Only
+// a fallback now (formfactor.glsl is exact), for shooter shapes over MAX_SHAPE_VERTICES vertices.
 float discFormFactor(float cosS, float cosR, float r2, float shooterArea) {
   return max(cosS, 0.0) * max(cosR, 0.0) * shooterArea / (PI * r2 + shooterArea);
 }
