@@ -186,7 +186,7 @@ TEST_CASE("A light hung 0.5 mm below the ceiling leaves the ceiling above it dar
   settings.shootLevel = 1;
   settings.shootersPerPass = 16;
   settings.stop.targetConvergence = 0.95;
-  const double ts = 556.0 / 40;
+  const double ts = 556.0 / 24;
   test::Solved r = test::solve(s, ts, settings);
   const double covered = test::object(r, "ceiling_above_light").mean.y;
   // Neighbours: ceiling texels within three elements of the light's outline.
