@@ -1,10 +1,9 @@
 // Visibility and form factor of a receiver element from a shooter of the pass. Needs
-// hemisphere.glsl, scene.glsl, control.glsl and formfactor.glsl. Texture units 2 (polygon ids)
-// and 3 (depth = distance / far, exact per pixel: itembuffer.frag), ITEM_FACES layers per
-// shooter; SSBO 11 the shooter blocks' shapes (SolverState's shapeTable).
+// hemisphere.glsl, scene.glsl, control.glsl and formfactor.glsl. Texture unit 2: polygon ids,
+// ITEM_FACES layers per shooter, each pixel the nearest surface by exact depth (itembuffer.frag;
+// the depths themselves are not read); SSBO 11 the shooter blocks' shapes (shapeTable).
 
 layout(binding = 2) uniform usampler2DArray itemId;
-layout(binding = 3) uniform sampler2DArray itemDepth;
 layout(std430, binding = 11) readonly buffer ShooterShapes { vec4 shooterShape[]; };
 uniform float farDistance;
 const int SHAPE_STRIDE = MAX_SHAPE_VERTICES + 1;

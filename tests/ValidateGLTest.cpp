@@ -55,14 +55,15 @@ TEST_CASE("Cornell box: item-buffer visibility agreement rises with the item-mes
     INFO("L" << l.itemSubdivision << " agreement " << l.visibilityAgreement << " FF p95 " << l.ffRelErrorP95);
   // Measured (16 shooters, 512^2): 0.925, 0.990, 0.9992, never falsely hidden (occluders are
   // tested exactly; the curved projection's straight-edged item mesh only fails to nominate
-  // some at low L). Exact form factors: median relative error < 5e-5, p95 3e-4.
+  // some at low L). Exact form factors: median relative error 2e-5, p95 4e-5 (the max: pairs
+  // whose centre visibility differs from the reference's stratified partial occlusion).
   CHECK(v.levels[0].visibilityAgreement < v.levels[1].visibilityAgreement);
   CHECK(v.levels[1].visibilityAgreement < v.levels[2].visibilityAgreement);
   CHECK(v.levels[0].visibilityAgreement > 0.90);
   CHECK(v.levels[2].visibilityAgreement > 0.999);
   for (const LevelStats& l : v.levels) CHECK(l.falseHidden == 0);
   CHECK(v.levels[2].ffRelErrorMedian < 1e-4);
-  CHECK(v.levels[2].ffRelErrorP95 < 1e-3);
+  CHECK(v.levels[2].ffRelErrorP95 < 2e-4);
   CHECK(v.levels[1].itemTriangles * 16 == v.levels[2].itemTriangles);
   // Object form factors: the exact and GPU estimates of floor -> back wall agree to 2%.
   for (const auto& f : v.objectFormFactors)
