@@ -1,4 +1,5 @@
-// Exact form factors, the CPU reference the GPU's disc approximation is checked against.
+// Exact form factors in double: the CPU reference, and the twin of shaders/formfactor.glsl (the
+// GPU gather's kernel, same clip and atan2 contour sum; tests/HemisphereTest compares them).
 #pragma once
 #include <functional>
 #include <glm/glm.hpp>

@@ -4,6 +4,7 @@
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "control.glsl"
+#include "formfactor.glsl"
 #include "visibility.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;

@@ -1,5 +1,6 @@
 // One pass, gathered at every receiver texel (seed 003 §39.2): for each shooter of the pass,
-// visibility from its item buffer, the disc form factor, and B += rho dB_s F, dB += rho dB_s F.
+// visibility from its item buffer, the exact form factor to its shape (formfactor.glsl), and
+// B += rho dB_s F, dB += rho dB_s F (by reciprocity the right quantity for shooting).
 // A shooter block's own dB is reset here (its texels are coplanar with it and receive nothing
 // from it, but do receive from the pass's other shooters). Importance (alpha: I in B, dI in
 // dB) travels the same way from importance shooters, reflected by luminance(rho) (seed 004).
@@ -9,6 +10,7 @@
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "control.glsl"
+#include "formfactor.glsl"
 #include "visibility.glsl"
 #ifdef PERSPECTIVE
 #include "perspective.glsl"

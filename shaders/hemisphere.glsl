@@ -28,7 +28,8 @@ vec2 hemiProject(vec3 local) {
   return len > 0.0 ? local.xy / len : vec2(0.0);
 }
 
-// The disc form factor (docs/design.md#form-factor): receiving element j from a shooter of area A_s at distance r.
+// The disc form factor (docs/design.md#form-factor): receiving element j from a shooter of area A_s at distance r. Only
+// a fallback now (formfactor.glsl is exact), for shooter shapes over MAX_SHAPE_VERTICES vertices.
 float discFormFactor(float cosS, float cosR, float r2, float shooterArea) {
   return max(cosS, 0.0) * max(cosR, 0.0) * shooterArea / (PI * r2 + shooterArea);
 }
@@ -71,6 +72,23 @@ vec4 itemClipPosition(vec3 local, float farDistance, int face) {
   return vec4(f.xy, depth * f.z, f.z);
 #else
   return vec4(hemiProject(local), depth, 1.0);
+#endif
+}
+
+// The shooter-frame direction (not normalised) through item-buffer point ndc of layer `face`:
+// the inverse of the projection, for exact per-pixel depths (itembuffer.frag). Outside the
+// hemisphere's disc it returns the nearest horizon direction.
+vec3 itemDirection(vec2 ndc, int face) {
+#ifdef HEMICUBE
+  vec3 f = vec3(ndc, 1.0);  // inverse of cubeFace
+  if (face == 0) return f;
+  if (face == 1) return vec3(f.z, f.x, f.y);
+  if (face == 2) return vec3(-f.z, -f.x, f.y);
+  if (face == 3) return vec3(-f.x, f.z, f.y);
+  return vec3(f.x, -f.z, f.y);
+#else
+  float r2 = dot(ndc, ndc);
+  return r2 < 1.0 ? vec3(ndc, sqrt(1.0 - r2)) : vec3(ndc * inversesqrt(r2), 0.0);
 #endif
 }
 

@@ -8,6 +8,7 @@
 layout(location = 0) in vec3 position;
 layout(location = 1) in uint polygon;
 flat out uint vPolygon;
+flat out int vLayer;
 uniform float farDistance;
 
 void main() {
@@ -15,6 +16,7 @@ void main() {
   int face = gl_InstanceID % ITEM_FACES;
   gl_Layer = gl_InstanceID;
   vPolygon = polygon;
+  vLayer = gl_InstanceID;
   if (!activeShooter(shooter)) {  // a short pass, or the stop rule fired: draw nothing
     gl_Position = vec4(0.0, 0.0, 0.0, -1.0);
     gl_ClipDistance[0] = -1.0;

@@ -4,12 +4,14 @@
 const uint NO_POLYGON = 0xFFFFFFFFu;
 
 struct Polygon {
-  vec4 normal;       // xyz unit front normal
+  vec4 normal;       // xyz unit front normal, w the plane offset n . p
   vec4 reflectance;  // rgb rho
   vec4 emission;     // rgb E
+  uvec4 vertices;    // first, count in polygonVertex (convex, counter-clockwise around the normal)
 };
 
 layout(std430, binding = 0) readonly buffer Polygons { Polygon polygons[]; };
+layout(std430, binding = 10) readonly buffer PolygonVertices { vec4 polygonVertex[]; };
 
 layout(binding = 0) uniform sampler2D atlasPositionArea;  // xyz element centre, w area (0: none)
 layout(binding = 1) uniform usampler2D atlasPolygon;      // polygon id or NO_POLYGON

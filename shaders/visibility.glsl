@@ -1,24 +1,51 @@
-// Visibility of a receiver element from a shooter of the pass, looked up in the item buffer.
-// Needs hemisphere.glsl and control.glsl. Texture units 2 (polygon ids) and 3 (depth =
-// distance / far), ITEM_FACES layers per shooter.
+// Visibility and form factor of a receiver element from a shooter of the pass. Needs
+// hemisphere.glsl, scene.glsl, control.glsl and formfactor.glsl. Texture unit 2: polygon ids,
+// ITEM_FACES layers per shooter, each pixel the nearest surface by exact depth (itembuffer.frag;
+// the depths themselves are not read); SSBO 11 the shooter blocks' shapes (shapeTable).
 
 layout(binding = 2) uniform usampler2DArray itemId;
-layout(binding = 3) uniform sampler2DArray itemDepth;
+layout(std430, binding = 11) readonly buffer ShooterShapes { vec4 shooterShape[]; };
 uniform float farDistance;
+const int SHAPE_STRIDE = MAX_SHAPE_VERTICES + 1;
 
-// The element's centre (`local`: in the shooter's frame) is projected into the shooter's item
-// buffer and the pixel under it read (point sampling, no filtering):
-//  - the pixel shows the element's own polygon: visible;
-//  - it shows another surface that is not nearer than the element by more than one element
-//    size (a neighbour across an edge, a corner, or nothing at all near the hemisphere rim,
-//    where the clipped item mesh leaves pixels empty): visible;
-//  - otherwise something nearer hides it: hidden.
-// So a partially hidden element is all-or-nothing, decided at its centre.
-float visibility(uint shooter, vec3 local, uint polygon, float elementSize) {
-  ivec3 texel = itemTexel(local, textureSize(itemId, 0).xy) + ivec3(0, 0, int(shooter) * ITEM_FACES);
-  if (texelFetch(itemId, texel, 0).r == polygon) return 1.0;
-  float seen = texelFetch(itemDepth, texel, 0).r * farDistance;
-  return seen >= length(local) - elementSize ? 1.0 : 0.0;
+// Whether polygon q blocks the segment from o to x: o and x lie strictly on opposite sides of
+// its plane (by more than eps, float rounding) and the crossing point lies inside it (convex,
+// counter-clockwise around its normal; a point on an edge counts as inside).
+bool blocksSegment(uint q, vec3 o, vec3 x, float eps) {
+  vec3 n = polygons[q].normal.xyz;
+  float so = dot(n, o) - polygons[q].normal.w, sx = dot(n, x) - polygons[q].normal.w;
+  if (!((so > eps && sx < -eps) || (so < -eps && sx > eps))) return false;
+  vec3 h = o + (x - o) * (so / (so - sx));
+  uvec2 r = polygons[q].vertices.xy;
+  for (uint i = 0u; i < r.y; ++i) {
+    vec3 a = polygonVertex[r.x + i].xyz, b = polygonVertex[r.x + (i + 1u) % r.y].xyz;
+    if (dot(cross(b - a, h - a), n) < 0.0) return false;
+  }
+  return true;
+}
+
+// Point visibility of x (on `polygon`) from the shooter's origin o, robust by construction
+// rather than by a depth tolerance: the item buffer only nominates occluders. The 3 x 3 pixels
+// around x's projection name the nearest surfaces along nearby rays; each named polygon is then
+// tested exactly against the segment o -> x. So a neighbour across a contact or concave corner,
+// which fills pixels next to x without crossing the segment, never shadows it, and an emitter
+// hung just below a ceiling hides the ceiling behind it however thin the gap, since the test
+// uses its plane and outline, not depths. What it can miss: an occluder narrower than a pixel
+// that no pixel centre of the window sees.
+float visibility(uint shooter, vec3 o, vec3 x, uint polygon) {
+  vec3 local = shooterLocal(x, o, control.shooter[shooter].normal.xyz);
+  ivec2 size = textureSize(itemId, 0).xy;
+  ivec3 centre = itemTexel(local, size) + ivec3(0, 0, int(shooter) * ITEM_FACES);
+  float eps = 4e-7 * farDistance;
+  uint tested = NO_POLYGON;
+  for (int k = 0; k < 9; ++k) {
+    ivec3 p = ivec3(clamp(centre.xy + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), size - 1), centre.z);
+    uint q = texelFetch(itemId, p, 0).r;
+    if (q == NO_POLYGON || q == polygon || q == tested) continue;
+    tested = q;
+    if (blocksSegment(q, o, x, eps)) return 0.0;
+  }
+  return 1.0;
 }
 
 // Receiver texel t (of `polygon`) lies in the block of shooter s: coplanar, it receives nothing.
@@ -27,19 +54,34 @@ bool inShooterBlock(uint s, ivec2 t, uint polygon) {
   return polygon == control.shooter[s].polygon && all(greaterThanEqual(t, r.xy)) && all(lessThan(t, r.xy + r.zw));
 }
 
+// Unoccluded form factor from the receiver point x (normal nr) to shooter s: exact (contour
+// integral over the block's shape, formfactor.glsl), or the disc formula for a shape too
+// complex for the table.
+float unoccludedFormFactor(uint s, vec3 x, vec3 nr) {
+  uint base = control.shooter[s].block * uint(SHAPE_STRIDE);
+  int count = int(shooterShape[base].x);
+  vec3 origin = control.shooter[s].positionArea.xyz, ns = control.shooter[s].normal.xyz;
+  if (count < 3) {
+    vec3 d = x - origin;
+    float r2 = dot(d, d);
+    vec3 w = d * inversesqrt(r2);
+    return discFormFactor(dot(ns, w), -dot(nr, w), r2, control.shooter[s].positionArea.w);
+  }
+  vec3 v[MAX_SHAPE_VERTICES];
+  for (int i = 0; i < MAX_SHAPE_VERTICES; ++i) v[i] = i < count ? shooterShape[base + 1u + uint(i)].xyz : vec3(0.0);
+  return pointToPolygon(x, nr, v, count, ns);
+}
+
 // Form factor from receiver element t (of `polygon`) to shooter s of the pass, visibility
-// included: docs/design.md#form-factor's V max(cos_s,0) max(cos_r,0) A_s / (pi r^2 + A_s). `facing` is false
-// when the pair cannot exchange light (behind either surface); then the visibility is not
-// looked up and `visible` is 0.
+// included: V(x, o) F(x -> shape_s), x the element's centroid, o the shooter's origin (its
+// item buffer's eye). `facing` is false when the pair cannot exchange light (x behind the
+// shooter's plane, or the shape behind x's); then the visibility is not looked up and
+// `visible` is 0.
 float shooterFormFactor(uint s, ivec2 t, uint polygon, out bool facing, out float visible) {
-  vec4 pa = texelFetch(atlasPositionArea, t, 0);
-  vec3 shooter = control.shooter[s].positionArea.xyz;
-  vec3 n = control.shooter[s].normal.xyz;
-  vec3 d = pa.xyz - shooter;
-  float r2 = dot(d, d);
-  vec3 w = d * inversesqrt(r2);
-  float cosS = dot(n, w), cosR = -dot(polygons[polygon].normal.xyz, w);
-  facing = cosS > 0.0 && cosR > 0.0;
-  visible = facing ? visibility(s, shooterLocal(pa.xyz, shooter, n), polygon, sqrt(pa.w)) : 0.0;
-  return visible * discFormFactor(cosS, cosR, r2, control.shooter[s].positionArea.w);
+  vec3 x = texelFetch(atlasPositionArea, t, 0).xyz;
+  vec3 origin = control.shooter[s].positionArea.xyz;
+  float F = unoccludedFormFactor(s, x, polygons[polygon].normal.xyz);
+  facing = F > 0.0 && dot(x - origin, control.shooter[s].normal.xyz) > 0.0;
+  visible = facing ? visibility(s, origin, x, polygon) : 0.0;
+  return visible * F;
 }

@@ -1,9 +1,10 @@
-// The GPU pipeline (item buffer + disc form factor + gather) against Howell's closed forms.
+// The GPU pipeline (item buffer + exact form factor to each shooter's shape + gather) against Howell's closed forms.
 // An emitter (rho 0, E 1) shoots each of its elements once; the receiver's area-weighted mean
 // B / rho is then its form factor to the emitter, and F_emitter->receiver follows by reciprocity.
 #include <catch2/catch.hpp>
 
 #include "cpu/Analytic.h"
+#include "cpu/ExactFormFactor.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
@@ -11,14 +12,16 @@ using namespace hemirad;
 namespace {
 constexpr double kRho = 0.5;
 
-double gpuFormFactor(const Scene& s, double texelSize, int itemSubdivision) {
+// The emitter shoots once per block of 2^shootLevel x 2^shootLevel elements, nothing else.
+double gpuFormFactor(const Scene& s, double texelSize, int itemSubdivision, int shootLevel = 0) {
   Atlas probe = buildAtlas(s, texelSize);
   unsigned emitterElements = 0;
-  for (std::uint32_t p : probe.polygonOf) emitterElements += p != kNoPolygon && s.polygons()[p].object == 0;
+  for (const ShooterBlock& b : probe.shooterBlocks(shootLevel))
+    emitterElements += s.polygons()[probe.polygonOf[size_t(b.rect.y) * probe.width + b.rect.x]].object == 0;
   ProgressiveSettings settings;
-  settings.shootLevel = 0;  // element by element
+  settings.shootLevel = shootLevel;
   settings.itemSubdivision = itemSubdivision;
-  settings.stop.maxShots = emitterElements;  // every emitter element shoots once, nothing else
+  settings.stop.maxShots = emitterElements;
   test::Solved r = test::solve(s, texelSize, settings);
   REQUIRE(r.status.shots == emitterElements);
   const ObjectRadiosity& receiver = test::object(r, "receiver");
@@ -34,7 +37,7 @@ Scene twoPatches(const Poly3& emitter, const Poly3& receiver) {
 }
 }  // namespace
 
-TEST_CASE("GPU form factor between parallel opposed rectangles matches Howell C-11 within 0.2%", "[gl]") {
+TEST_CASE("GPU form factor between parallel opposed rectangles matches Howell C-11 within 0.3%", "[gl]") {
   // a x b rectangles at distance c: (a, b, c) of several aspect ratios.
   for (auto [a, b, c] : {std::tuple{1.0, 1.0, 1.0}, {2.0, 1.0, 1.0}, {1.0, 1.0, 0.5}, {3.0, 1.0, 2.0}}) {
     Scene s = twoPatches(test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, a, b),
@@ -42,11 +45,12 @@ TEST_CASE("GPU form factor between parallel opposed rectangles matches Howell C-
     double exact = cpu::parallelRectangles(a, b, c);
     double gpu = gpuFormFactor(s, std::min(a, b) / 24, 3);
     INFO("a=" << a << " b=" << b << " c=" << c << " exact " << exact << " gpu " << gpu);
-    CHECK(gpu == Approx(exact).epsilon(0.002));
+    CHECK(gpu == Approx(exact).epsilon(0.003));
   }
 }
 
-TEST_CASE("GPU form factor between perpendicular rectangles sharing an edge matches Howell C-14 within 1.5%", "[gl]") {
+TEST_CASE("GPU form factor between perpendicular rectangles sharing an edge matches Howell C-14 within 0.3%", "[gl]") {
+  // The disc form factor was 0.6-0.9% low here (1x1x1: 0.19823 for 0.20004).
   // Emitter on the floor (l along x, w along z), receiver wall (l along x, h along y).
   for (auto [l, w, h] : {std::tuple{1.0, 1.0, 1.0}, {2.0, 1.0, 1.0}, {1.0, 2.0, 0.5}}) {
     Scene s = twoPatches(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, w, l),
@@ -54,7 +58,7 @@ TEST_CASE("GPU form factor between perpendicular rectangles sharing an edge matc
     double exact = cpu::perpendicularRectangles(l, w, h);
     double gpu = gpuFormFactor(s, std::min({l, w, h}) / 24, 3);
     INFO("l=" << l << " w=" << w << " h=" << h << " exact " << exact << " gpu " << gpu);
-    CHECK(gpu == Approx(exact).epsilon(0.015));
+    CHECK(gpu == Approx(exact).epsilon(0.003));
   }
 }
 
@@ -66,4 +70,56 @@ TEST_CASE("Form factors converge to Howell's as elements shrink", "[gl]") {
   double fine = std::abs(gpuFormFactor(s, 1.0 / 24, 3) - exact);
   INFO("error at 1/6: " << coarse << ", at 1/24: " << fine);
   CHECK(fine < coarse);
+}
+
+TEST_CASE("Shooting blocks of 1, 4, 16 or 64 elements gives the same form factor within 0.2%", "[gl]") {
+  // A block shoots over its exact shape, so only the receiver side (centroids) is discretised:
+  // the answer must not depend on the shoot level. (The disc form factor of a whole block
+  // under-counted near receivers more and more as blocks grew.)
+  Scene s = twoPatches(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1, 1),
+                       test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1, 1));
+  const double exact = cpu::perpendicularRectangles(1, 1, 1);
+  const double level0 = gpuFormFactor(s, 1.0 / 16, 3, 0);
+  for (int level : {1, 2, 3}) {
+    double gpu = gpuFormFactor(s, 1.0 / 16, 3, level);
+    INFO("level " << level << ": " << gpu << ", level 0: " << level0 << ", Howell " << exact);
+    CHECK(gpu == Approx(level0).epsilon(0.002));
+    CHECK(gpu == Approx(exact).epsilon(0.003));
+  }
+}
+
+TEST_CASE("GPU form factor between parallel plates with a plate between them matches the exact shadowed one within 0.3%",
+          "[gl]") {
+  // Unit squares at z = 0 (emitter, facing +z) and z = 1 (receiver), an occluder [o0, o1] at
+  // height zo between them. From a receiver point x the occluder hides its central projection
+  // onto the emitter's plane, x + (O - x) / (1 - zo), so the shadowed form factor is exact:
+  // F(x -> E) - F(x -> E cut by that rectangle). The occluder is placed off the element grid:
+  // a shadow edge through element centres would make centre visibility a tie.
+  const glm::dvec2 o0(0.3, 0.27), o1(0.7, 0.71);
+  const double zo = 0.4;
+  Scene s;
+  s.addPolygon(test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1, 1), test::material(s, 0.0, 1.0), s.addObject("emitter"));
+  s.addPolygon(test::rectangle({0, 0, 1}, {0, 1, 0}, {1, 0, 0}, 1, 1), test::material(s, kRho, 0.0), s.addObject("receiver"));
+  s.addPolygon(test::rectangle({o0.x, o0.y, zo}, {1, 0, 0}, {0, 1, 0}, o1.x - o0.x, o1.y - o0.y), test::material(s, 0.0, 0.0),
+               s.addObject("occluder"));
+  const double texel = 1.0 / 24;
+  const double gpu = gpuFormFactor(s, texel, 3);
+  const Atlas atlas = buildAtlas(s, texel);
+  const cpu::Polygon emitter = s.polygons()[0].vertices;
+  double sum = 0, unblocked = 0;
+  for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t) {
+    if (atlas.polygonOf[t] != 1) continue;
+    const glm::dvec3 x(atlas.positionArea[t]), n(0, 0, -1);
+    const glm::dvec2 xy(x);
+    Poly2 cut = clipToBox({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, xy + (o0 - xy) / (1 - zo), xy + (o1 - xy) / (1 - zo));
+    cpu::Polygon shadow;
+    for (auto& q : cut) shadow.push_back({q.x, q.y, 0});
+    const double open = cpu::pointToPolygon(x, n, emitter, {0, 0, 1});
+    sum += (open - (shadow.size() >= 3 ? cpu::pointToPolygon(x, n, shadow, {0, 0, 1}) : 0.0)) * atlas.positionArea[t].w;
+    unblocked += open * atlas.positionArea[t].w;
+  }
+  INFO("gpu " << gpu << ", exact shadowed " << sum << ", unblocked " << unblocked << " (Howell "
+              << cpu::parallelRectangles(1, 1, 1) << ")");
+  REQUIRE(sum < 0.8 * unblocked);  // the occluder matters
+  CHECK(gpu == Approx(sum).epsilon(0.003));
 }

@@ -52,13 +52,13 @@ TEST_CASE("Importance propagates as radiosity does: in a closed grey box it sums
           "[gl][importance]") {
   // The furnace cube (rho 0.5) seen from inside. Importance is shot like radiosity and reflected
   // by rho, so once it is all shot sum I A = sum R A / (1 - rho sigma), sigma the share of a shot
-  // that the disc form factors hand on (computed on the CPU).
+  // that the exact form factors hand on (computed on the CPU; 1 up to the centroid rule).
   Scene s = load("scenes/analytic/furnace.obj");
   Camera c = parseCamera("eye=0.5,0.5,0.05 target=0.5,0.5,1 fov=70", Camera{}, "camera");
   ProgressiveSettings settings = importanceDriven(0, 0.999);
   settings.shootLevel = 0;
   test::Solved r = test::solve(s, 1.0 / 8, settings, &c);
-  const double sigma = test::meanDiscRowSum(s, r.atlas);
+  const double sigma = test::meanExactRowSum(s, r.atlas);
   double direct = areaSum(r.atlas, [&](std::size_t t) { return double(r.direct[t]); });
   double total = areaSum(r.atlas, [&](std::size_t t) { return double(r.B[t].a); });
   double unshot = areaSum(r.atlas, [&](std::size_t t) { return std::abs(double(r.dB[t].a)); });

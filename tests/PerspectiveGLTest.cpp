@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "cpu/ExactFormFactor.h"
 #include "cpu/Hemisphere.h"
 #include "tests/support/Support.h"
 
@@ -43,12 +44,8 @@ FacePower facePower(const Scene& s, const Atlas& a, const SolverState& state) {
     double gathered = 0;
     for (std::size_t L = 0; L < B.size(); ++L) {
       if (a.polygonOf[L] == kNoPolygon || a.polygonOf[L] == face) continue;
-      const glm::dvec3 d = pj - glm::dvec3(a.positionArea[L]);
-      const double r2 = glm::dot(d, d);
-      const glm::dvec3 w = d / std::sqrt(r2);
-      gathered += cpu::discFormFactor(glm::dot(s.polygons()[a.polygonOf[L]].normal, w), -glm::dot(nj, w), r2,
-                                      a.positionArea[L].w) *
-                  (B[L].x - dB[L].x);
+      const Poly3 shape = a.elementShape(s, int(L % a.width), int(L / a.width));
+      gathered += cpu::pointToPolygon(pj, nj, shape, s.polygons()[a.polygonOf[L]].normal) * (B[L].x - dB[L].x);
     }
     out.held[face] += B[j].x * a.positionArea[j].w;
     out.shotAt[face] += kRho * gathered * a.positionArea[j].w;

@@ -32,30 +32,22 @@ TEST_CASE("Test furnace faces all point into the box", "[cpu]") {
   }
 }
 
-TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho sigma), sigma the disc row sum",
-          "[gl]") {
-  // With exact form factors every element hands on all it shoots (sigma = 1) and B = E / (1 - rho)
-  // everywhere. The disc approximation hands on sigma < 1 (computed here on the CPU), so the
-  // GPU solution must match E / (1 - rho sigma) tightly, and E / (1 - rho) to within what sigma
-  // allows.
-  // Batched passes (16 shooters from one unshot state) must reach the same answer.
-  for (auto [rho, shooters] : {std::pair{0.3, 1}, std::pair{0.6, 1}, std::pair{0.6, 16}}) {
+TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho) within 0.1%", "[gl]") {
+  // Exact form factors hand on everything a shooter emits in a closed box (row sum 1), so every
+  // wall settles at E / (1 - rho); the disc approximation (docs/design.md#form-factor) lost 2.3% here (rho 0.5:
+  // 1.953 for 2). Batched passes (16 shooters from one unshot state) and shooting blocks must
+  // reach the same answer.
+  for (auto [rho, shooters, level] : {std::tuple{0.5, 16, 0}, {0.5, 1, 2}}) {
     Scene s = furnace(rho, 1.0);
     ProgressiveSettings settings;
-    settings.shootLevel = 0;
+    settings.shootLevel = level;
     settings.shootersPerPass = shooters;
-    settings.stop.targetConvergence = 0.9995;
-    test::Solved r = test::solve(s, 1.0 / 10, settings);
-    double sigma = 0, area = 0;
-    for (size_t t = 0; t < r.B.size(); ++t)
-      if (r.atlas.polygonOf[t] != kNoPolygon)
-        sigma += test::discRowSum(s, r.atlas, t) * r.atlas.positionArea[t].w, area += r.atlas.positionArea[t].w;
-    sigma /= area;
-    double mean = test::object(r, "box").mean.x, exact = 1 / (1 - rho), disc = 1 / (1 - rho * sigma);
-    INFO("rho " << rho << ", " << shooters << " shooters a pass: mean B " << mean << " after " << r.status.shots << " shots; E/(1-rho) " << exact
-                << ", E/(1-rho sigma) " << disc << " with sigma " << sigma);
-    CHECK(mean == Approx(disc).epsilon(0.001));
-    CHECK(mean == Approx(exact).epsilon(0.025));
+    settings.stop.targetConvergence = 0.9995;  // what is left unshot lowers B by < 0.05%
+    test::Solved r = test::solve(s, 1.0 / 8, settings);
+    double mean = test::object(r, "box").mean.x, exact = 1 / (1 - rho);
+    INFO("rho " << rho << ", " << shooters << " shooters a pass, level " << level << ": mean B " << mean << " after "
+                << r.status.shots << " shots; E/(1-rho) " << exact);
+    CHECK(mean == Approx(exact).epsilon(0.001));
   }
 }
 
@@ -63,7 +55,8 @@ TEST_CASE("Energy is conserved: in a closed box every shot delivers what its for
   // A black lamp (rho 0, E 1, 100 elements) on the ceiling of a grey box. Lamp elements have the
   // largest unshot power, so the first 100 shots are exactly the lamp's. Walls hold
   // B = rho * irradiance, so sum B A / rho is the power received; it must equal what the shots
-  // handed on, sum_s sigma_s E A_s, and come within the disc approximation of the power shot (1).
+  // handed on, sum_s sigma_s E A_s (sigma_s the exact row sum of what the gather computes), and
+  // the power shot (1) to within the centroid rule's error (measured 0.1%).
   // Passes of 20 shooters hand on the same: the lamp's 100 elements in 5 passes.
   const double rho = 0.5;
   const int shooters = GENERATE(1, 20);
@@ -82,14 +75,14 @@ TEST_CASE("Energy is conserved: in a closed box every shot delivers what its for
     if (r.atlas.polygonOf[t] == 1) {
       CHECK(r.dB[t].x == 0.0f);
       shot += A;
-      handedOn += test::discRowSum(s, r.atlas, t) * A;
+      handedOn += test::exactRowSum(s, r.atlas, t) * A;
     } else {
       received += r.B[t].x * A / rho;
     }
   }
   INFO("shot " << shot << ", handed on " << handedOn << ", received " << received);
   CHECK(received == Approx(handedOn).epsilon(0.002));
-  CHECK(received == Approx(shot).epsilon(0.02));
+  CHECK(received == Approx(shot).epsilon(0.003));
   // Convergence is what is no longer unshot: all that was shot, less rho * received now unshot.
   CHECK(r.status.convergence == Approx(shot - rho * received).margin(1e-4));
   CHECK(r.status.convergence == Approx(convergenceOf(s, r)).margin(1e-5));

@@ -1,5 +1,6 @@
 // The validation itself: the exact reference is exact where it must be, and on the Cornell box
-// the item buffer agrees better with the exact visibility as the item mesh is subdivided.
+// the item buffer agrees better with the exact visibility as the item mesh is subdivided, to
+// 99.9% overall and 99% at contacts at L = 4, and no light leaks above a lowered ceiling light.
 #include <catch2/catch.hpp>
 
 #include "src/validate/DenseSolver.h"
@@ -52,13 +53,17 @@ TEST_CASE("Cornell box: item-buffer visibility agreement rises with the item-mes
   REQUIRE(v.levels.size() == 3);
   for (const LevelStats& l : v.levels)
     INFO("L" << l.itemSubdivision << " agreement " << l.visibilityAgreement << " FF p95 " << l.ffRelErrorP95);
-  // Measured (16 shooters, 512^2): 0.932, 0.988, 0.995; FF median relative error 3e-4, p95 4e-3.
+  // Measured (16 shooters, 512^2): 0.925, 0.990, 0.9992, never falsely hidden (occluders are
+  // tested exactly; the curved projection's straight-edged item mesh only fails to nominate
+  // some at low L). Exact form factors: median relative error 2e-5, p95 4e-5 (the max: pairs
+  // whose centre visibility differs from the reference's stratified partial occlusion).
   CHECK(v.levels[0].visibilityAgreement < v.levels[1].visibilityAgreement);
   CHECK(v.levels[1].visibilityAgreement < v.levels[2].visibilityAgreement);
   CHECK(v.levels[0].visibilityAgreement > 0.90);
-  CHECK(v.levels[2].visibilityAgreement > 0.99);
-  CHECK(v.levels[2].ffRelErrorMedian < 1e-3);
-  CHECK(v.levels[2].ffRelErrorP95 < 0.01);
+  CHECK(v.levels[2].visibilityAgreement > 0.999);
+  for (const LevelStats& l : v.levels) CHECK(l.falseHidden == 0);
+  CHECK(v.levels[2].ffRelErrorMedian < 1e-4);
+  CHECK(v.levels[2].ffRelErrorP95 < 2e-4);
   CHECK(v.levels[1].itemTriangles * 16 == v.levels[2].itemTriangles);
   // Object form factors: the exact and GPU estimates of floor -> back wall agree to 2%.
   for (const auto& f : v.objectFormFactors)
@@ -74,8 +79,8 @@ TEST_CASE("Hemicube baseline: straight edges stay straight, so it agrees well wi
   Validation hemisphere = validate(s, atlas, o);
   o.projections = {Projection::Hemicube};
   Validation hemicube = validate(s, atlas, o);
-  // Measured at L = 0, equal 512^2 budgets: hemisphere 0.932, hemicube 0.996.
-  CHECK(hemicube.levels[0].visibilityAgreement > 0.99);
+  // Measured at L = 0, equal 512^2 budgets: hemisphere 0.925, hemicube 0.99999.
+  CHECK(hemicube.levels[0].visibilityAgreement > 0.999);
   CHECK(hemicube.levels[0].visibilityAgreement > hemisphere.levels[0].visibilityAgreement + 0.03);
   CHECK(hemicube.levels[0].ffRelErrorP95 < 0.01);
 }
@@ -97,4 +102,106 @@ TEST_CASE("Dense exact solver: a closed box of emitting grey walls gives B = E /
     if (atlas.polygonOf[t] != kNoPolygon) worst = std::max(worst, std::abs(d.B[t].x - 2.5) / 2.5);
   INFO("iterations " << d.iterations << ", worst relative error " << worst);
   CHECK(worst < 1e-5);
+}
+
+namespace {
+// Texels within `width` elements of a contact: an edge of one object's polygon lying in the
+// plane of another object's polygon (the blocks' bottoms on the floor, and every room corner).
+std::vector<bool> contactBand(const Scene& s, const Atlas& atlas, double width) {
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
+  const double tol = 1e-6 * glm::length(s.boundsMax() - s.boundsMin());
+  for (const auto& p : s.polygons())
+    for (size_t i = 0; i < p.vertices.size(); ++i) {
+      glm::dvec3 a = p.vertices[i], b = p.vertices[(i + 1) % p.vertices.size()];
+      for (const auto& q : s.polygons())
+        if (q.object != p.object && std::abs(glm::dot(a - q.vertices[0], q.normal)) < tol &&
+            std::abs(glm::dot(b - q.vertices[0], q.normal)) < tol) {
+          edges.emplace_back(a, b);
+          break;
+        }
+    }
+  std::vector<bool> band(atlas.polygonOf.size(), false);
+  for (size_t t = 0; t < band.size(); ++t) {
+    if (atlas.polygonOf[t] == kNoPolygon) continue;
+    glm::dvec3 x(atlas.positionArea[t]);
+    for (auto& [a, b] : edges) {
+      double u = glm::clamp(glm::dot(x - a, b - a) / glm::dot(b - a, b - a), 0.0, 1.0);
+      band[t] = band[t] || glm::length(x - (a + u * (b - a))) < width * atlas.texelSize;
+    }
+  }
+  return band;
+}
+}  // namespace
+
+TEST_CASE("Cornell box at L = 4: visibility agrees with CGAL on 99.9% of pairs and 99% within two elements of contacts",
+          "[gl]") {
+  test::backend();
+  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2500));
+  SolverState state(s, atlas);
+  FormFactorProbe probe(state, 4, 512, Projection::Hemisphere);
+  ExactReference reference(s, atlas);
+  const std::vector<bool> band = contactBand(s, atlas, 2.0);
+  std::size_t pairs = 0, agree = 0, bandPairs = 0, bandAgree = 0, bandHidden = 0;
+  for (std::size_t shooter : chooseShooters(atlas, 24)) {
+    std::vector<ProbeSample> gpu = probe.fromShooter(shooter);
+    std::vector<PairSample> exact = reference.fromShooter(shooter);
+    for (std::size_t t = 0; t < gpu.size(); ++t) {
+      if (!exact[t].facing) continue;
+      bool same = (gpu[t].visible > 0.5f) == exact[t].visible;
+      ++pairs, agree += same;
+      if (band[t]) ++bandPairs, bandAgree += same, bandHidden += !exact[t].visible;
+    }
+  }
+  const double overall = double(agree) / double(pairs), contact = double(bandAgree) / double(bandPairs);
+  INFO(pairs << " pairs, agreement " << overall << "; " << bandPairs << " in the contact band (" << bandHidden
+             << " hidden), agreement " << contact);
+  REQUIRE(bandHidden > 100);  // the band holds shadowed pairs: agreement there is not trivial
+  CHECK(overall >= 0.999);
+  CHECK(contact >= 0.99);
+}
+
+TEST_CASE("A light hung 0.5 mm below the ceiling leaves the ceiling above it dark", "[gl]") {
+  // The Cornell box with the light lowered by 0.5 mm and the ceiling closed above it: no point
+  // below the light's plane sees the ceiling piece it covers, so that piece receives only what
+  // reaches it from the 0.5 mm gap (nothing at this element size). The old depth tolerance of
+  // one element let light in there (B ~ 0.14, about the ceiling's own level).
+  test::backend();
+  Scene cornell = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  Scene s;
+  for (const auto& m : cornell.materials) s.addMaterial(m);
+  glm::dvec3 lo(1e30), hi(-1e30);
+  int white = 0;
+  for (const auto& p : cornell.polygons()) {
+    Poly3 v = p.vertices;
+    const std::string& name = cornell.objects[p.object].name;
+    if (name == "light")
+      for (auto& q : v) q.y -= 0.5, lo = glm::min(lo, q), hi = glm::max(hi, q);
+    if (name == "ceiling") white = p.material;
+    s.addPolygon(v, p.material, s.addObject(name));
+  }
+  s.addPolygon({{lo.x, 548.8, lo.z}, {hi.x, 548.8, lo.z}, {hi.x, 548.8, hi.z}, {lo.x, 548.8, hi.z}}, white,
+               s.addObject("ceiling_above_light"));
+  REQUIRE(s.polygons().back().normal.y < 0);  // faces down, into the room
+  ProgressiveSettings settings;
+  settings.shootLevel = 1;
+  settings.shootersPerPass = 16;
+  settings.stop.targetConvergence = 0.95;
+  const double ts = 556.0 / 24;
+  test::Solved r = test::solve(s, ts, settings);
+  const double covered = test::object(r, "ceiling_above_light").mean.y;
+  // Neighbours: ceiling texels within three elements of the light's outline.
+  double ring = 0, area = 0;
+  for (size_t t = 0; t < r.B.size(); ++t) {
+    if (r.atlas.polygonOf[t] == kNoPolygon || s.objects[s.polygons()[r.atlas.polygonOf[t]].object].name != "ceiling")
+      continue;
+    glm::dvec3 x(r.atlas.positionArea[t]);
+    if (x.x > lo.x - 3 * ts && x.x < hi.x + 3 * ts && x.z > lo.z - 3 * ts && x.z < hi.z + 3 * ts)
+      ring += r.B[t].y * r.atlas.positionArea[t].w, area += r.atlas.positionArea[t].w;
+  }
+  REQUIRE(area > 0);
+  ring /= area;
+  INFO("ceiling above the light: B " << covered << ", its neighbours " << ring);
+  CHECK(ring > 0.05);
+  CHECK(covered < 0.01 * ring);
 }

@@ -202,15 +202,21 @@ glm::dvec2 Atlas::atlasCoord(int polygon, const glm::dvec3& p) const {
 }
 
 Poly3 Atlas::elementShape(const Scene& scene, int x, int y) const {
-  std::uint32_t id = polygonOf[size_t(y) * width + x];
+  if (polygonOf[size_t(y) * width + x] == kNoPolygon) return {};
+  return blockShape(scene, glm::ivec4(x, y, 1, 1));
+}
+
+Poly3 Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const {
+  std::uint32_t id = kNoPolygon;
+  for (int y = rect.y; y < rect.y + rect.w && id == kNoPolygon; ++y)
+    for (int x = rect.x; x < rect.x + rect.z && id == kNoPolygon; ++x) id = polygonOf[size_t(y) * width + x];
   if (id == kNoPolygon) return {};
   const Chart& c = charts[id];
   Poly2 poly;
   for (auto& v : scene.polygons()[id].vertices) poly.push_back(c.frame.project(v));
-  glm::dvec2 cell(x - c.origin.x, y - c.origin.y);
+  glm::dvec2 lo(rect.x - c.origin.x, rect.y - c.origin.y), hi = lo + glm::dvec2(rect.z, rect.w);
   Poly3 out;
-  for (auto& q : clipToBox(poly, c.corner + cell * texelSize, c.corner + (cell + 1.0) * texelSize))
-    out.push_back(c.frame.lift(q));
+  for (auto& q : clipToBox(poly, c.corner + lo * texelSize, c.corner + hi * texelSize)) out.push_back(c.frame.lift(q));
   return out;
 }
 

@@ -42,6 +42,9 @@ class Atlas {
   glm::dvec2 atlasCoord(int polygon, const glm::dvec3& p) const;
   // The element cut of texel (x, y) as a polygon in 3D (empty if none). Used by outputs and tests.
   Poly3 elementShape(const Scene& scene, int x, int y) const;
+  // The part of the polygon under an atlas rectangle of one chart (x, y, w, h): what a shooter
+  // block emits from (convex for a convex polygon; elementShape for a 1 x 1 block).
+  Poly3 blockShape(const Scene& scene, glm::ivec4 rect) const;
   std::vector<ShooterBlock> shooterBlocks(int level) const;
   // Blocks of 2^polygonLevel[p] texels a side on polygon p's chart.
   std::vector<ShooterBlock> shooterBlocks(const std::vector<int>& polygonLevel) const;

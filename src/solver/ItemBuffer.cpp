@@ -46,12 +46,17 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
   target_.attach(GL_DEPTH_ATTACHMENT, depth_);
   target_.checkComplete("item buffer");
   program_.set("farDistance", float(farDistance));
+  program_.set("faceSize", float(faceResolution_));
+  std::vector<glm::vec4> planes;
+  for (auto& p : scene.polygons()) planes.push_back(glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))));
+  planes_ = gl::Buffer(std::span<const glm::vec4>(planes));
 }
 
 void ItemBuffer::render(const gl::Buffer& control) {
   // Every face occludes from both sides (no culling); the hemisphere clips at the horizon.
   gl::RasterState{.width = faceResolution_, .height = faceResolution_, .clipDistance0 = true}.apply();
   control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  planes_.bindBase(GL_SHADER_STORAGE_BUFFER, 12);
   program_.use();
   vao_.bind();
   target_.clearColor(kNoPolygon);  // every layer

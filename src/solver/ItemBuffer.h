@@ -42,6 +42,7 @@ class ItemBuffer {
   gl::Defines defines_;
   gl::Program program_;
   gl::Buffer vertices_;
+  gl::Buffer planes_;  // per polygon: unit normal, offset n . p (exact depths)
   gl::VertexArray vao_;
   gl::Texture id_, depth_;
   gl::Framebuffer target_;  // layered: the vertex shader picks the layer

@@ -42,7 +42,11 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   const bool perspective = settings.algorithm == Algorithm::Perspective;
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
   plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution);
-  setUpReduction(state.atlas.shooterBlocks(plan_.polygonLevel), keep, defines);
+  const std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(plan_.polygonLevel);
+  setUpReduction(blocks, keep, defines);
+  std::vector<glm::ivec4> rects;
+  for (const ShooterBlock& b : blocks) rects.push_back(b.rect);
+  shapes_ = gl::Buffer(std::span<const glm::vec4>(shapeTable(state.scene, state.atlas, rects)));
 
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
   itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, plan_.itemResolution,
@@ -188,6 +192,7 @@ void ProgressiveSolver::gatherPass(Receivers receivers) {
   state_.deltaB.bindImage(1, GL_READ_WRITE);
   itemBuffer_->bindForLookup();
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, 11);
   gather_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
                         gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));

@@ -103,6 +103,7 @@ class ProgressiveSolver final : public Solver {
   ShootingPlan plan_;
   gl::Program reduce_, select_, gather_;
   gl::Buffer blocks_, control_;
+  gl::Buffer shapes_;  // per block: its exact shape (shapeTable), what the gather integrates over
   std::unique_ptr<ItemBuffer> itemBuffer_;
   std::unique_ptr<ImportanceView> view_;  // importance-driven solves only
   std::unique_ptr<PerspectiveView> perspective_;  // perspective-driven solves only

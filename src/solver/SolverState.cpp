@@ -9,7 +9,8 @@ namespace hemirad {
 
 namespace {
 struct GpuPolygon {
-  glm::vec4 normal, reflectance, emission;
+  glm::vec4 plane, reflectance, emission;  // plane: unit normal, offset n . p
+  glm::uvec4 vertices;                     // first, count in polygonVertices
 };
 }  // namespace
 
@@ -21,12 +22,16 @@ SolverState::SolverState(const Scene& s, const Atlas& a)
       radiosity(GL_RGBA32F, a.width, a.height),
       deltaB(GL_RGBA32F, a.width, a.height) {
   std::vector<GpuPolygon> table;
+  std::vector<glm::vec4> vertices;
   for (auto& p : s.polygons()) {
     const Material& m = s.materials[p.material];
-    table.push_back({glm::vec4(glm::vec3(p.normal), 0), glm::vec4(glm::vec3(m.reflectance), 0),
-                     glm::vec4(glm::vec3(m.emission), 0)});
+    table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
+                     glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
+                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), 0, 0)});
+    for (auto& v : p.vertices) vertices.push_back(glm::vec4(glm::vec3(v), 1));
   }
   polygons = gl::Buffer(std::span<const GpuPolygon>(table));
+  polygonVertices = gl::Buffer(std::span<const glm::vec4>(vertices));
   positionArea.upload(GL_RGBA, GL_FLOAT, a.positionArea.data());
   polygonOf.upload(GL_RED_INTEGER, GL_UNSIGNED_INT, a.polygonOf.data());
 
@@ -44,8 +49,20 @@ SolverState::SolverState(const Scene& s, const Atlas& a)
 
 void SolverState::bindScene() const {
   polygons.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  polygonVertices.bindBase(GL_SHADER_STORAGE_BUFFER, 10);
   positionArea.bindUnit(0);
   polygonOf.bindUnit(1);
+}
+
+std::vector<glm::vec4> shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects) {
+  std::vector<glm::vec4> out(rects.size() * kShapeStride, glm::vec4(0.0f));
+  for (std::size_t b = 0; b < rects.size(); ++b) {
+    Poly3 shape = atlas.blockShape(scene, rects[b]);
+    if (shape.size() < 3 || shape.size() > std::size_t(kMaxShapeVertices)) continue;
+    out[b * kShapeStride] = glm::vec4(float(shape.size()), 0, 0, 0);
+    for (std::size_t i = 0; i < shape.size(); ++i) out[b * kShapeStride + 1 + i] = glm::vec4(glm::vec3(shape[i]), 1);
+  }
+  return out;
 }
 
 static std::vector<glm::vec4> readRgba(const gl::Texture& t) {

@@ -24,17 +24,25 @@ class SolverState {
   gl::Texture polygonOf;     // R32UI polygon id per texel
   gl::Texture radiosity;     // RGBA32F B
   gl::Texture deltaB;        // RGBA32F dB (unshot)
-  gl::Buffer polygons;       // per polygon: normal, reflectance, emission
+  gl::Buffer polygons;       // per polygon: plane, reflectance, emission, vertex range
+  gl::Buffer polygonVertices;  // every polygon's vertices (xyz), in polygon order
   double emittedPower = 0;   // sum over elements of luminance(E) * area
   double farDistance = 0;    // longer than any segment inside the scene
 
-  // Binds the polygon table (SSBO 0) and the atlas (texture units 0 and 1).
+  // Binds the polygon table (SSBO 0), its vertices (SSBO 10) and the atlas (units 0 and 1).
   void bindScene() const;
   std::vector<glm::vec4> readRadiosity() const;  // atlas order, row 0 first
   std::vector<glm::vec4> readDeltaB() const;
   // Replaces B and dB (a checkpoint's), atlas order; throws InputError if the sizes differ.
   void restore(const std::vector<glm::vec4>& B, const std::vector<glm::vec4>& dB);
 };
+
+// Shooter shapes for shaders/formfactor.glsl: per atlas rectangle (shooter block) kShapeStride
+// vec4s, the first holding the vertex count, then the vertices of Atlas::blockShape. A shape of
+// more than kMaxShapeVertices vertices gets count 0 (the gather then falls back to the disc).
+inline constexpr int kMaxShapeVertices = 12;  // MAX_SHAPE_VERTICES in formfactor.glsl
+inline constexpr int kShapeStride = kMaxShapeVertices + 1;
+std::vector<glm::vec4> shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects);
 
 // Area-weighted mean B per object (the report's `mean_radiosity`, docs/design.md#report), from a B readback.
 struct ObjectRadiosity {

@@ -1,5 +1,5 @@
 // The GPU side of validation: for one shooter element, the item buffer and each receiver's
-// visibility and disc form factor exactly as the gather computes them (shaders/visibility.glsl),
+// visibility and exact form factor exactly as the gather computes them (shaders/visibility.glsl),
 // read back instead of applied.
 #pragma once
 #include <memory>
@@ -25,7 +25,7 @@ class FormFactorProbe {
   const SolverState& state_;
   ItemBuffer itemBuffer_;
   gl::Program program_;
-  gl::Buffer control_;
+  gl::Buffer control_, shape_;
   gl::Texture result_;
   double gpuMs_ = 0;
 };

@@ -1,5 +1,7 @@
 #include "tests/support/Support.h"
 
+#include "cpu/ExactFormFactor.h"
+
 #include "cpu/Hemisphere.h"
 #include "src/output/Renderer.h"
 
@@ -75,6 +77,25 @@ double discRowSum(const Scene& scene, const Atlas& a, size_t s) {
            a.positionArea[j].w / As;
   }
   return sum;
+}
+
+double exactRowSum(const Scene& scene, const Atlas& a, size_t s) {
+  const Poly3 shape = a.elementShape(scene, int(s % a.width), int(s / a.width));
+  const glm::dvec3 ns = scene.polygons()[a.polygonOf[s]].normal;
+  double sum = 0;
+  for (size_t j = 0; j < a.polygonOf.size(); ++j) {
+    if (a.polygonOf[j] == kNoPolygon || a.polygonOf[j] == a.polygonOf[s]) continue;
+    const glm::dvec3 nj = scene.polygons()[a.polygonOf[j]].normal;
+    sum += cpu::pointToPolygon(glm::dvec3(a.positionArea[j]), nj, shape, ns) * a.positionArea[j].w;
+  }
+  return sum / a.positionArea[s].w;
+}
+
+double meanExactRowSum(const Scene& scene, const Atlas& a) {
+  double sigma = 0, area = 0;
+  for (std::size_t t = 0; t < a.polygonOf.size(); ++t)
+    if (a.polygonOf[t] != kNoPolygon) sigma += exactRowSum(scene, a, t) * a.positionArea[t].w, area += a.positionArea[t].w;
+  return sigma / area;
 }
 
 double meanDiscRowSum(const Scene& scene, const Atlas& a) {

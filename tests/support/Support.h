@@ -45,6 +45,12 @@ double discRowSum(const Scene& scene, const Atlas& atlas, std::size_t s);
 // Its area-weighted mean over the elements: sigma in E / (1 - rho sigma).
 double meanDiscRowSum(const Scene& scene, const Atlas& atlas);
 
+// What the gather hands on from element `s` with exact form factors (no occlusion): sum over
+// receivers j of F(x_j -> element s) A_j / A_s, x_j the receivers' centroids (cpu::pointToPolygon,
+// the double twin of shaders/formfactor.glsl). 1 in a closed box, up to the centroid rule.
+double exactRowSum(const Scene& scene, const Atlas& atlas, std::size_t s);
+double meanExactRowSum(const Scene& scene, const Atlas& atlas);  // area-weighted over the elements
+
 struct Run {
   int exitCode = -1;
   std::string output;  // stdout and stderr together
