@@ -139,7 +139,7 @@ TEST_CASE("Cornell box at L = 4: visibility agrees with CGAL on 99.9% of pairs a
   Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2500));
   SolverState state(s, atlas);
-  FormFactorProbe probe(state, 4, 512, Projection::Hemisphere);
+  FormFactorProbe probe(state, 4, 512, Projection::Stereographic);
   ExactReference reference(s, atlas);
   const std::vector<bool> band = contactBand(s, atlas, 2.0);
   std::size_t pairs = 0, agree = 0, bandPairs = 0, bandAgree = 0, bandHidden = 0;
