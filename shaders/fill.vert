@@ -1,6 +1,6 @@
 // Bench fill ceiling (src/bench/Ceilings.cpp): instance i is a triangle covering the whole target,
 // nearer than instance i - 1, so every fragment passes the depth test and is written, as the
-// item buffer's nearest surfaces are. Drawn with itembuffer.frag.
+// item buffer's nearest surfaces are. Drawn with fill.frag.
 flat out uint vPolygon;
 uniform int instances;
 

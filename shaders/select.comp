@@ -50,14 +50,24 @@ void main() {
   }
   sync();
   if (l >= passShooters) return;
-  // The shooter shoots from its block's area-weighted centre with its area-weighted unshot
-  // radiosity (or importance).
+  // The shooter shoots its area-weighted unshot radiosity (or importance) over its block's exact
+  // shape, and sees from the block's unshot-power-weighted centre: a coarse block half under a
+  // box would otherwise look out from inside the box and lose the lit half's light.
   ivec4 r = blockRect[rankIndex[l]];
   uint slot = importanceShooters ? keep + l : l;
   describeShooter(slot, r, rankIndex[l]);
   vec4 unshot = vec4(0.0);
+  vec3 weightedCentre = vec3(0.0);
+  float weight = 0.0;
   for (int y = r.y; y < r.y + r.w; ++y)
-    for (int x = r.x; x < r.x + r.z; ++x) unshot += imageLoad(deltaB, ivec2(x, y)) * texelFetch(atlasPositionArea, ivec2(x, y), 0).w;
+    for (int x = r.x; x < r.x + r.z; ++x) {
+      vec4 pa = texelFetch(atlasPositionArea, ivec2(x, y), 0), d = imageLoad(deltaB, ivec2(x, y));
+      unshot += d * pa.w;
+      float w = (importanceShooters ? abs(d.a) : luminance(d.rgb)) * pa.w;
+      weightedCentre += w * pa.xyz;
+      weight += w;
+    }
+  if (weight > 0.0) control.shooter[slot].positionArea.xyz = weightedCentre / weight;
   float area = control.shooter[slot].positionArea.w;
   control.shooter[slot].shot = importanceShooters ? vec4(0.0, 0.0, 0.0, unshot.a / area) : vec4(unshot.rgb / area, 0.0);
   control.shooter[slot].power = rankPower[l];

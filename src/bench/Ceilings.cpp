@@ -55,7 +55,7 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
     target.attach(GL_COLOR_ATTACHMENT0, id);
     target.attach(GL_DEPTH_ATTACHMENT, depth);
     target.checkComplete("fill ceiling");
-    gl::Program fill = gl::renderProgram("fill.vert", "itembuffer.frag");
+    gl::Program fill = gl::renderProgram("fill.vert", "fill.frag");
     fill.set("instances", layers);
     gl::VertexArray empty;
     c.fragmentsPerSecond = double(layers) * fillSide * fillSide / bestSeconds(backend, [&] {
