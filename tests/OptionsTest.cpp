@@ -82,7 +82,7 @@ TEST_CASE("A mistyped flag or subcommand is one error naming the closest valid o
   expectOneError("bench --scnees x.obj", "did you mean --scenes?");
 }
 
-TEST_CASE("--converge is checked the same in every command that takes it", "[cli][bad-input]") {
+TEST_CASE("The --converge flag is checked the same in every command that takes it", "[cli][bad-input]") {
   for (const std::string& command : {"solve " + kScene, "view " + kScene, std::string("bench")})
     for (const std::string value : {"0", "1", "nan", "x"})
       expectOneError(command + " --converge " + value, "--converge: must be in (0, 1), not '" + value + "'");
@@ -97,7 +97,7 @@ TEST_CASE("validate takes --gpu, the EGL device index, as solve does", "[cli][ba
   CHECK_THAT(run.output, Contains("egl: GPU 99 not usable"));
 }
 
-TEST_CASE("--method stochastic and instant are refused naming their issue, before the scene is read", "[cli][bad-input]") {
+TEST_CASE("Solve refuses --method stochastic and instant naming their issue, before the scene is read", "[cli][bad-input]") {
   // An OBJ without faces: reading it would be an error of its own.
   const std::string dir = test::tempPath("method");
   std::filesystem::create_directories(dir);
@@ -109,7 +109,7 @@ TEST_CASE("--method stochastic and instant are refused naming their issue, befor
   expectOneError("solve " + dir + "/empty.obj --method gauss-seidel", "--method");
 }
 
-TEST_CASE("--method progressive gives the bitwise result of the default and the report names the method", "[cli]") {
+TEST_CASE("Solve with --method progressive gives the bitwise result of the default and the report names the method", "[cli]") {
   auto report = [](const std::string& flags) {
     const std::string path = test::tempPath("method" + std::to_string(flags.size()) + ".json");
     test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
