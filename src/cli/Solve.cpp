@@ -70,50 +70,23 @@ void describeProgressive(RunInfo& run, const ProgressiveSolver& solver) {
   run.itemTriangles = solver.itemTriangles();
 }
 
-}  // namespace
-
-int runSolve(const SolveOptions& o) {
-  auto start = std::chrono::steady_clock::now();
+// Everything checkable before a scene is read: the method, writable outputs, flag combinations.
+void checkSolveInputs(const SolveOptions& o) {
   requireBuilt(o.method);
   for (auto [path, flag] : {std::pair{o.out, "--out"}, {o.image, "--image"}, {o.atlas, "--atlas"}, {o.ply, "--ply"},
-                            {o.report, "--report"}})
+                            {o.report, "--report"}, {o.checkpoint, "--checkpoint"}})
     if (!path.empty()) checkWritable(path, flag);
-  if (!o.checkpoint.empty()) checkWritable(o.checkpoint, "--checkpoint");
   if ((!o.checkpoint.empty() || !o.resume.empty()) && o.progressive.algorithm == Algorithm::Perspective)
     throw InputError("--checkpoint and --resume do not support --algorithm perspective (its stored radiosity table is "
                      "not saved)");
-  std::optional<Checkpoint> resumed;
-  if (!o.resume.empty()) resumed = readCheckpoint(o.resume);
+}
 
-  Scene scene = loadScene(o.scene, o.load);
-  for (const auto& w : scene.warnings) warn(w);
-  validateSolvable(scene);
-  Camera camera = resolveCamera(scene, o.camera);
-
-  auto backend = gl::createBackend(o.backend);
-  if (o.backend.kind == gl::BackendKind::Auto)
-    fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
-  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
-  SolverState state(scene, atlas);
-  const std::unique_ptr<Solver> method = makeSolver(o.method, state, o.progressive);
-  Solver& solver = *method;
-  auto* progressive = dynamic_cast<ProgressiveSolver*>(method.get());  // view-driven shooting, walkthroughs
-  const double aspect = double(o.width) / o.height;
-  const nlohmann::json identity = checkpointIdentity(scene, atlas, o, solver);
-  SolveStatus status;
-  if (resumed) {
-    checkResumable(o.resume, resumed->identity, identity);
-    state.restore(resumed->radiosity, resumed->deltaB);
-    status = solver.restoreState(resumed->solver);
-    resumed.reset();
-  }
-  if (!o.cameraPath.empty()) return runWalkthrough(o, scene, atlas, state, *progressive, camera);
-  if (o.progressive.importanceDriven()) progressive->look(camera, aspect);  // after a restore: no change
-
-  // Shots run in batches between status readbacks; a signal or a due checkpoint is handled
-  // between batches, where the GPU state is whole. Batch sizes never change the result.
+// Shots run in batches between status readbacks; a signal or a due checkpoint is handled
+// between batches, where the GPU state is whole. Batch sizes never change the result. Returns
+// 128 + the signal when one stopped the solve, else 0.
+int solveInBatches(const SolveOptions& o, const SolverState& state, Solver& solver, const nlohmann::json& identity,
+                   SolveStatus& status, Progress& progress) {
   InterruptGuard interrupts;
-  Progress progress(o.progressive.stop, o.progress);
   unsigned savedAt = status.shots;
   for (unsigned batch = 1; !status.done;) {
     if (int signal = InterruptGuard::received()) {
@@ -136,9 +109,12 @@ int runSolve(const SolveOptions& o) {
   }
   progress.finish();
   if (!o.checkpoint.empty()) writeCheckpoint(o.checkpoint, takeCheckpoint(state, solver, identity, status.shots));
-  double solveMs = progress.elapsedSeconds() * 1e3;
+  return 0;
+}
 
-  std::vector<glm::vec4> B = state.readRadiosity();
+// The camera render (EXR, PNG), the atlas and the PLY the user asked for.
+void writeImages(const SolveOptions& o, const Scene& scene, const Atlas& atlas, const SolverState& state,
+                 const Camera& camera, const std::vector<glm::vec4>& B) {
   Image view;
   double scale = 1;
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty()) {
@@ -151,10 +127,14 @@ int runSolve(const SolveOptions& o) {
   if (!o.image.empty()) writePng(o.image, view, scale);
   if (!o.atlas.empty()) writeExr(o.atlas, atlasImage(atlas, B));
   if (!o.ply.empty()) writePly(o.ply, scene, atlas, B, scale);
+}
 
+// The report's description of the run; the item buffer and shoot level are the ones the
+// progressive solver used (planned ones with auto).
+RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, const Atlas& atlas, const Solver& solver) {
   RunInfo run;
-  run.backend = backend->name();
-  run.renderer = backend->renderer();
+  run.backend = backend.name();
+  run.renderer = backend.renderer();
   run.method = methodName(o.method);
   run.algorithm = solver.algorithm();
   run.scene = o.scene;
@@ -164,17 +144,61 @@ int runSolve(const SolveOptions& o) {
   run.shootLevel = o.progressive.shootLevel;
   run.shootersPerPass = o.progressive.shootersPerPass;
   run.elements = atlas.elements;
-  if (progressive) describeProgressive(run, *progressive);
+  if (auto* progressive = dynamic_cast<const ProgressiveSolver*>(&solver)) {
+    describeProgressive(run, *progressive);
+    run.itemResolution = progressive->plan().itemResolution;
+  }
   run.atlasWidth = atlas.width;
   run.atlasHeight = atlas.height;
-  run.status = status;
   run.timings = solver.timings();
+  run.convergenceHistory = solver.convergenceHistory();
+  return run;
+}
+
+}  // namespace
+
+int runSolve(const SolveOptions& o) {
+  auto start = std::chrono::steady_clock::now();
+  checkSolveInputs(o);
+  std::optional<Checkpoint> resumed;
+  if (!o.resume.empty()) resumed = readCheckpoint(o.resume);
+
+  Scene scene = loadScene(o.scene, o.load);
+  for (const auto& w : scene.warnings) warn(w);
+  validateSolvable(scene);
+  Camera camera = resolveCamera(scene, o.camera);
+
+  auto backend = gl::createBackend(o.backend);
+  if (o.backend.kind == gl::BackendKind::Auto)
+    fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
+  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
+  SolverState state(scene, atlas);
+  const std::unique_ptr<Solver> method = makeSolver(o.method, state, o.progressive);
+  Solver& solver = *method;
+  auto* progressive = dynamic_cast<ProgressiveSolver*>(method.get());  // view-driven shooting, walkthroughs
+  const nlohmann::json identity = checkpointIdentity(scene, atlas, o, solver);
+  SolveStatus status;
+  if (resumed) {
+    checkResumable(o.resume, resumed->identity, identity);
+    state.restore(resumed->radiosity, resumed->deltaB);
+    status = solver.restoreState(resumed->solver);
+    resumed.reset();
+  }
+  if (!o.cameraPath.empty()) return runWalkthrough(o, scene, atlas, state, *progressive, camera);
+  if (o.progressive.importanceDriven()) progressive->look(camera, double(o.width) / o.height);  // after a restore: no change
+
+  Progress progress(o.progressive.stop, o.progress);
+  if (int interrupted = solveInBatches(o, state, solver, identity, status, progress)) return interrupted;
+  const double solveMs = progress.elapsedSeconds() * 1e3;
+  const std::vector<glm::vec4> B = state.readRadiosity();
+  writeImages(o, scene, atlas, state, camera, B);
+
+  RunInfo run = describeRun(o, *backend, atlas, solver);
+  run.status = status;
   run.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   run.radiosityHash = radiosityHash(atlas, B);
   run.objects = objectRadiosity(scene, atlas, B);
-  run.convergenceHistory = solver.convergenceHistory();
   if (!o.report.empty()) writeReport(o.report, run);
-
   fmt::print(stderr, "hemirad: {}: {} elements, {} shots, convergence {:.4f} in {:.0f} ms ({}, {})\n", o.scene,
              atlas.elements, status.shots, status.convergence, solveMs, backend->name(), backend->renderer());
   return 0;
