@@ -7,9 +7,10 @@ namespace hemirad {
 
 namespace {
 
-// Shooter block sides as fractions of the scene's largest extent: about 8 x 8 blocks on a wall
-// the size of the scene, 32 x 32 on an emitter that size. A Cornell box then needs ~300 shots
-// to 90 % at any element count (docs/bench).
+// Shooter block sides as fractions of the scene's largest extent (rounded down to a power of two
+// texels): about 4 x 4 blocks or more on a wall the size of the scene, 16 x 16 on an emitter that
+// size. A Cornell box then needs 208 to 496 shots to 90 % at 10k to 1M elements
+// (docs/bench/h200-2026-12-02.md).
 constexpr double kShooterSide = 1.0 / 4, kEmitterSide = 1.0 / 16;
 // Item-buffer pixels per element across the scene's extent: a receiver element at the far side
 // of the scene spans ~2 pixels of the item buffer (whose disc diameter covers pi radians at most).
