@@ -17,7 +17,7 @@ struct Shooter {
   uint polygon;
   float power;        // the ranking key it was chosen by
   uint block;         // its index among the shooter blocks
-  uint pad;
+  uint shape;         // the shooter-tree node it shoots from (shooter_tree.glsl): its shape
 };
 
 layout(std430, binding = 3) buffer Control {

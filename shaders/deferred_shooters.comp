@@ -2,10 +2,10 @@
 // becoming visible were out of view; gather.comp (viewMode 2) hands each receiver its entry.
 #include "scene.glsl"
 #include "control.glsl"
+#include "shooter_tree.glsl"
 #include "shooter_block.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 1) readonly buffer Blocks { ivec4 blockRect[]; };
 layout(std430, binding = 9) readonly buffer Deferred { uint deferredBlock[]; };
 uniform uint first;
 uniform uint count;
@@ -15,5 +15,5 @@ void main() {
   if (l == 0u) control.count = count, control.importanceCount = 0u;
   if (l >= count) return;
   uint b = deferredBlock[first + l];
-  describeShooter(l, blockRect[b], b);
+  describeNode(l, b, b);
 }

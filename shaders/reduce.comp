@@ -2,6 +2,7 @@
 // hands on its best `keep`, the first of them carrying the group's power sum.
 #include "hemisphere.glsl"
 #include "scene.glsl"
+#include "shooter_tree.glsl"
 #include "reduce_entry.glsl"
 
 layout(local_size_x = 256) in;

@@ -2,7 +2,8 @@
 // shoots several a pass) and the total unshot power (for the convergence), folded in a fixed
 // order so both are bitwise reproducible. A workgroup ranks up to 1024 entries; the top `keep`
 // of every group contain the top `keep` of all, so levels of groups give the exact answer.
-// Needs scene.glsl and hemisphere.glsl (luminance) included first. Local size must be 256.
+// Needs scene.glsl, hemisphere.glsl (luminance) and shooter_tree.glsl (node_stats.comp's sums,
+// written this pass) included first. Local size must be 256.
 
 struct Entry {
   float power;  // unshot power of the block
@@ -11,10 +12,7 @@ struct Entry {
   float pad;
 };
 
-layout(std430, binding = 1) readonly buffer Blocks { ivec4 blockRect[]; };  // atlas x, y, w, h
 layout(std430, binding = 2) readonly buffer In { Entry src[]; };
-layout(binding = 0, rgba32f) uniform readonly image2D radiosity;  // a: importance I
-layout(binding = 1, rgba32f) uniform readonly image2D deltaB;     // a: unshot importance dI
 uniform uint count;       // entries (or blocks) to fold
 uniform bool fromBlocks;  // first level: compute the entries from the blocks
 uniform uint keep;        // entries kept per group: the shooters a pass takes
@@ -29,20 +27,11 @@ shared float rankPower[GROUP_ENTRIES];
 shared uint rankIndex[GROUP_ENTRIES];
 shared float groupSum[256];
 
-// One block (a texel, or 2^k x 2^k texels with substructuring): its ranking key and its unshot
-// power luminance(dB) * A.
+// Block i: its ranking key and its unshot power luminance(dB) A.
 Entry blockEntry(uint i) {
-  ivec4 r = blockRect[i];
-  float power = 0.0, importance = 0.0, largest = 0.0;
-  for (int y = r.y; y < r.y + r.w; ++y)
-    for (int x = r.x; x < r.x + r.z; ++x) {
-      vec4 d = imageLoad(deltaB, ivec2(x, y));
-      float area = texelFetch(atlasPositionArea, ivec2(x, y), 0).w;
-      power += luminance(d.rgb) * area;
-      importance += d.a * area;
-      if (rankBy == 1u) largest = max(largest, imageLoad(radiosity, ivec2(x, y)).a);
-    }
-  float key = rankBy == 0u ? power : rankBy == 1u ? power * (largest + importanceFloor) : abs(importance);
+  NodeStats s = stats[i];
+  float power = luminance(s.unshot.rgb);
+  float key = rankBy == 0u ? power : rankBy == 1u ? power * (s.range.z + importanceFloor) : abs(s.unshot.a);
   return Entry(key, i, power, 0.0);
 }
 

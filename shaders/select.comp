@@ -3,8 +3,10 @@
 // rank first (seed 003's batching), fewer when the shot budget or the power ends. With
 // importanceShooters (importance-driven solves, after the radiosity selection of the same
 // pass) it picks the pass's importance shooters instead, into slots keep, keep + 1, ...
+// A chosen block shoots the part of itself that holds its light (src/solver/ShooterTree.h).
 #include "hemisphere.glsl"
 #include "scene.glsl"
+#include "shooter_tree.glsl"
 #include "reduce_entry.glsl"
 #include "control.glsl"
 #include "shooter_block.glsl"
@@ -15,7 +17,25 @@
 layout(local_size_x = 256) in;
 uniform bool importanceShooters;
 uniform float importanceThreshold;  // below this |dI| A a block is not worth an importance shot
+// A node is cut when its elements' unshot radiosity (luminance) spans more than this ratio.
+uniform float uniformRatio;
 shared uint passShooters;
+
+// Where block b's unshot light sits: down its tree while the node's radiosity is not uniform,
+// into the child with the most unshot power (ties: the first). Perspective-driven solves keep
+// whole blocks, whose shots their per-block tables record.
+uint partOfBlock(uint b) {
+  uint node = b;
+#ifndef PERSPECTIVE
+  while (nodes[node].firstChild != NO_CHILD && stats[node].range.x < uniformRatio * stats[node].range.y) {
+    uint first = nodes[node].firstChild, best = first;
+    for (uint c = first + 1u; c < first + 4u; ++c)
+      if (luminance(stats[c].unshot.rgb) > luminance(stats[best].unshot.rgb)) best = c;
+    node = best;
+  }
+#endif
+  return node;
+}
 
 void main() {
   rankGroup(0u, count);
@@ -50,26 +70,10 @@ void main() {
   }
   sync();
   if (l >= passShooters) return;
-  // The shooter shoots its area-weighted unshot radiosity (or importance) over its block's exact
-  // shape, and sees from the block's unshot-power-weighted centre: a coarse block half under a
-  // box would otherwise look out from inside the box and lose the lit half's light.
-  ivec4 r = blockRect[rankIndex[l]];
+  uint block = rankIndex[l], node = importanceShooters ? block : partOfBlock(block);
   uint slot = importanceShooters ? keep + l : l;
-  describeShooter(slot, r, rankIndex[l]);
-  vec4 unshot = vec4(0.0);
-  vec3 weightedCentre = vec3(0.0);
-  float weight = 0.0;
-  for (int y = r.y; y < r.y + r.w; ++y)
-    for (int x = r.x; x < r.x + r.z; ++x) {
-      vec4 pa = texelFetch(atlasPositionArea, ivec2(x, y), 0), d = imageLoad(deltaB, ivec2(x, y));
-      unshot += d * pa.w;
-      float w = (importanceShooters ? abs(d.a) : luminance(d.rgb)) * pa.w;
-      weightedCentre += w * pa.xyz;
-      weight += w;
-    }
-  if (weight > 0.0) control.shooter[slot].positionArea.xyz = weightedCentre / weight;
-  float area = control.shooter[slot].positionArea.w;
-  control.shooter[slot].shot = importanceShooters ? vec4(0.0, 0.0, 0.0, unshot.a / area) : vec4(unshot.rgb / area, 0.0);
+  describeNode(slot, node, block);
+  describeUnshot(slot, node, importanceShooters);
   control.shooter[slot].power = rankPower[l];
 #ifdef PERSPECTIVE
   if (!importanceShooters) shotSoFar[rankIndex[l]] += control.shooter[slot].shot;  // one writer per block

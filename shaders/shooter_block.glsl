@@ -1,22 +1,26 @@
-// A shooter block's geometry: it shoots from its texels' area-weighted centre with their total
-// area (seed 003's substructuring). Needs scene.glsl and control.glsl.
-void describeShooter(uint slot, ivec4 rect, uint block) {
-  vec3 centre = vec3(0.0);
-  float area = 0.0;
-  uint polygon = NO_POLYGON;
-  for (int y = rect.y; y < rect.y + rect.w; ++y)
-    for (int x = rect.x; x < rect.x + rect.z; ++x) {
-      vec4 pa = texelFetch(atlasPositionArea, ivec2(x, y), 0);
-      if (pa.w <= 0.0) continue;
-      centre += pa.xyz * pa.w;
-      area += pa.w;
-      polygon = texelFetch(atlasPolygon, ivec2(x, y), 0).r;
-    }
-  control.shooter[slot].positionArea = vec4(centre / area, area);
-  control.shooter[slot].normal = vec4(polygons[polygon].normal.xyz, 0.0);
+// A shooter's geometry: a shooter-tree node (a block or a part of one: seed 003's
+// substructuring) with its area and exact shape, seen from its area-weighted centre; the
+// selection then aims it at its unshot light (describeUnshot). Needs scene.glsl, control.glsl
+// and shooter_tree.glsl.
+void describeNode(uint slot, uint node, uint block) {
+  Node n = nodes[node];
+  control.shooter[slot].positionArea = n.centreArea;
+  control.shooter[slot].normal = vec4(polygons[n.polygon].normal.xyz, 0.0);
   control.shooter[slot].shot = vec4(0.0);
-  control.shooter[slot].rect = rect;
-  control.shooter[slot].polygon = polygon;
+  control.shooter[slot].rect = n.rect;
+  control.shooter[slot].polygon = n.polygon;
   control.shooter[slot].power = 0.0;
   control.shooter[slot].block = block;
+  control.shooter[slot].shape = node;
+}
+
+// The node shoots its area-weighted unshot radiosity (or importance) and sees from where that
+// sits (node_stats.comp's weighted centre): a block half under a box would otherwise look out
+// from inside the box and lose the lit half's light.
+void describeUnshot(uint slot, uint node, bool importance) {
+  NodeStats s = stats[node];
+  vec4 centre = importance ? s.viewCentre : s.lightCentre;
+  float area = nodes[node].centreArea.w;
+  if (centre.w > 0.0) control.shooter[slot].positionArea.xyz = centre.xyz / centre.w;
+  control.shooter[slot].shot = importance ? vec4(0.0, 0.0, 0.0, s.unshot.a / area) : vec4(s.unshot.rgb / area, 0.0);
 }

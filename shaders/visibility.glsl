@@ -1,7 +1,7 @@
 // Visibility and form factor of a receiver element from a shooter of the pass. Needs
 // hemisphere.glsl, scene.glsl, control.glsl and formfactor.glsl. Texture unit 2: polygon ids,
 // ITEM_FACES layers per shooter, each pixel the nearest surface by exact depth (itembuffer.frag;
-// the depths themselves are not read); SSBO 11 the shooter blocks' shapes (shapeTable).
+// the depths themselves are not read); SSBO 11 the shooter-tree nodes' shapes (shapeTable).
 
 layout(binding = 2) uniform usampler2DArray itemId;
 layout(std430, binding = 11) readonly buffer ShooterShapes { vec4 shooterShape[]; };
@@ -58,7 +58,7 @@ bool inShooterBlock(uint s, ivec2 t, uint polygon) {
 // integral over the block's shape, formfactor.glsl), or the disc formula for a shape too
 // complex for the table.
 float unoccludedFormFactor(uint s, vec3 x, vec3 nr) {
-  uint base = control.shooter[s].block * uint(SHAPE_STRIDE);
+  uint base = control.shooter[s].shape * uint(SHAPE_STRIDE);
   int count = int(shooterShape[base].x);
   vec3 origin = control.shooter[s].positionArea.xyz, ns = control.shooter[s].normal.xyz;
   if (count < 3) {

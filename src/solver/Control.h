@@ -15,7 +15,7 @@ struct ShooterRecord {
   std::int32_t rect[4];
   std::uint32_t polygon;
   float power;
-  std::uint32_t block, pad;
+  std::uint32_t block, shape;
 };
 static_assert(sizeof(ShooterRecord) == 80);
 

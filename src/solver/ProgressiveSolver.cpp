@@ -1,6 +1,7 @@
 #include "src/solver/ProgressiveSolver.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cstddef>
 #include <cstring>
@@ -42,11 +43,8 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   const bool perspective = settings.algorithm == Algorithm::Perspective;
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
   plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution);
-  const std::vector<ShooterBlock> blocks = state.atlas.shooterBlocks(plan_.polygonLevel);
-  setUpReduction(blocks, keep, defines);
-  std::vector<glm::ivec4> rects;
-  for (const ShooterBlock& b : blocks) rects.push_back(b.rect);
-  shapes_ = gl::Buffer(std::span<const glm::vec4>(shapeTable(state.scene, state.atlas, rects)));
+  setUpTree(state.atlas.shooterBlocks(plan_.polygonLevel), defines);
+  setUpReduction(keep, defines);
 
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
   itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, plan_.itemResolution,
@@ -67,14 +65,28 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   gl::checkErrors("progressive solver setup");
 }
 
-// Shooter blocks and the reduction levels above them: each workgroup of a level ranks 1024
-// entries and keeps its best `keep`, until select.comp's one workgroup can rank the rest.
-void ProgressiveSolver::setUpReduction(const std::vector<ShooterBlock>& blocks, unsigned keep,
-                                       const gl::Defines& defines) {
+// The shooter blocks, their quadtrees (cut where unshot radiosity is not uniform), the nodes'
+// exact shapes and the pass that sums each node's unshot state. node_stats.comp gives each block
+// a workgroup of as many threads as the largest block has texels, at least one per leaf, at most 256.
+void ProgressiveSolver::setUpTree(const std::vector<ShooterBlock>& blocks, const gl::Defines& defines) {
+  const ShooterTree tree = buildShooterTree(state_.atlas, blocks, settings_.splitDepth);
+  blockCount_ = tree.blocks;
+  nodes_ = gl::Buffer(std::span<const ShooterNode>(tree.nodes));
+  nodeStats_ = gl::Buffer(tree.nodes.size() * sizeof(glm::vec4[4]));
+  std::vector<glm::ivec4> rects;
+  for (const ShooterNode& n : tree.nodes) rects.push_back(n.rect);
+  shapes_ = gl::Buffer(std::span<const glm::vec4>(shapeTable(state_.scene, state_.atlas, rects)));
+  const unsigned threads = std::clamp(std::bit_ceil(tree.largestBlock), 1u << (2 * tree.depth), 256u);
+  gl::Defines statsDefines = defines;
+  statsDefines.push_back({"BLOCK_THREADS", std::to_string(threads)});
+  stats_ = gl::computeProgram("node_stats.comp", statsDefines);
+}
+
+// The reduction levels above the blocks: each workgroup of a level ranks 1024 entries and
+// keeps its best `keep`, until select.comp's one workgroup can rank the rest.
+void ProgressiveSolver::setUpReduction(unsigned keep, const gl::Defines& defines) {
   reduce_ = gl::computeProgram("reduce.comp");
   select_ = gl::computeProgram("select.comp", defines);
-  blockCount_ = blocks.size();
-  blocks_ = gl::Buffer(std::span<const ShooterBlock>(blocks));
   unsigned left = unsigned(blockCount_);
   for (; left > kGroupEntries; left = gl::groupsFor(left, kGroupEntries) * keep)
     levels_.emplace_back(gl::groupsFor(left, kGroupEntries) * keep * sizeof(float[4]));
@@ -91,6 +103,7 @@ void ProgressiveSolver::setUpReduction(const std::vector<ShooterBlock>& blocks, 
   reduce_.set("importanceFloor", floor);
   select_.set("importanceFloor", floor);
   select_.set("importanceThreshold", 1e-6f);
+  select_.set("uniformRatio", float(settings_.uniformRatio));
 }
 
 // The control block: stop rule, convergence history.
@@ -112,9 +125,13 @@ void ProgressiveSolver::selectPass() {
   state_.bindScene();
   state_.radiosity.bindImage(0, GL_READ_ONLY);
   state_.deltaB.bindImage(1, GL_READ_ONLY);
-  blocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
+  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, 13);
+  nodeStats_.bindBase(GL_SHADER_STORAGE_BUFFER, 14);
   if (perspective_) perspective_->bind();
+  stats_.use();
+  gl::Program::dispatch(unsigned(blockCount_));
+  gl::barrier(gl::Barrier::Storage);
   rankPass(settings_.importanceDriven() ? Rank::PowerByImportance : Rank::Power, false);
   if (settings_.importanceDriven()) rankPass(Rank::Importance, true);
 }
@@ -138,7 +155,7 @@ unsigned ProgressiveSolver::deliverStored(unsigned budget) {
   perspective_->update();
   while (used < budget && perspective_->delivering()) {
     const unsigned n = unsigned(std::min<std::size_t>({K, budget - used, perspective_->deliveriesLeft()}));
-    perspective_->describeDeliveries(n, blocks_, control_);
+    perspective_->describeDeliveries(n, nodes_, control_);
     itemBuffer_->render(control_);
     gatherPass(Receivers::Entering);
     used += n;

@@ -13,6 +13,7 @@
 #include "src/solver/ImportanceView.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/solver/PerspectiveView.h"
+#include "src/solver/ShooterTree.h"
 #include "src/solver/ShootingPlan.h"
 #include "src/solver/Solver.h"
 #include "src/solver/SolverState.h"
@@ -24,6 +25,12 @@ struct ProgressiveSettings {
   int itemResolution = 512;  // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
   Projection projection = Projection::Stereographic;
   int shootLevel = 1;        // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
+  // A block whose elements' unshot radiosity spans more than uniformRatio (least / largest
+  // luminance) shoots its brightest quadrant, down to splitDepth levels (ShooterTree.h).
+  // Depth 3 and 0.1: within 1 % of per-element shooting on the Cornell box's objects with
+  // --shoot-level auto, for 35 % more shots (docs/bench/h200-2026-12-02.md).
+  int splitDepth = 3;
+  double uniformRatio = 0.1;
   // Shooters per pass (1..kMaxPassShooters): the best K blocks shoot at once from the same
   // unshot state, so a pass's fixed costs (reduction, launches, barriers) are shared by K shots.
   // 16: the fastest on the H100 and llvmpipe at 10k elements (docs/bench), 1 % more shots.
@@ -84,7 +91,8 @@ class ProgressiveSolver final : public Solver {
     Entering = 2,  // a delivery: only surfaces entering the view, each its stored entry
   };
 
-  void setUpReduction(const std::vector<ShooterBlock>& blocks, unsigned keep, const gl::Defines& defines);
+  void setUpTree(const std::vector<ShooterBlock>& blocks, const gl::Defines& defines);
+  void setUpReduction(unsigned keep, const gl::Defines& defines);
   void setUpControl(const StopRule& stop, unsigned keep);
   void selectPass();
   void rankPass(Rank rank, bool importanceShooters);
@@ -101,9 +109,9 @@ class ProgressiveSolver final : public Solver {
   SolverState& state_;
   ProgressiveSettings settings_;
   ShootingPlan plan_;
-  gl::Program reduce_, select_, gather_;
-  gl::Buffer blocks_, control_;
-  gl::Buffer shapes_;  // per block: its exact shape (shapeTable), what the gather integrates over
+  gl::Program stats_, reduce_, select_, gather_;
+  gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
+  gl::Buffer shapes_;  // per node: its exact shape (shapeTable), what the gather integrates over
   std::unique_ptr<ItemBuffer> itemBuffer_;
   std::unique_ptr<ImportanceView> view_;  // importance-driven solves only
   std::unique_ptr<PerspectiveView> perspective_;  // perspective-driven solves only

@@ -30,7 +30,7 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   shooter.normal[0] = float(n.x), shooter.normal[1] = float(n.y), shooter.normal[2] = float(n.z);
   shooter.rect[0] = int(s % a.width), shooter.rect[1] = int(s / a.width), shooter.rect[2] = shooter.rect[3] = 1;
   shooter.polygon = polygon;
-  shooter.block = 0;  // shape_ holds just this element's shape
+  shooter.block = shooter.shape = 0;  // shape_ holds just this element's shape
   control_.upload(0, sizeof c, &c);
   const glm::ivec4 rect(shooter.rect[0], shooter.rect[1], 1, 1);
   shape_ = gl::Buffer(std::span<const glm::vec4>(shapeTable(state_.scene, a, {rect})));

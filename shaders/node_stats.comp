@@ -1,0 +1,75 @@
+// Per pass, the unshot statistics of every shooter-tree node (shooter_tree.glsl): one
+// workgroup per block, its threads split evenly over the block's leaves (each strides over
+// its leaf's texels), a fixed-order tree sum per leaf, then thread 0 folds leaves into their
+// parents. The ranking then reads one entry per block, and the descent one per node, instead
+// of walking texels in one invocation per shooter. BLOCK_THREADS: at least one per leaf.
+#define WRITES_NODE_STATS
+#include "hemisphere.glsl"
+#include "scene.glsl"
+#include "shooter_tree.glsl"
+
+layout(local_size_x = BLOCK_THREADS) in;
+layout(binding = 0, rgba32f) uniform readonly image2D radiosity;  // a: importance I
+layout(binding = 1, rgba32f) uniform readonly image2D deltaB;     // a: unshot importance dI
+
+const float NONE = 3.4e38;
+const uint THREADS = uint(BLOCK_THREADS);
+shared NodeStats partial[BLOCK_THREADS];
+
+NodeStats emptyStats() { return NodeStats(vec4(0.0), vec4(0.0), vec4(0.0), vec4(NONE, 0.0, 0.0, 0.0)); }
+
+NodeStats merge(NodeStats a, NodeStats b) {
+  return NodeStats(a.unshot + b.unshot, a.lightCentre + b.lightCentre, a.viewCentre + b.viewCentre,
+                   vec4(min(a.range.x, b.range.x), max(a.range.y, b.range.y), max(a.range.z, b.range.z), 0.0));
+}
+
+// What thread `sub` of `threads` gathers from the leaf's texels.
+NodeStats leafPart(ivec4 r, uint sub, uint threads) {
+  NodeStats s = emptyStats();
+  for (uint k = sub; k < uint(r.z * r.w); k += threads) {
+    ivec2 t = r.xy + ivec2(int(k) % r.z, int(k) / r.z);
+    vec4 pa = texelFetch(atlasPositionArea, t, 0);
+    if (pa.w <= 0.0) continue;
+    vec4 d = imageLoad(deltaB, t);
+    float lum = luminance(d.rgb), light = lum * pa.w, view = abs(d.a) * pa.w;
+    s.unshot += d * pa.w;
+    s.lightCentre += vec4(pa.xyz * light, light);
+    s.viewCentre += vec4(pa.xyz * view, view);
+    s.range = vec4(min(s.range.x, lum), max(s.range.y, lum), max(s.range.z, imageLoad(radiosity, t).a), 0.0);
+  }
+  return s;
+}
+
+// The merge of the four stats starting at partial[first], `step` apart.
+NodeStats four(uint first, uint step) {
+  return merge(merge(partial[first], partial[first + step]), merge(partial[first + 2u * step], partial[first + 3u * step]));
+}
+
+void main() {
+  uint block = gl_WorkGroupID.x, l = gl_LocalInvocationID.x;
+  uint depth = nodes[block].depth, leaves = 1u << (2u * depth), threads = THREADS / leaves;
+  uint leaf = l / threads, sub = l % threads;
+  partial[l] = leafPart(nodes[nodes[block].firstLeaf + leaf].rect, sub, threads);
+  memoryBarrierShared();
+  barrier();
+  for (uint stride = threads / 2u; stride > 0u; stride >>= 1) {
+    if (sub < stride) partial[l] = merge(partial[l], partial[l + stride]);
+    memoryBarrierShared();
+    barrier();
+  }
+  if (sub == 0u) stats[nodes[block].firstLeaf + leaf] = partial[l];
+  barrier();  // every leaf is stored before thread 0 reuses the slots
+  if (l != 0u || depth == 0u) return;
+  // Level by level up from the leaves (node j of level d folds the four children whose sums
+  // sit `step` slots apart from slot 4 j step, and leaves its own in the first of them).
+  uint start[MAX_SPLIT_DEPTH];  // first node of each level: breadth-first, levels contiguous
+  start[0] = block;
+  for (uint d = 1u; d < depth; ++d) start[d] = nodes[start[d - 1u]].firstChild;
+  for (int d = int(depth) - 1; d >= 0; --d) {
+    uint step = threads << (2u * (depth - 1u - uint(d)));
+    for (uint j = 0u; j < (1u << (2u * uint(d))); ++j) {
+      partial[4u * j * step] = four(4u * j * step, step);
+      stats[start[d] + j] = partial[4u * j * step];
+    }
+  }
+}

@@ -1,0 +1,28 @@
+// The shooter tree (src/solver/ShooterTree.h): blocks and their quadrants, with static
+// geometry, and the unshot statistics node_stats.comp gathers for each node every pass.
+
+const uint NO_CHILD = 0xFFFFFFFFu;
+const uint MAX_SPLIT_DEPTH = 4u;  // kMaxSplitDepth
+
+struct Node {
+  ivec4 rect;        // atlas x, y, w, h (w = 0: empty)
+  vec4 centreArea;   // area-weighted centre of its elements, their area
+  uint polygon;
+  uint firstChild;   // four consecutive children, or NO_CHILD
+  uint firstLeaf;    // blocks only: their 4^depth leaves
+  uint depth;        // blocks only
+};
+
+struct NodeStats {
+  vec4 unshot;       // sum of dB A (rgb) and dI A (a)
+  vec4 lightCentre;  // sum of w x, sum of w, w = luminance(dB) A: where its unshot light sits
+  vec4 viewCentre;   // the same with w = |dI| A
+  vec4 range;        // least and largest luminance(dB) of its elements, largest importance I, 0
+};
+
+layout(std430, binding = 13) readonly buffer Nodes { Node nodes[]; };
+#ifdef WRITES_NODE_STATS
+layout(std430, binding = 14) writeonly buffer Stats { NodeStats stats[]; };
+#else
+layout(std430, binding = 14) readonly buffer Stats { NodeStats stats[]; };
+#endif

@@ -1,0 +1,77 @@
+// Shooter blocks cut where their unshot radiosity is not uniform (src/solver/ShooterTree.h):
+// the tree tiles each block exactly, and shooting the lit parts of coarse blocks keeps the
+// planned (coarse) shooting as accurate as shooting element by element.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "src/scene/SceneLoader.h"
+#include "src/solver/ShooterTree.h"
+#include "src/solver/ShootingPlan.h"
+#include "tests/support/Support.h"
+
+using namespace hemirad;
+
+TEST_CASE("A block's quadtree tiles it: every element lies in one leaf, and children's areas sum to their parent's",
+          "[cpu]") {
+  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 3000));
+  const std::vector<ShooterBlock> blocks = atlas.shooterBlocks(3);
+  const ShooterTree tree = buildShooterTree(atlas, blocks, 3);
+  REQUIRE(tree.blocks == blocks.size());
+  CHECK(tree.depth == 3);
+  std::vector<int> leafOf(atlas.polygonOf.size(), 0);
+  for (std::size_t b = 0; b < tree.blocks; ++b) {
+    const ShooterNode& block = tree.nodes[b];
+    CHECK(block.rect == blocks[b].rect);
+    const std::uint32_t leaves = 1u << (2 * block.depth);
+    for (std::uint32_t k = 0; k < leaves; ++k) {
+      const glm::ivec4 r = tree.nodes[block.firstLeaf + k].rect;
+      CHECK(tree.nodes[block.firstLeaf + k].firstChild == kNoChild);
+      for (int y = r.y; y < r.y + r.w; ++y)
+        for (int x = r.x; x < r.x + r.z; ++x) ++leafOf[std::size_t(y) * atlas.width + x];
+    }
+  }
+  for (const ShooterNode& n : tree.nodes) {
+    if (n.firstChild == kNoChild) continue;
+    double children = 0;
+    for (std::uint32_t c = 0; c < 4; ++c) children += tree.nodes[n.firstChild + c].centreArea.w;
+    CHECK(children == Approx(n.centreArea.w).epsilon(1e-5));
+  }
+  std::size_t once = 0, elements = 0;
+  for (std::size_t t = 0; t < leafOf.size(); ++t)
+    if (atlas.polygonOf[t] != kNoPolygon) ++elements, once += leafOf[t] == 1;
+  CHECK(once == elements);
+}
+
+TEST_CASE("Coarse blocks shoot their lit parts: the planned shooting stays within 1.5% of element-by-element on the "
+          "Cornell box",
+          "[gl]") {
+  // Blocks of 8 x 8 elements next to the boxes lie partly under them and across their shadows.
+  // Shot whole, their mean unshot radiosity spreads over the dark part, which the boxes' faces
+  // see only in part: the boxes come out 2-4 % dark. Cut where the radiosity is not uniform,
+  // each object's mean stays within 1.5 % of shooting every element alone (measured at 1,500
+  // elements: short block -1.0 %, the rest within 0.5 %; uncut -3.6 %).
+  test::backend();
+  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  const double texel = texelSizeForElements(s, 1500);
+  ProgressiveSettings fine, planned, whole;
+  fine.shootLevel = 0;
+  fine.itemResolution = planned.itemResolution = whole.itemResolution = 256;
+  planned.shootLevel = whole.shootLevel = kAutoShootLevel;
+  whole.splitDepth = 0;
+  fine.stop.targetConvergence = planned.stop.targetConvergence = whole.stop.targetConvergence = 0.99;
+  test::Solved a = test::solve(s, texel, fine), b = test::solve(s, texel, planned), c = test::solve(s, texel, whole);
+  double worstPlanned = 0, worstWhole = 0;
+  for (const ObjectRadiosity& o : a.objects) {
+    const double ref = luminance(o.mean), p = luminance(test::object(b, o.name).mean),
+                 w = luminance(test::object(c, o.name).mean);
+    INFO(o.name << ": per element " << ref << ", planned " << p << ", planned uncut " << w);
+    CHECK(p == Approx(ref).epsilon(0.015));
+    worstPlanned = std::max(worstPlanned, std::abs(p / ref - 1));
+    worstWhole = std::max(worstWhole, std::abs(w / ref - 1));
+  }
+  INFO("shots: per element " << a.status.shots << ", planned " << b.status.shots << ", uncut " << c.status.shots);
+  CHECK(worstWhole > 1.5 * worstPlanned);  // the cut is what makes the difference
+  CHECK(b.status.shots < a.status.shots / 3);
+}
