@@ -139,7 +139,9 @@ TEST_CASE("Cornell box at L = 4: visibility agrees with CGAL on 99.9% of pairs a
   Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2500));
   SolverState state(s, atlas);
-  FormFactorProbe probe(state, 4, 512, Projection::Stereographic);
+  // The item buffers the bench uses: 512^2 (the default) and 256^2 (--item-res auto at 10k).
+  const int resolution = GENERATE(256, 512);
+  FormFactorProbe probe(state, 4, resolution, Projection::Stereographic);
   ExactReference reference(s, atlas);
   const std::vector<bool> band = contactBand(s, atlas, 2.0);
   std::size_t pairs = 0, agree = 0, bandPairs = 0, bandAgree = 0, bandHidden = 0;
@@ -154,7 +156,7 @@ TEST_CASE("Cornell box at L = 4: visibility agrees with CGAL on 99.9% of pairs a
     }
   }
   const double overall = double(agree) / double(pairs), contact = double(bandAgree) / double(bandPairs);
-  INFO(pairs << " pairs, agreement " << overall << "; " << bandPairs << " in the contact band (" << bandHidden
+  INFO(resolution << "^2: " << pairs << " pairs, agreement " << overall << "; " << bandPairs << " in the contact band (" << bandHidden
              << " hidden), agreement " << contact);
   REQUIRE(bandHidden > 100);  // the band holds shadowed pairs: agreement there is not trivial
   CHECK(overall >= 0.999);
