@@ -140,6 +140,7 @@ void VertexArray::uintAttribute(GLuint location, GLuint offset) {
   glVertexArrayAttribIFormat(id_, location, 1, GL_UNSIGNED_INT, offset);
   glVertexArrayAttribBinding(id_, location, 0);
 }
+void VertexArray::indexBuffer(const Buffer& buffer) { glVertexArrayElementBuffer(id_, buffer.id()); }
 void VertexArray::bind() const { glBindVertexArray(id_); }
 
 // ---- Query

@@ -104,6 +104,7 @@ class VertexArray : public Handle<deleteVertexArray> {
   void vertexBuffer(const Buffer& buffer, GLsizei stride);
   void floatAttribute(GLuint location, GLint components, GLuint offset);
   void uintAttribute(GLuint location, GLuint offset);  // one GLuint, not normalised
+  void indexBuffer(const Buffer& buffer);               // GLuint indices (drawIndexedTriangles)
   void bind() const;
 };
 

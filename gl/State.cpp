@@ -25,6 +25,10 @@ void drawTriangles(std::size_t vertices, int instances) {
     glDrawArraysInstanced(GL_TRIANGLES, 0, GLsizei(vertices), instances);
 }
 
+void drawIndexedTriangles(std::size_t indices, int instances) {
+  glDrawElementsInstanced(GL_TRIANGLES, GLsizei(indices), GL_UNSIGNED_INT, nullptr, instances);
+}
+
 void finish() { glFinish(); }
 
 }  // namespace hemirad::gl

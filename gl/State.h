@@ -49,6 +49,8 @@ void barrier(Barrier bits);
 
 // Triangles from vertex 0 of the bound vertex array, `instances` times.
 void drawTriangles(std::size_t vertices, int instances = 1);
+// The same from the bound vertex array's GLuint index buffer: shared vertices are shaded once.
+void drawIndexedTriangles(std::size_t indices, int instances = 1);
 // Waits for every command enqueued so far (timing; synchronised readback is implicit).
 void finish();
 

@@ -1,6 +1,8 @@
 #include "src/scene/ItemMesh.h"
 
 #include <array>
+#include <cstring>
+#include <map>
 
 namespace hemirad {
 
@@ -34,6 +36,19 @@ std::vector<ItemVertex> buildItemMesh(const Scene& scene, int level) {
     for (size_t k = 1; k + 1 < v.size(); ++k) split({v[0], v[k], v[k + 1]}, level, id, out);  // convex: a fan
   }
   return out;
+}
+
+IndexedItemMesh indexItemMesh(const std::vector<ItemVertex>& triangles) {
+  IndexedItemMesh mesh;
+  std::map<std::array<std::uint32_t, 4>, std::uint32_t> index;
+  for (const ItemVertex& v : triangles) {
+    std::array<std::uint32_t, 4> key;
+    std::memcpy(key.data(), &v, sizeof key);
+    auto [it, added] = index.try_emplace(key, std::uint32_t(mesh.vertices.size()));
+    if (added) mesh.vertices.push_back(v);
+    mesh.indices.push_back(it->second);
+  }
+  return mesh;
 }
 
 }  // namespace hemirad

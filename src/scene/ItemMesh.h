@@ -18,6 +18,15 @@ struct ItemVertex {
 // endpoints symmetrically, so neighbours sharing an edge split it at the same point.
 std::vector<ItemVertex> buildItemMesh(const Scene& scene, int level);
 
+// The same triangles with each distinct vertex (position and polygon, bitwise) stored once, in
+// order of first use, and three indices a triangle: a split mesh shares each vertex between up
+// to six triangles, so the item buffer shades a sixth as many vertices.
+struct IndexedItemMesh {
+  std::vector<ItemVertex> vertices;
+  std::vector<std::uint32_t> indices;
+};
+IndexedItemMesh indexItemMesh(const std::vector<ItemVertex>& triangles);
+
 inline std::size_t itemTriangleCount(const Scene& scene, int level) {
   std::size_t base = 0;
   for (auto& p : scene.polygons()) base += p.vertices.size() - 2;

@@ -36,10 +36,12 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
       program_(gl::renderProgram("itembuffer.vert", "itembuffer.frag", defines_)),
       id_(GL_R32UI, faceResolution_, faceResolution_, faces_ * shooters_),
       depth_(GL_DEPTH_COMPONENT32F, faceResolution_, faceResolution_, faces_ * shooters_) {
-  std::vector<ItemVertex> mesh = buildItemMesh(scene, subdivision);
-  vertexCount_ = mesh.size();
-  vertices_ = gl::Buffer(std::span<const ItemVertex>(mesh));
+  const IndexedItemMesh mesh = indexItemMesh(buildItemMesh(scene, subdivision));
+  indexCount_ = mesh.indices.size();
+  vertices_ = gl::Buffer(std::span<const ItemVertex>(mesh.vertices));
+  indices_ = gl::Buffer(std::span<const std::uint32_t>(mesh.indices));
   vao_.vertexBuffer(vertices_, sizeof(ItemVertex));
+  vao_.indexBuffer(indices_);
   vao_.floatAttribute(0, 3, offsetof(ItemVertex, x));
   vao_.uintAttribute(1, offsetof(ItemVertex, polygon));
   target_.attach(GL_COLOR_ATTACHMENT0, id_);
@@ -62,7 +64,7 @@ void ItemBuffer::render(const gl::Buffer& control) {
   target_.clearColor(kNoPolygon);  // every layer
   target_.clearDepth(1.0f);
   target_.bind();
-  gl::drawTriangles(vertexCount_, faces_ * shooters_);
+  gl::drawIndexedTriangles(indexCount_, faces_ * shooters_);
 }
 
 void ItemBuffer::bindForLookup() const {

@@ -32,7 +32,7 @@ class ItemBuffer {
   void render(const gl::Buffer& control);
   // Binds the id and depth targets to texture units 2 and 3.
   void bindForLookup() const;
-  std::size_t triangles() const { return vertexCount_ / 3; }
+  std::size_t triangles() const { return indexCount_ / 3; }
   // Pixels one shooter's item buffer covers (all its faces): the fill work of a shot.
   std::size_t pixelsPerShooter() const { return std::size_t(faces_) * faceResolution_ * faceResolution_; }
 
@@ -41,12 +41,12 @@ class ItemBuffer {
   int faces_, shooters_;
   gl::Defines defines_;
   gl::Program program_;
-  gl::Buffer vertices_;
+  gl::Buffer vertices_, indices_;
   gl::Buffer planes_;  // per polygon: unit normal, offset n . p (exact depths)
   gl::VertexArray vao_;
   gl::Texture id_, depth_;
   gl::Framebuffer target_;  // layered: the vertex shader picks the layer
-  std::size_t vertexCount_ = 0;
+  std::size_t indexCount_ = 0;
 };
 
 }  // namespace hemirad
