@@ -1,7 +1,7 @@
 // Per pass, the unshot statistics of every shooter-tree node (shooter_tree.glsl): one
 // workgroup per block, its threads split evenly over the block's leaves (each strides over
-// its leaf's texels), a fixed-order tree sum per leaf, then thread 0 folds leaves into their
-// parents. The ranking then reads one entry per block, and the descent one per node, instead
+// its leaf's texels), a fixed-order tree sum per leaf, then the leaves fold into their parents
+// level by level. The ranking then reads one entry per block, and the descent one per node, instead
 // of walking texels in one invocation per shooter. BLOCK_THREADS: at least one per leaf.
 #define WRITES_NODE_STATS
 #include "hemisphere.glsl"
@@ -45,6 +45,13 @@ NodeStats four(uint first, uint step) {
   return merge(merge(partial[first], partial[first + step]), merge(partial[first + 2u * step], partial[first + 3u * step]));
 }
 
+// The first node of level d of the block's tree (0: the block; breadth-first, levels contiguous).
+uint levelStart(uint block, uint d) {
+  uint n = block;
+  for (uint k = 0u; k < d; ++k) n = nodes[n].firstChild;
+  return n;
+}
+
 void main() {
   uint block = gl_WorkGroupID.x, l = gl_LocalInvocationID.x;
   uint depth = nodes[block].depth, leaves = 1u << (2u * depth), threads = THREADS / leaves;
@@ -58,18 +65,17 @@ void main() {
     barrier();
   }
   if (sub == 0u) stats[nodes[block].firstLeaf + leaf] = partial[l];
-  barrier();  // every leaf is stored before thread 0 reuses the slots
-  if (l != 0u || depth == 0u) return;
-  // Level by level up from the leaves (node j of level d folds the four children whose sums
-  // sit `step` slots apart from slot 4 j step, and leaves its own in the first of them).
-  uint start[MAX_SPLIT_DEPTH];  // first node of each level: breadth-first, levels contiguous
-  start[0] = block;
-  for (uint d = 1u; d < depth; ++d) start[d] = nodes[start[d - 1u]].firstChild;
+  barrier();  // every leaf is stored before its slot is reused
+  // Level by level up from the leaves, a thread a node: node j of level d folds the four
+  // children whose sums sit `step` slots apart from slot 4 j step, and leaves its own in the
+  // first of them (the slots of different nodes are disjoint).
   for (int d = int(depth) - 1; d >= 0; --d) {
     uint step = threads << (2u * (depth - 1u - uint(d)));
-    for (uint j = 0u; j < (1u << (2u * uint(d))); ++j) {
-      partial[4u * j * step] = four(4u * j * step, step);
-      stats[start[d] + j] = partial[4u * j * step];
+    if (l < (1u << (2u * uint(d)))) {
+      partial[4u * l * step] = four(4u * l * step, step);
+      stats[levelStart(block, uint(d)) + l] = partial[4u * l * step];
     }
+    memoryBarrierShared();
+    barrier();
   }
 }

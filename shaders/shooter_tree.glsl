@@ -2,7 +2,6 @@
 // geometry, and the unshot statistics node_stats.comp gathers for each node every pass.
 
 const uint NO_CHILD = 0xFFFFFFFFu;
-const uint MAX_SPLIT_DEPTH = 4u;  // kMaxSplitDepth
 
 struct Node {
   ivec4 rect;        // atlas x, y, w, h (w = 0: empty)
