@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "src/base/Error.h"
 #include "src/cli/CliDocs.h"
 #include "src/cli/Options.h"
 #include "src/solver/Methods.h"
@@ -54,10 +55,10 @@ void Commands::addSolve() {
   add(s, "--item-subdiv", p.itemSubdivision);
   add(s, "--item-res", p.itemResolution);
   add(s, "--hemisphere", solveProjection);
-  add(s, "--shoot-level", p.shootLevel);
-  add(s, "--algorithm", p.algorithm);
-  add(s, "--fov-decay", p.fovDecayShots);
+  progressiveOnly = {converge, add(s, "--shoot-level", p.shootLevel), add(s, "--algorithm", p.algorithm),
+                     add(s, "--fov-decay", p.fovDecayShots)};
   add(s, "--shooters-per-pass", p.shootersPerPass);
+  stochasticOnly = {add(s, "--seed", solve.stochastic.seed), add(s, "--transport", transport)};
   addSwitch(s, "--sync-timings", syncTimings);
   add(s, "--backend", solveBackend);
   add(s, "--gpu", solve.backend.gpu);
@@ -70,6 +71,7 @@ void Commands::addSolve() {
   add(s, "--ambient", solve.ambient);
   addSolveOutputs(s);
   addWalkthrough(s);
+  progressiveOnly.push_back(s->get_option("--camera-path"));
 }
 
 void Commands::addSolveOutputs(CLI::App* s) {
@@ -153,6 +155,28 @@ void Commands::addExperiment() {
   add(x, "--gpu", e.backend.gpu);
 }
 
+// --method stochastic takes the item-buffer, batching and stop flags; the progressive
+// method's shooter choice, convergence and walkthroughs mean nothing to it.
+void Commands::settleStochastic() {
+  const ProgressiveSettings& p = solve.progressive;
+  if (solve.method != Method::Stochastic) {
+    for (const CLI::Option* o : stochasticOnly)
+      if (*o) throw InputError(o->get_name() + " is for --method stochastic");
+    return;
+  }
+  for (const CLI::Option* o : progressiveOnly)
+    if (*o) throw InputError(o->get_name() + " is for --method progressive, not stochastic");
+  if (!*shots) throw InputError("--method stochastic needs --shots N (iterations): it has no convergence to stop at");
+  StochasticSettings& s = solve.stochastic;
+  s.source = parseSource(transport);
+  s.shooters = p.shootersPerPass;
+  s.itemSubdivision = p.itemSubdivision;
+  s.itemResolution = p.itemResolution;
+  s.projection = p.projection;
+  s.timings = p.timings;
+  s.stop = p.stop;
+}
+
 int Commands::runSolve() {
   ProgressiveSettings& p = solve.progressive;
   // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told.
@@ -160,6 +184,7 @@ int Commands::runSolve() {
   if (syncTimings) p.timings = gl::TimerMode::Synchronous;
   solve.backend.kind = gl::parseBackendKind(solveBackend);
   p.projection = parseProjection(solveProjection);
+  settleStochastic();
   solve.progress = !quiet;
   return hemirad::runSolve(solve);
 }

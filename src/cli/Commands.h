@@ -35,9 +35,10 @@ struct Commands {
   void addView();
   void addExperiment();
   int runSolve();
+  void settleStochastic();
 
   // Flags read into text, turned into the options after parsing.
-  std::string solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa",
+  std::string solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa", transport = "iterate",
               shooters = "16";
   std::vector<std::string> validateProjections{"stereographic"};
   bool quiet = false, syncTimings = false;
@@ -45,6 +46,8 @@ struct Commands {
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
            *experimentCmd = nullptr, *docsCmd = nullptr;
   CLI::Option *converge = nullptr, *shots = nullptr;
+  std::vector<CLI::Option*> stochasticOnly;   // flags that mean nothing to --method progressive
+  std::vector<CLI::Option*> progressiveOnly;  // flags that mean nothing to --method stochastic
 };
 
 }  // namespace hemirad

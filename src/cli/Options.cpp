@@ -89,7 +89,9 @@ std::vector<Flag> sceneAndSolverFlags() {
        CLI::Range(std::size_t(1), std::size_t(1) << 28)},
       {"--scenes", "OBJ", "OBJ scenes", CLI::ExistingFile},
       // The solver.
-      {"--method", "METHOD", "Radiosity method: progressive; stochastic and instant are not built yet",
+      {"--method", "METHOD",
+       "Radiosity method: progressive refinement; stochastic iteration (seed 000: --shots iterations of K random "
+       "texel shooters, K = --shooters-per-pass); instant is not built yet",
        oneOf(methods(), "progressive|stochastic|instant"), "progressive"},
       {"--algorithm", "NAME",
        "Progressive shooter choice: progressive; importance: shooters ranked by unshot power x importance from "
@@ -112,6 +114,12 @@ std::vector<Flag> sceneAndSolverFlags() {
        "Perspective-driven: shots over which the simulated field of view grows from the camera's to the whole "
        "scene after each camera move",
        kCount, "a quarter of the shooter blocks"},
+      {"--seed", "N", "Stochastic iteration's random seed: the same seed and backend give bitwise the same result",
+       CLI::Range(0u, 0xFFFFFFFFu)},
+      {"--transport", "WHAT",
+       "Stochastic iteration: what the random operator carries each iteration, the last iterate (a chain, "
+       "averaged) or the running mean itself (seed 000's eq. 2 as printed; slower to lose its bias)",
+       names({"iterate", "mean"})},
       {"--sync-timings", "", "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)",
        none},
   };
