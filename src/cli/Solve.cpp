@@ -209,8 +209,11 @@ int runSolve(const SolveOptions& o) {
   run.radiosityHash = radiosityHash(atlas, B);
   run.objects = objectRadiosity(scene, atlas, B);
   if (!o.report.empty()) writeReport(o.report, run);
-  fmt::print(stderr, "hemirad: {}: {} elements, {} shots, convergence {:.4f} in {:.0f} ms ({}, {})\n", o.scene,
-             atlas.elements, status.shots, status.convergence, solveMs, backend->name(), backend->renderer());
+  const std::string reached = o.method == Method::Stochastic
+                                   ? fmt::format("{} iterations of {} shooters", status.shots, o.stochastic.shooters)
+                                   : fmt::format("{} shots, convergence {:.4f}", status.shots, status.convergence);
+  fmt::print(stderr, "hemirad: {}: {} elements, {} in {:.0f} ms ({}, {})\n", o.scene, atlas.elements, reached, solveMs,
+             backend->name(), backend->renderer());
   return 0;
 }
 
