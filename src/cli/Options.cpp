@@ -198,6 +198,8 @@ std::vector<Flag> frameAndCommandFlags() {
        none},
       // bench.
       {"--split-shots", "N", "Shots timed pass by pass for the split", CLI::Range(1u, 1u << 20)},
+      {"--atlas-sides", "N", "Stochastic iteration: a row per atlas side, the texel size chosen to fill it",
+       CLI::Range(16, 16384)},
       {"--compare", "FILE", "Another bench JSON: print per-object differences to its matching rows", none},
       {"--ceiling", "",
        "Also measure the device's ceilings (load-store invocations/s, item-buffer triangles/s) and print each "
