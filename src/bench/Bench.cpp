@@ -211,7 +211,7 @@ nlohmann::json rowJson(const BenchRow& r) {
 
 // The stochastic method's rows and JSON (src/bench/StochasticBench.h).
 template <class Say>
-int runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
+void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
   requireBuilt(o.method);
   say(fmt::format("hemirad bench, {}, {} ({}), stochastic iteration, item mesh L{}, item buffer {}^2\n\n", date,
                   backend.name(), backend.renderer(), o.progressive.itemSubdivision, o.progressive.itemResolution));
@@ -225,7 +225,6 @@ int runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const 
                                          {"item_resolution", o.progressive.itemResolution},
                                          {"rows", rows}}
                                   .dump(2) + "\n");
-  return 0;
 }
 
 }  // namespace
@@ -244,7 +243,11 @@ int runBench(BenchOptions o) {
     std::fflush(stdout);
     text += s;
   };
-  if (o.method == Method::Stochastic) return runStochasticBench(o, *backend, date, say);
+  if (o.method == Method::Stochastic) {
+    runStochasticBench(o, *backend, date, say);
+    if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
+    return 0;
+  }
   say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, item buffer {}^2\n\n",
                   date, backend->name(), backend->renderer(), algorithmName(o.progressive.algorithm), o.converge,
                   o.progressive.shootLevel,

@@ -40,6 +40,7 @@ Commands::Commands() {
   addBenchFlags(benchCmd, bench);
   addView();
   addExperiment();
+  addComparison();
 
   docsCmd = app.add_subcommand("docs", "Print docs/cli.md (this command line as markdown)")->group("");
   docsCmd->add_option("what", docs, "cli")->required()->check(CLI::IsMember({"cli"}));
@@ -155,6 +156,23 @@ void Commands::addExperiment() {
   add(x, "--gpu", e.backend.gpu);
 }
 
+void Commands::addComparison() {
+  CLI::App* c = comparisonCmd = app.add_subcommand(
+      "compare-methods", "Error against solver time: progressive refinement vs stochastic iteration, same run");
+  MethodComparisonOptions& m = comparison;
+  add(c, "--scenes", m.scenes);
+  add(c, "--elements", m.elements);
+  add(c, "--reference-convergence", m.referenceConvergence);
+  add(c, "--shots", m.iterations, "1024 (stochastic iterations; progressive gets as much solver time)");
+  add(c, "--shooters-per-pass", m.progressive.shootersPerPass);
+  add(c, "--item-res", m.progressive.itemResolution);
+  add(c, "--item-subdiv", m.progressive.itemSubdivision);
+  add(c, "--seed", m.seed);
+  add(c, "--out-dir", m.out);
+  add(c, "--backend", m.backendName);
+  add(c, "--gpu", m.backend.gpu);
+}
+
 // --method stochastic takes the item-buffer, batching and stop flags; the progressive
 // method's shooter choice, convergence and walkthroughs mean nothing to it.
 void Commands::settleStochastic() {
@@ -195,6 +213,7 @@ int Commands::run() {
   if (*benchCmd) return runBench(bench);
   if (*viewCmd) return runView(view);
   if (*experimentCmd) return runExperiment(experiment);
+  if (*comparisonCmd) return runMethodComparison(comparison);
   if (*docsCmd) {
     fmt::print("{}", options::markdown(app));
     return 0;

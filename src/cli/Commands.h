@@ -9,6 +9,7 @@
 #include "src/validate/Validate.h"
 #include "src/viewer/Viewer.h"
 #include "src/walk/Experiment.h"
+#include "src/walk/MethodComparison.h"
 
 namespace hemirad {
 
@@ -26,6 +27,7 @@ struct Commands {
   BenchOptions bench;
   ViewerOptions view;
   ExperimentOptions experiment;
+  MethodComparisonOptions comparison;
 
  private:
   void addSolve();
@@ -34,6 +36,7 @@ struct Commands {
   void addValidate();
   void addView();
   void addExperiment();
+  void addComparison();
   int runSolve();
   void settleStochastic();
 
@@ -44,7 +47,8 @@ struct Commands {
   bool quiet = false, syncTimings = false;
   std::string docs;
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
-           *experimentCmd = nullptr, *docsCmd = nullptr;
+           *experimentCmd = nullptr, *docsCmd = nullptr,
+           *comparisonCmd = nullptr;
   CLI::Option *converge = nullptr, *shots = nullptr;
   std::vector<CLI::Option*> stochasticOnly;   // flags that mean nothing to --method progressive
   std::vector<CLI::Option*> progressiveOnly;  // flags that mean nothing to --method stochastic
