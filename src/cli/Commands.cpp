@@ -41,6 +41,7 @@ Commands::Commands() {
   addView();
   addExperiment();
   addComparison();
+  addAnimation();
 
   docsCmd = app.add_subcommand("docs", "Print docs/cli.md (this command line as markdown)")->group("");
   docsCmd->add_option("what", docs, "cli")->required()->check(CLI::IsMember({"cli"}));
@@ -173,6 +174,30 @@ void Commands::addComparison() {
   add(c, "--gpu", m.backend.gpu);
 }
 
+void Commands::addAnimation() {
+  CLI::App* a = animateCmd = app.add_subcommand(
+      "animate", "Stochastic iteration under moving lights: frames along a light path, each compared with a "
+                 "converged progressive solve");
+  AnimationOptions& m = animation;
+  m.stochastic.window = 64;
+  addScene(a, m.scene, m.load, m.discretisation);
+  add(a, "--light-path", m.lightPath)->required();
+  add(a, "--frames", m.framesDir)->required();
+  add(a, "--fps", m.fps);
+  add(a, "--frame-shots", m.frameIterations, "32 (stochastic iterations per frame)");
+  add(a, "--window", m.stochastic.window);
+  add(a, "--seed", m.stochastic.seed);
+  add(a, "--shooters-per-pass", m.stochastic.shooters);
+  add(a, "--item-res", m.stochastic.itemResolution);
+  add(a, "--item-subdiv", m.stochastic.itemSubdivision);
+  add(a, "--reference-convergence", m.referenceConvergence);
+  add(a, "--camera", m.camera);
+  add(a, "--width", m.width);
+  add(a, "--height", m.height);
+  add(a, "--backend", m.backendName);
+  add(a, "--gpu", m.backend.gpu);
+}
+
 // --method stochastic takes the item-buffer, batching and stop flags; the progressive
 // method's shooter choice, convergence and walkthroughs mean nothing to it.
 void Commands::settleStochastic() {
@@ -214,6 +239,10 @@ int Commands::run() {
   if (*viewCmd) return runView(view);
   if (*experimentCmd) return runExperiment(experiment);
   if (*comparisonCmd) return runMethodComparison(comparison);
+  if (*animateCmd) {
+    animation.stochastic.timings = gl::TimerMode::Off;
+    return runAnimation(animation);
+  }
   if (*docsCmd) {
     fmt::print("{}", options::markdown(app));
     return 0;

@@ -9,6 +9,7 @@
 #include "src/validate/Validate.h"
 #include "src/viewer/Viewer.h"
 #include "src/walk/Experiment.h"
+#include "src/walk/LightAnimation.h"
 #include "src/walk/MethodComparison.h"
 
 namespace hemirad {
@@ -28,6 +29,7 @@ struct Commands {
   ViewerOptions view;
   ExperimentOptions experiment;
   MethodComparisonOptions comparison;
+  AnimationOptions animation;
 
  private:
   void addSolve();
@@ -37,6 +39,7 @@ struct Commands {
   void addView();
   void addExperiment();
   void addComparison();
+  void addAnimation();
   int runSolve();
   void settleStochastic();
 
@@ -48,7 +51,7 @@ struct Commands {
   std::string docs;
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
            *experimentCmd = nullptr, *docsCmd = nullptr,
-           *comparisonCmd = nullptr;
+           *comparisonCmd = nullptr, *animateCmd = nullptr;
   CLI::Option *converge = nullptr, *shots = nullptr;
   std::vector<CLI::Option*> stochasticOnly;   // flags that mean nothing to --method progressive
   std::vector<CLI::Option*> progressiveOnly;  // flags that mean nothing to --method stochastic

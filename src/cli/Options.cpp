@@ -170,9 +170,16 @@ std::vector<Flag> frameAndCommandFlags() {
        "Walkthrough: keyframes 'TIME eye=.. target=.. fov=..' per line (docs/walkthroughs.md); writes a frame per "
        "1/--fps s and frames.csv into --frames",
        CLI::ExistingFile},
-      {"--frames", "DIR", "Folder for the walkthrough's frames and frames.csv", none},
+      {"--frames", "DIR", "Folder for the frames and frames.csv (a walkthrough's, animate's)", none},
+      {"--light-path", "FILE",
+       "Animate: keyframes 'TIME DX DY DZ' per line, the emitters' offset (docs/solve.md#moving-lights); a frame "
+       "per 1/--fps s",
+       none},
+      {"--window", "N", "Animate: the running mean weighs iterations over an exponential window of about N",
+       CLI::Range(1u, 1u << 20)},
       {"--keep-frames", "", "Also keep every frame as OUT-DIR/SCENE_ALGORITHM/frame_NNNN.png", none},
-      {"--fps", "FPS", "Walkthrough frames per second of path time", CLI::Range(0.01, 1000.0)},
+      {"--fps", "FPS", "Frames per second of path time (a walkthrough's camera path, animate's light path)",
+       CLI::Range(0.01, 1000.0)},
       {"--frame-ms", "MS", "Solver milliseconds per frame", CLI::Range(1.0, 1e7)},
       {"--frame-shots", "N",
        "Instead of --frame-ms: shots per frame (reproducible; rounded up to whole passes of --shooters-per-pass)",

@@ -150,7 +150,8 @@ SolveStatus StochasticSolver::advance(unsigned iterations) {
   const unsigned limit = settings_.stop.maxShots;
   for (unsigned k = 0; k < iterations && !(limit && status_.shots >= limit); ++k) {
     const std::uint32_t m = ++status_.shots;  // 1-based: B~_m = (1 - 1/m) B~_{m-1} + (1/m) L_m
-    iterate(settings_.source == Source::Mean ? state_.radiosity : state_.deltaB, m, 1.0f / float(m), 1.0f);
+    const unsigned span = settings_.window && m > settings_.window ? settings_.window : m;
+    iterate(settings_.source == Source::Mean ? state_.radiosity : state_.deltaB, m, 1.0f / float(span), 1.0f);
   }
   // The only readback: the iteration count the GPU last saw, which also waits for the batch.
   const auto t0 = std::chrono::steady_clock::now();

@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "src/base/AtomicFile.h"
+#include "src/walk/SolutionError.h"
 #include "src/output/SvgPlot.h"
 #include "src/scene/SceneLoader.h"
 
@@ -22,18 +23,6 @@ struct Sample {
 
 using Clock = std::chrono::steady_clock;
 
-// Relative RMS of luminance against the reference, area-weighted over the elements.
-double relativeError(const Atlas& atlas, const std::vector<glm::vec4>& B, const std::vector<glm::vec4>& reference) {
-  double err = 0, norm = 0;
-  for (std::size_t t = 0; t < B.size(); ++t) {
-    if (atlas.polygonOf[t] == kNoPolygon) continue;
-    const double A = atlas.positionArea[t].w, r = luminance(glm::dvec3(reference[t]));
-    err += A * std::pow(luminance(glm::dvec3(B[t])) - r, 2);
-    norm += A * r * r;
-  }
-  return std::sqrt(err / norm);
-}
-
 // Batches of doubling size until `done`; only advance() and the wait for the GPU are timed.
 std::vector<Sample> trace(gl::RenderBackend& backend, const SolverState& state, Solver& solver,
                           const std::vector<glm::vec4>& reference, const std::function<bool(const Sample&)>& done) {
@@ -46,7 +35,7 @@ std::vector<Sample> trace(gl::RenderBackend& backend, const SolverState& state, 
     backend.finish();
     s.solverMs += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
     s.shots = status.shots;
-    s.error = relativeError(state.atlas, state.readRadiosity(), reference);
+    s.error = relativeRmsError(state.scene, state.atlas, state.readRadiosity(), reference);
     out.push_back(s);
     if (status.done) break;
   }
@@ -88,8 +77,10 @@ int runMethodComparison(MethodComparisonOptions o) {
     advanceToStop(refSolver, {});
     const std::vector<glm::vec4> reference = refState.readRadiosity();
 
-    StochasticSettings st{o.seed, p.shootersPerPass, Source::Iterate, p.itemSubdivision, p.itemResolution,
-                          p.projection, gl::TimerMode::Off, {o.iterations, 0}};
+    StochasticSettings st;
+    st.seed = o.seed, st.shooters = p.shootersPerPass, st.itemSubdivision = p.itemSubdivision;
+    st.itemResolution = p.itemResolution, st.projection = p.projection, st.timings = gl::TimerMode::Off;
+    st.stop = {o.iterations, 0};
     SolverState stState(scene, atlas);
     StochasticSolver stochastic(stState, st);
     const std::vector<Sample> stSamples = trace(*backend, stState, stochastic, reference, [](const Sample&) { return false; });
@@ -104,7 +95,7 @@ int runMethodComparison(MethodComparisonOptions o) {
                   "method,shots,solver_ms,relative_rms_error\n" + csv("progressive", prSamples) + csv("stochastic", stSamples));
     writeLogLogSvg(o.out + "/" + name + "_error_vs_time.svg",
                    {fmt::format("{}: {} elements", name, atlas.elements), "solver time (ms)",
-                    "relative RMS error of luminance", true, 720, 480},
+                    "RMS error of luminance / mean (non-emitters)", true, 720, 480},
                    {series("progressive (K = " + std::to_string(p.shootersPerPass) + ")", prSamples),
                     series("stochastic (K = " + std::to_string(st.shooters) + ")", stSamples)});
     for (const auto& [method, samples] : {std::pair{"progressive", &prSamples}, {"stochastic", &stSamples}})

@@ -1,7 +1,7 @@
 // `hemirad compare-methods`: error against solver time for progressive refinement and
 // stochastic iteration in the same run, per scene: both start from E on the same atlas, the
-// error after each batch is the relative RMS of luminance against a converged progressive
-// solution (area-weighted over elements). Writes a CSV per scene, an SVG figure (log-log) and
+// error after each batch is relativeRmsError (SolutionError.h) against a converged progressive
+// solution. Writes a CSV per scene, an SVG figure (log-log) and
 // a markdown summary.
 #pragma once
 #include <string>
