@@ -172,7 +172,7 @@ std::vector<Flag> frameAndCommandFlags() {
        CLI::ExistingFile},
       {"--frames", "DIR", "Folder for the frames and frames.csv (a walkthrough's, animate's)", none},
       {"--light-path", "FILE",
-       "Animate: keyframes 'TIME DX DY DZ' per line, the emitters' offset (docs/solve.md#moving-lights); a frame "
+       "Animate: keyframes 'TIME DX DY DZ' per line, the emitters' offset (docs/solve.md, Moving lights); a frame "
        "per 1/--fps s",
        none},
       {"--window", "N", "Animate: the running mean weighs iterations over an exponential window of about N",
