@@ -61,7 +61,7 @@ int runMethodComparison(MethodComparisonOptions o) {
   auto backend = gl::createBackend(o.backend);
   std::filesystem::create_directories(o.out);
   std::string summary = fmt::format("# Error against solver time: progressive vs stochastic ({}, {})\n\n"
-                                    "| scene | elements | method | shots / iterations | solver ms | relative RMS error |\n"
+                                    "| scene | elements | method | shots / iterations | solver ms | RMS error / mean (non-emitters) |\n"
                                     "|---|---|---|---|---|---|\n",
                                     backend->name(), backend->renderer());
   for (const std::string& path : o.scenes) {
