@@ -107,7 +107,8 @@ std::vector<Flag> sceneAndSolverFlags() {
        names({"stereographic", "hemicube"})},
       {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
        "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, 0, 8)},
-      {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass (at most {})",
+      {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass; stochastic "
+                                               "iteration: K random texels an iteration (at most {})",
                                                kMaxPassShooters),
        CLI::Range(1, int(kMaxPassShooters))},
       {"--fov-decay", "SHOTS",
