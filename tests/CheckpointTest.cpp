@@ -111,3 +111,29 @@ TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint
   CHECK(needs.exitCode == 2);
   CHECK_THAT(needs.output, Contains("--checkpoint"));
 }
+
+TEST_CASE("A stochastic solve resumed from a checkpoint gives the bitwise result of an uninterrupted one",
+          "[cli][checkpoint]") {
+  const std::string args = "solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                           " --elements 300 --quiet --method stochastic --seed 5 --item-res 64 --item-subdiv 1";
+  auto report = [&](const std::string& flags, const std::string& name) {
+    const std::string path = test::tempPath(name);
+    test::Run run = test::hemirad(args + " " + flags + " --report " + path);
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    return test::readJson(path);
+  };
+  const std::string ck = test::tempPath("stochastic.ckpt");
+  const nlohmann::json whole = report("--shots 40", "stochastic-whole.json");
+  const nlohmann::json first = report("--shots 17 --checkpoint " + ck, "stochastic-first.json");
+  const nlohmann::json resumed = report("--shots 40 --resume " + ck, "stochastic-resumed.json");
+  CHECK(first["shots"] == 17);
+  CHECK(first["radiosity_hash"] != whole["radiosity_hash"]);
+  CHECK(resumed["shots"] == 40);
+  CHECK(resumed["method"] == "stochastic");
+  CHECK(resumed["radiosity_hash"] == whole["radiosity_hash"]);
+  test::Run other = test::hemirad(args + " --shots 40 --seed 6 --resume " + ck);
+  INFO(other.output);
+  CHECK(other.exitCode == 2);
+  CHECK_THAT(other.output, Contains("seed"));
+}

@@ -10,6 +10,7 @@
 #include "src/base/AtomicFile.h"
 #include "src/scene/Camera.h"
 #include "src/bench/Ceilings.h"
+#include "src/bench/StochasticBench.h"
 #include "src/cli/Options.h"
 #include "src/base/Error.h"
 #include "src/solver/Control.h"
@@ -155,6 +156,9 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   add(cmd, "--item-res", o.progressive.itemResolution);
   add(cmd, "--shooters-per-pass", o.shootersPerPass);
   add(cmd, "--algorithm", o.progressive.algorithm);
+  add(cmd, "--method", o.method);
+  add(cmd, "--atlas-sides", o.atlasSides);
+  add(cmd, "--shots", o.iterations, "8 (--method stochastic: iterations timed per row)");
   add(cmd, "--markdown", o.markdown);
   add(cmd, "--split-shots", o.splitShots);
   add(cmd, "--backend", o.backendName);
@@ -205,6 +209,24 @@ nlohmann::json rowJson(const BenchRow& r) {
           {"radiosity_hash", fmt::format("{:016x}", r.hash)}, {"objects", objectsJson(r.objects)}};
 }
 
+// The stochastic method's rows and JSON (src/bench/StochasticBench.h).
+template <class Say>
+void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
+  requireBuilt(o.method);
+  say(fmt::format("hemirad bench, {}, {} ({}), stochastic iteration, item mesh L{}, item buffer {}^2\n\n", date,
+                  backend.name(), backend.renderer(), o.progressive.itemSubdivision, o.progressive.itemResolution));
+  const nlohmann::json rows = benchStochastic(backend, o, say);
+  if (!o.json.empty())
+    writeTextFile(o.json, nlohmann::json{{"date", date},
+                                         {"backend", backend.name()},
+                                         {"renderer", backend.renderer()},
+                                         {"method", "stochastic"},
+                                         {"item_subdivision", o.progressive.itemSubdivision},
+                                         {"item_resolution", o.progressive.itemResolution},
+                                         {"rows", rows}}
+                                  .dump(2) + "\n");
+}
+
 }  // namespace
 
 int runBench(BenchOptions o) {
@@ -221,6 +243,11 @@ int runBench(BenchOptions o) {
     std::fflush(stdout);
     text += s;
   };
+  if (o.method == Method::Stochastic) {
+    runStochasticBench(o, *backend, date, say);
+    if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
+    return 0;
+  }
   say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, item buffer {}^2\n\n",
                   date, backend->name(), backend->renderer(), algorithmName(o.progressive.algorithm), o.converge,
                   o.progressive.shootLevel,

@@ -1,12 +1,13 @@
 // `hemirad bench`: time to convergence and the per-pass split of the progressive solver on
-// scenes of growing element counts, as a table and JSON. Speed lives here, never in tests.
+// scenes of growing element counts, or (--method stochastic) the cost of one stochastic
+// iteration at given atlas sides, as a table and JSON. Speed lives here, never in tests.
 #pragma once
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
 #include "gl/Backend.h"
-#include "src/solver/ProgressiveSolver.h"
+#include "src/solver/Methods.h"
 
 namespace hemirad {
 
@@ -15,6 +16,9 @@ struct BenchOptions {
   std::vector<std::size_t> elements{10000, 100000};
   double converge = 0.9;
   ProgressiveSettings progressive;  // shoot level, item mesh and buffer as for solve
+  Method method = Method::Progressive;
+  std::vector<int> atlasSides{512, 1024};  // stochastic: one row per atlas side (texel size fills it)
+  unsigned iterations = 8;          // stochastic: iterations timed per row
   std::vector<int> shootersPerPass{ProgressiveSettings{}.shootersPerPass};  // a row each
   unsigned splitShots = 64;         // shots timed pass by pass (synchronised) for the split
   gl::BackendOptions backend;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "src/base/Error.h"
 #include "src/cli/CliDocs.h"
 #include "src/cli/Options.h"
 #include "src/solver/Methods.h"
@@ -39,6 +40,8 @@ Commands::Commands() {
   addBenchFlags(benchCmd, bench);
   addView();
   addExperiment();
+  addComparison();
+  addAnimation();
 
   docsCmd = app.add_subcommand("docs", "Print docs/cli.md (this command line as markdown)")->group("");
   docsCmd->add_option("what", docs, "cli")->required()->check(CLI::IsMember({"cli"}));
@@ -54,10 +57,10 @@ void Commands::addSolve() {
   add(s, "--item-subdiv", p.itemSubdivision);
   add(s, "--item-res", p.itemResolution);
   add(s, "--hemisphere", solveProjection);
-  add(s, "--shoot-level", p.shootLevel);
-  add(s, "--algorithm", p.algorithm);
-  add(s, "--fov-decay", p.fovDecayShots);
+  progressiveOnly = {converge, add(s, "--shoot-level", p.shootLevel), add(s, "--algorithm", p.algorithm),
+                     add(s, "--fov-decay", p.fovDecayShots)};
   add(s, "--shooters-per-pass", p.shootersPerPass);
+  stochasticOnly = {add(s, "--seed", solve.stochastic.seed), add(s, "--transport", transport)};
   addSwitch(s, "--sync-timings", syncTimings);
   add(s, "--backend", solveBackend);
   add(s, "--gpu", solve.backend.gpu);
@@ -70,6 +73,7 @@ void Commands::addSolve() {
   add(s, "--ambient", solve.ambient);
   addSolveOutputs(s);
   addWalkthrough(s);
+  progressiveOnly.push_back(s->get_option("--camera-path"));
 }
 
 void Commands::addSolveOutputs(CLI::App* s) {
@@ -153,6 +157,69 @@ void Commands::addExperiment() {
   add(x, "--gpu", e.backend.gpu);
 }
 
+void Commands::addComparison() {
+  CLI::App* c = comparisonCmd = app.add_subcommand(
+      "compare-methods", "Error against solver time: progressive refinement vs stochastic iteration, same run");
+  MethodComparisonOptions& m = comparison;
+  add(c, "--scenes", m.scenes);
+  add(c, "--elements", m.elements);
+  add(c, "--reference-convergence", m.referenceConvergence);
+  add(c, "--shots", m.iterations, "1024 (stochastic iterations; progressive gets as much solver time)");
+  add(c, "--shooters-per-pass", m.progressive.shootersPerPass);
+  add(c, "--item-res", m.progressive.itemResolution);
+  add(c, "--item-subdiv", m.progressive.itemSubdivision);
+  add(c, "--seed", m.seed);
+  add(c, "--out-dir", m.out);
+  add(c, "--backend", m.backendName);
+  add(c, "--gpu", m.backend.gpu);
+}
+
+void Commands::addAnimation() {
+  CLI::App* a = animateCmd = app.add_subcommand(
+      "animate", "Stochastic iteration under moving lights: frames along a light path, each compared with a "
+                 "converged progressive solve");
+  AnimationOptions& m = animation;
+  m.stochastic.window = 64;
+  addScene(a, m.scene, m.load, m.discretisation);
+  add(a, "--light-path", m.lightPath)->required();
+  add(a, "--frames", m.framesDir)->required();
+  add(a, "--fps", m.fps);
+  add(a, "--frame-shots", m.frameIterations, "32 (stochastic iterations per frame)");
+  add(a, "--window", m.stochastic.window);
+  add(a, "--seed", m.stochastic.seed);
+  add(a, "--shooters-per-pass", m.stochastic.shooters);
+  add(a, "--item-res", m.stochastic.itemResolution);
+  add(a, "--item-subdiv", m.stochastic.itemSubdivision);
+  add(a, "--reference-convergence", m.referenceConvergence);
+  add(a, "--camera", m.camera);
+  add(a, "--width", m.width);
+  add(a, "--height", m.height);
+  add(a, "--backend", m.backendName);
+  add(a, "--gpu", m.backend.gpu);
+}
+
+// --method stochastic takes the item-buffer, batching and stop flags; the progressive
+// method's shooter choice, convergence and walkthroughs mean nothing to it.
+void Commands::settleStochastic() {
+  const ProgressiveSettings& p = solve.progressive;
+  if (solve.method != Method::Stochastic) {
+    for (const CLI::Option* o : stochasticOnly)
+      if (*o) throw InputError(o->get_name() + " is for --method stochastic");
+    return;
+  }
+  for (const CLI::Option* o : progressiveOnly)
+    if (*o) throw InputError(o->get_name() + " is for --method progressive, not stochastic");
+  if (!*shots) throw InputError("--method stochastic needs --shots N (iterations): it has no convergence to stop at");
+  StochasticSettings& s = solve.stochastic;
+  s.source = parseSource(transport);
+  s.shooters = p.shootersPerPass;
+  s.itemSubdivision = p.itemSubdivision;
+  s.itemResolution = p.itemResolution;
+  s.projection = p.projection;
+  s.timings = p.timings;
+  s.stop = p.stop;
+}
+
 int Commands::runSolve() {
   ProgressiveSettings& p = solve.progressive;
   // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told.
@@ -160,6 +227,7 @@ int Commands::runSolve() {
   if (syncTimings) p.timings = gl::TimerMode::Synchronous;
   solve.backend.kind = gl::parseBackendKind(solveBackend);
   p.projection = parseProjection(solveProjection);
+  settleStochastic();
   solve.progress = !quiet;
   return hemirad::runSolve(solve);
 }
@@ -170,6 +238,11 @@ int Commands::run() {
   if (*benchCmd) return runBench(bench);
   if (*viewCmd) return runView(view);
   if (*experimentCmd) return runExperiment(experiment);
+  if (*comparisonCmd) return runMethodComparison(comparison);
+  if (*animateCmd) {
+    animation.stochastic.timings = gl::TimerMode::Off;
+    return runAnimation(animation);
+  }
   if (*docsCmd) {
     fmt::print("{}", options::markdown(app));
     return 0;

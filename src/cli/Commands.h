@@ -9,6 +9,8 @@
 #include "src/validate/Validate.h"
 #include "src/viewer/Viewer.h"
 #include "src/walk/Experiment.h"
+#include "src/walk/LightAnimation.h"
+#include "src/walk/MethodComparison.h"
 
 namespace hemirad {
 
@@ -26,6 +28,8 @@ struct Commands {
   BenchOptions bench;
   ViewerOptions view;
   ExperimentOptions experiment;
+  MethodComparisonOptions comparison;
+  AnimationOptions animation;
 
  private:
   void addSolve();
@@ -34,17 +38,23 @@ struct Commands {
   void addValidate();
   void addView();
   void addExperiment();
+  void addComparison();
+  void addAnimation();
   int runSolve();
+  void settleStochastic();
 
   // Flags read into text, turned into the options after parsing.
-  std::string solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa",
+  std::string solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa", transport = "iterate",
               shooters = "16";
   std::vector<std::string> validateProjections{"stereographic"};
   bool quiet = false, syncTimings = false;
   std::string docs;
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
-           *experimentCmd = nullptr, *docsCmd = nullptr;
+           *experimentCmd = nullptr, *docsCmd = nullptr,
+           *comparisonCmd = nullptr, *animateCmd = nullptr;
   CLI::Option *converge = nullptr, *shots = nullptr;
+  std::vector<CLI::Option*> stochasticOnly;   // flags that mean nothing to --method progressive
+  std::vector<CLI::Option*> progressiveOnly;  // flags that mean nothing to --method stochastic
 };
 
 }  // namespace hemirad

@@ -89,7 +89,9 @@ std::vector<Flag> sceneAndSolverFlags() {
        CLI::Range(std::size_t(1), std::size_t(1) << 28)},
       {"--scenes", "OBJ", "OBJ scenes", CLI::ExistingFile},
       // The solver.
-      {"--method", "METHOD", "Radiosity method: progressive; stochastic and instant are not built yet",
+      {"--method", "METHOD",
+       "Radiosity method: progressive refinement; stochastic iteration (seed 000: --shots iterations of K random "
+       "texel shooters, K = --shooters-per-pass); instant is not built yet",
        oneOf(methods(), "progressive|stochastic|instant"), "progressive"},
       {"--algorithm", "NAME",
        "Progressive shooter choice: progressive; importance: shooters ranked by unshot power x importance from "
@@ -105,13 +107,20 @@ std::vector<Flag> sceneAndSolverFlags() {
        names({"stereographic", "hemicube"})},
       {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
        "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, 0, 8)},
-      {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass (at most {})",
+      {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass; stochastic "
+                                               "iteration: K random texels an iteration (at most {})",
                                                kMaxPassShooters),
        CLI::Range(1, int(kMaxPassShooters))},
       {"--fov-decay", "SHOTS",
        "Perspective-driven: shots over which the simulated field of view grows from the camera's to the whole "
        "scene after each camera move",
        kCount, "a quarter of the shooter blocks"},
+      {"--seed", "N", "Stochastic iteration's random seed: the same seed and backend give bitwise the same result",
+       CLI::Range(0u, 0xFFFFFFFFu)},
+      {"--transport", "WHAT",
+       "Stochastic iteration: what the random operator carries each iteration, the last iterate (a chain, "
+       "averaged) or the running mean itself (seed 000's eq. 2 as printed; slower to lose its bias)",
+       names({"iterate", "mean"})},
       {"--sync-timings", "", "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)",
        none},
   };
@@ -162,9 +171,16 @@ std::vector<Flag> frameAndCommandFlags() {
        "Walkthrough: keyframes 'TIME eye=.. target=.. fov=..' per line (docs/walkthroughs.md); writes a frame per "
        "1/--fps s and frames.csv into --frames",
        CLI::ExistingFile},
-      {"--frames", "DIR", "Folder for the walkthrough's frames and frames.csv", none},
+      {"--frames", "DIR", "Folder for the frames and frames.csv (a walkthrough's, animate's)", none},
+      {"--light-path", "FILE",
+       "Animate: keyframes 'TIME DX DY DZ' per line, the emitters' offset (docs/solve.md, Moving lights); a frame "
+       "per 1/--fps s",
+       none},
+      {"--window", "N", "Animate: the running mean weighs iterations over an exponential window of about N",
+       CLI::Range(1u, 1u << 20)},
       {"--keep-frames", "", "Also keep every frame as OUT-DIR/SCENE_ALGORITHM/frame_NNNN.png", none},
-      {"--fps", "FPS", "Walkthrough frames per second of path time", CLI::Range(0.01, 1000.0)},
+      {"--fps", "FPS", "Frames per second of path time (a walkthrough's camera path, animate's light path)",
+       CLI::Range(0.01, 1000.0)},
       {"--frame-ms", "MS", "Solver milliseconds per frame", CLI::Range(1.0, 1e7)},
       {"--frame-shots", "N",
        "Instead of --frame-ms: shots per frame (reproducible; rounded up to whole passes of --shooters-per-pass)",
@@ -190,6 +206,8 @@ std::vector<Flag> frameAndCommandFlags() {
        none},
       // bench.
       {"--split-shots", "N", "Shots timed pass by pass for the split", CLI::Range(1u, 1u << 20)},
+      {"--atlas-sides", "N", "Stochastic iteration: a row per atlas side, the texel size chosen to fill it",
+       CLI::Range(16, 16384)},
       {"--compare", "FILE", "Another bench JSON: print per-object differences to its matching rows", none},
       {"--ceiling", "",
        "Also measure the device's ceilings (load-store invocations/s, item-buffer triangles/s) and print each "

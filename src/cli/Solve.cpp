@@ -31,7 +31,7 @@ Image atlasImage(const Atlas& atlas, const std::vector<glm::vec4>& B) {
 // What a checkpoint must have been made from to be resumed by this solve.
 nlohmann::json checkpointIdentity(const Scene& scene, const Atlas& atlas, const SolveOptions& o, const Solver& solver) {
   const ProgressiveSettings& p = o.progressive;
-  return {{"scene_hash", fmt::format("{:016x}", sceneHash(scene))},
+  nlohmann::json identity = {{"scene_hash", fmt::format("{:016x}", sceneHash(scene))},
           {"algorithm", solver.algorithm()},
           {"texel_size", atlas.texelSize},
           {"atlas", {atlas.width, atlas.height}},
@@ -41,6 +41,11 @@ nlohmann::json checkpointIdentity(const Scene& scene, const Atlas& atlas, const 
           {"projection", projectionName(p.projection)},
           {"shoot_level", p.shootLevel},
           {"shooters_per_pass", p.shootersPerPass}};
+  if (o.method == Method::Stochastic) {
+    identity["seed"] = o.stochastic.seed;
+    identity["transport"] = sourceName(o.stochastic.source);
+  }
+  return identity;
 }
 
 Checkpoint takeCheckpoint(const SolverState& state, const Solver& solver, const nlohmann::json& identity,
@@ -148,6 +153,11 @@ RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, con
     describeProgressive(run, *progressive);
     run.itemResolution = progressive->plan().itemResolution;
   }
+  if (auto* stochastic = dynamic_cast<const StochasticSolver*>(&solver)) {
+    run.itemResolution = stochastic->itemResolution();
+    run.itemTriangles = stochastic->itemTriangles();
+    run.shootLevel = 0;  // one-texel shooters
+  }
   run.atlasWidth = atlas.width;
   run.atlasHeight = atlas.height;
   run.timings = solver.timings();
@@ -173,7 +183,7 @@ int runSolve(const SolveOptions& o) {
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
   SolverState state(scene, atlas);
-  const std::unique_ptr<Solver> method = makeSolver(o.method, state, o.progressive);
+  const std::unique_ptr<Solver> method = makeSolver(o.method, state, o.progressive, o.stochastic);
   Solver& solver = *method;
   auto* progressive = dynamic_cast<ProgressiveSolver*>(method.get());  // view-driven shooting, walkthroughs
   const nlohmann::json identity = checkpointIdentity(scene, atlas, o, solver);
@@ -199,8 +209,11 @@ int runSolve(const SolveOptions& o) {
   run.radiosityHash = radiosityHash(atlas, B);
   run.objects = objectRadiosity(scene, atlas, B);
   if (!o.report.empty()) writeReport(o.report, run);
-  fmt::print(stderr, "hemirad: {}: {} elements, {} shots, convergence {:.4f} in {:.0f} ms ({}, {})\n", o.scene,
-             atlas.elements, status.shots, status.convergence, solveMs, backend->name(), backend->renderer());
+  const std::string reached = o.method == Method::Stochastic
+                                   ? fmt::format("{} iterations of {} shooters", status.shots, o.stochastic.shooters)
+                                   : fmt::format("{} shots, convergence {:.4f}", status.shots, status.convergence);
+  fmt::print(stderr, "hemirad: {}: {} elements, {} in {:.0f} ms ({}, {})\n", o.scene, atlas.elements, reached, solveMs,
+             backend->name(), backend->renderer());
   return 0;
 }
 

@@ -18,6 +18,7 @@ struct SolveOptions {
   Discretisation discretisation;
   Method method = Method::Progressive;
   ProgressiveSettings progressive;  // the progressive method's
+  StochasticSettings stochastic;    // the stochastic method's (Commands copies the shared flags in)
   gl::BackendOptions backend;
   std::optional<std::string> camera;
   int width = 512, height = 512, supersample = 2;

@@ -1,5 +1,7 @@
 #include "src/output/Progress.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -31,8 +33,10 @@ void Progress::update(const SolveStatus& s) {
   double f = fraction(s), t = elapsedSeconds();
   int width = 30, filled = int(f * width + 0.5);
   std::string eta = f > 0.01 && !s.done ? fmt::format("ETA {:.1f}s", t * (1 - f) / f) : fmt::format("{:.1f}s", t);
-  fmt::print(stderr, "\r[{}{}] {:3.0f}%  shots {}  convergence {:.4f}  {}   ", std::string(size_t(filled), '#'),
-             std::string(size_t(width - filled), '.'), f * 100, s.shots, s.convergence, eta);
+  // Stochastic iteration has no convergence measure (NaN, docs/design.md#convergence).
+  const std::string convergence = std::isnan(s.convergence) ? "" : fmt::format("  convergence {:.4f}", s.convergence);
+  fmt::print(stderr, "\r[{}{}] {:3.0f}%  shots {}{}  {}   ", std::string(size_t(filled), '#'),
+             std::string(size_t(width - filled), '.'), f * 100, s.shots, convergence, eta);
   std::fflush(stderr);
 }
 

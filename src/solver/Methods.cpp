@@ -21,15 +21,16 @@ const char* methodName(Method m) {
 void requireBuilt(Method m) {
   switch (m) {
     case Method::Progressive: return;
-    case Method::Stochastic:
-      throw InputError("--method stochastic is not built yet (issue 15: stochastic iteration radiosity)");
+    case Method::Stochastic: return;
     case Method::Instant: throw InputError("--method instant is not built yet (issue 16: instant radiosity)");
   }
 }
 
-std::unique_ptr<Solver> makeSolver(Method m, SolverState& state, const ProgressiveSettings& settings) {
+std::unique_ptr<Solver> makeSolver(Method m, SolverState& state, const ProgressiveSettings& progressive,
+                                   const StochasticSettings& stochastic) {
   requireBuilt(m);
-  return std::make_unique<ProgressiveSolver>(state, settings);
+  if (m == Method::Stochastic) return std::make_unique<StochasticSolver>(state, stochastic);
+  return std::make_unique<ProgressiveSolver>(state, progressive);
 }
 
 }  // namespace hemirad

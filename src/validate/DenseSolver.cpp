@@ -9,9 +9,9 @@
 
 namespace hemirad {
 
-DenseSolution solveDense(const Scene& scene, const Atlas& atlas, const cpu::ExactVisibility& visibility,
-                         double tolerance) {
-  std::vector<std::size_t> texel;
+DenseSystem buildDense(const Scene& scene, const Atlas& atlas, const cpu::ExactVisibility& visibility) {
+  DenseSystem sys;
+  std::vector<std::size_t>& texel = sys.texel;
   for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
     if (atlas.polygonOf[t] != kNoPolygon) texel.push_back(t);
   const std::size_t n = texel.size();
@@ -20,7 +20,8 @@ DenseSolution solveDense(const Scene& scene, const Atlas& atlas, const cpu::Exac
          kDenseMaxElements);
 
   std::vector<Poly3> shape(n);
-  std::vector<glm::dvec3> centre(n), normal(n), rho(n), E(n);
+  std::vector<glm::dvec3> centre(n), normal(n), &rho = sys.rho, &E = sys.E;
+  rho.resize(n), E.resize(n);
   std::vector<int> polygon(n);
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t t = texel[i];
@@ -33,7 +34,8 @@ DenseSolution solveDense(const Scene& scene, const Atlas& atlas, const cpu::Exac
     E[i] = scene.materials[p.material].emission;
   }
   // Row i: form factors from element i's centre to every element j.
-  std::vector<float> F(n * n, 0.0f);
+  std::vector<float>& F = sys.F;
+  F.assign(n * n, 0.0f);
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
     for (std::size_t j = 0; j < n; ++j) {
       if (polygon[i] == polygon[j]) continue;
@@ -42,7 +44,27 @@ DenseSolution solveDense(const Scene& scene, const Atlas& atlas, const cpu::Exac
       F[i * n + j] = float(cpu::pointToPolygon(centre[i], normal[i], shape[j], normal[j]));
     }
   });
+  return sys;
+}
 
+std::vector<glm::dvec3> DenseSystem::transport(const std::vector<glm::dvec3>& B) const {
+  const std::size_t n = texel.size();
+  std::vector<glm::dvec3> out(B.size(), glm::dvec3(0.0));
+  for (std::size_t i = 0; i < n; ++i) {
+    glm::dvec3 gathered(0.0);
+    for (std::size_t j = 0; j < n; ++j) gathered += double(F[i * n + j]) * B[texel[j]];
+    out[texel[i]] = rho[i] * gathered;
+  }
+  return out;
+}
+
+DenseSolution solveDense(const Scene& scene, const Atlas& atlas, const cpu::ExactVisibility& visibility,
+                         double tolerance) {
+  const DenseSystem sys = buildDense(scene, atlas, visibility);
+  const std::vector<std::size_t>& texel = sys.texel;
+  const std::vector<float>& F = sys.F;
+  const std::vector<glm::dvec3>&rho = sys.rho, &E = sys.E;
+  const std::size_t n = texel.size();
   DenseSolution out;
   std::vector<glm::dvec3> B = E;
   for (out.iterations = 1; out.iterations <= 10000; ++out.iterations) {

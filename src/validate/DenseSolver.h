@@ -19,6 +19,19 @@ struct DenseSolution {
 
 constexpr std::size_t kDenseMaxElements = 5000;
 
+// The discrete operator itself: element i is atlas texel texel[i]; F row-major, F[i n + j].
+struct DenseSystem {
+  std::vector<std::size_t> texel;
+  std::vector<float> F;
+  std::vector<glm::dvec3> rho, E;
+  // (T B)_i = rho_i sum_j F_ij B_j for B per atlas texel; the result per atlas texel (zero where
+  // no element). What one application of the stochastic operator estimates (StochasticProbe).
+  std::vector<glm::dvec3> transport(const std::vector<glm::dvec3>& B) const;
+};
+
+// Throws InputError above kDenseMaxElements elements (N^2 form factors).
+DenseSystem buildDense(const Scene& scene, const Atlas& atlas, const cpu::ExactVisibility& visibility);
+
 // Throws InputError above kDenseMaxElements elements (N^2 form factors).
 DenseSolution solveDense(const Scene& scene, const Atlas& atlas, const cpu::ExactVisibility& visibility,
                          double tolerance = 1e-6);
