@@ -325,10 +325,7 @@ SolveStatus ProgressiveSolver::readStatus() {
   control_.read(0, offsetof(ControlBlock, shooter), &c);  // the status header, not the shooters
   timings_.readback += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   timer_.collect(sampled_);
-  const double scale = timed_ ? double(enqueued_) / timed_ : 0.0;
-  timings_.select = sampled_[kSelect] * scale;
-  timings_.itemBuffer = sampled_[kItemBuffer] * scale;
-  timings_.gather = sampled_[kGather] * scale;
+  scaleSampledTimings(timings_, sampled_, enqueued_, timed_);
   gl::checkErrors("progressive shot");
   status_ = {c.shots, c.convergence, c.done != 0};
   importanceShots_ = c.importanceShots;

@@ -30,6 +30,15 @@ struct PassTimings {
   double itemBuffer = 0, gather = 0, select = 0, readback = 0;
 };
 
+// Totals over all `passes` from the summed times of the `timed` ones (GPU stamps time a sample
+// of the passes): select, item buffer, then gather (or update), as the timer's slots 0, 1, 2.
+inline void scaleSampledTimings(PassTimings& t, const double (&sampled)[3], unsigned passes, unsigned timed) {
+  const double scale = timed ? double(passes) / timed : 0.0;
+  t.select = sampled[0] * scale;
+  t.itemBuffer = sampled[1] * scale;
+  t.gather = sampled[2] * scale;
+}
+
 struct StopRule {
   unsigned maxShots = 0;         // 0: no limit
   double targetConvergence = 0;  // 0: none

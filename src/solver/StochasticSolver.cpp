@@ -159,10 +159,7 @@ SolveStatus StochasticSolver::advance(unsigned iterations) {
   control_.read(0, sizeof gpuShots, &gpuShots);
   timings_.readback += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   timer_.collect(sampled_);
-  const double scale = timed_ ? double(enqueued_) / timed_ : 0.0;
-  timings_.select = sampled_[kSelect] * scale;
-  timings_.itemBuffer = sampled_[kItemBuffer] * scale;
-  timings_.gather = sampled_[kUpdate] * scale;
+  scaleSampledTimings(timings_, sampled_, enqueued_, timed_);
   gl::checkErrors("stochastic iteration");
   if (gpuShots != status_.shots) throw std::logic_error("stochastic solver: GPU and CPU iteration counts differ");
   status_.convergence = std::numeric_limits<double>::quiet_NaN();
