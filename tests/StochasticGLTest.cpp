@@ -6,10 +6,12 @@
 #include <cmath>
 
 #include "cpu/ExactVisibility.h"
+#include "src/output/ImageFile.h"
 #include "src/scene/SceneLoader.h"
 #include "src/validate/DenseSolver.h"
 #include "src/validate/ExactReference.h"
 #include "src/validate/StochasticProbe.h"
+#include "tests/support/Files.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
@@ -227,4 +229,22 @@ TEST_CASE("Stochastic iteration is bitwise deterministic for a seed, and another
   const test::Solved meanFirst = solveStochastic(s, 1.0 / 6, mean), meanAgain = solveStochastic(s, 1.0 / 6, mean);
   CHECK(meanFirst.hash == meanAgain.hash);
   CHECK(meanFirst.hash != first.hash);
+}
+
+TEST_CASE("Stochastic camera images carry no ambient term: --ambient on and off render the same", "[cli]") {
+  // The ambient term estimates light not yet shot from dB, where stochastic iteration keeps its
+  // iterate: added to the running mean, it washed the image out (every bounce counted twice).
+  auto render = [](const std::string& ambient) {
+    const std::string exr = test::tempPath("stochastic-ambient-" + ambient + ".exr");
+    test::Run r = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                                " --method stochastic --elements 500 --shots 4 --width 32 --height 32 --quiet --ambient " +
+                                ambient + " --out " + exr);
+    INFO(r.output);
+    REQUIRE(r.exitCode == 0);
+    return readImage(exr);
+  };
+  const Image on = render("on"), off = render("off");
+  REQUIRE(on.rgb.size() == off.rgb.size());
+  CHECK(test::meanPixel(on) > 0);
+  CHECK(on.rgb == off.rgb);
 }

@@ -142,7 +142,7 @@ std::vector<Flag> deviceAndOutputFlags() {
       {"--exposure", "STOPS", "Exposure in stops over the automatic one", any},
       {"--ambient", "on|off",
        "Seed 004's ambient term R x (area-averaged unshot radiosity) x rho on camera images; never in B, the "
-       "report, the atlas or the PLY",
+       "report, the atlas or the PLY, nor with --method stochastic (nothing is unshot)",
        oneOf(std::map<std::string, bool>{{"on", true}, {"off", false}}, "on|off"), "on"},
       // Outputs.
       {"--out", "FILE", "Linear camera render (.exr)", none},

@@ -124,7 +124,9 @@ void writeImages(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
   double scale = 1;
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty()) {
     Renderer renderer(state);
-    renderer.setAmbient(o.ambient);
+    // The ambient term stands in for light not yet shot (dB); stochastic iteration keeps its
+    // iterate there instead, and its running mean already holds every bounce.
+    renderer.setAmbient(o.ambient && o.method == Method::Progressive);
     view = renderer.render(camera, o.width, o.height, o.supersample);
     scale = exposureScale(view, o.exposure);
   }
