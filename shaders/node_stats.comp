@@ -31,11 +31,15 @@ NodeStats leafPart(ivec4 r, uint sub, uint threads) {
     vec4 pa = texelFetch(atlasPositionArea, t, 0);
     if (pa.w <= 0.0) continue;
     vec4 d = imageLoad(deltaB, t);
-    float lum = luminance(d.rgb), light = lum * pa.w, view = abs(d.a) * pa.w;
+    float lum = luminance(d.rgb), light = lum * pa.w;
     s.unshot += d * pa.w;
     s.lightCentre += vec4(pa.xyz * light, light);
+    s.range.xy = vec2(min(s.range.x, lum), max(s.range.y, lum));
+#ifdef IMPORTANCE_DRIVEN  // only importance-driven solves rank by importance or shoot it
+    float view = abs(d.a) * pa.w;
     s.viewCentre += vec4(pa.xyz * view, view);
-    s.range = vec4(min(s.range.x, lum), max(s.range.y, lum), max(s.range.z, imageLoad(radiosity, t).a), 0.0);
+    s.range.z = max(s.range.z, imageLoad(radiosity, t).a);
+#endif
   }
   return s;
 }

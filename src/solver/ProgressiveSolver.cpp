@@ -79,6 +79,7 @@ void ProgressiveSolver::setUpTree(const std::vector<ShooterBlock>& blocks, const
   const unsigned threads = std::clamp(std::bit_ceil(tree.largestBlock), 1u << (2 * tree.depth), 256u);
   gl::Defines statsDefines = defines;
   statsDefines.push_back({"BLOCK_THREADS", std::to_string(threads)});
+  if (settings_.importanceDriven()) statsDefines.push_back({"IMPORTANCE_DRIVEN", "1"});
   stats_ = gl::computeProgram("node_stats.comp", statsDefines);
 }
 

@@ -15,7 +15,7 @@
 namespace hemirad {
 
 inline constexpr std::uint32_t kNoChild = 0xFFFFFFFFu;
-inline constexpr int kMaxSplitDepth = 4;  // MAX_SPLIT_DEPTH: up to 256 leaves, a thread each
+inline constexpr int kMaxSplitDepth = 4;  // 256 leaves: node_stats.comp gives each leaf a thread of 256
 
 // A node, std430 (shooter_block.glsl). Nodes [0, blocks) are the blocks themselves; the
 // descendants of a block follow in breadth-first order, its leaves contiguous.
