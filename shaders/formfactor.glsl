@@ -1,34 +1,47 @@
 // Exact differential-area-to-polygon form factor (Lambert's contour formula), unoccluded. The
 // CPU twin is cpu::pointToPolygon (cpu/ExactFormFactor.cpp, double): same clip, same atan2 sum.
-// Needs hemisphere.glsl (PI).
+// Needs hemisphere.glsl (PI). Shapes live in SSBO 11, SHAPE_STRIDE vec4s each: the vertex count
+// (x), then up to MAX_SHAPE_VERTICES vertices (the shooter tree's nodes, stochastic iteration's
+// texels, the tests' probe cases).
 
 const int MAX_SHAPE_VERTICES = 12;  // a convex polygon of <= 8 sides cut by a block's rectangle
+const uint SHAPE_STRIDE = uint(MAX_SHAPE_VERTICES) + 1u;
+layout(std430, binding = 11) buffer ShooterShapes { vec4 shooterShape[]; };
 
-// F from dA at x (unit normal n) to the convex polygon v[0..count) (counter-clockwise around its
-// front normal nf); 0 when x lies behind its plane. The polygon is first clipped to x's front
-// half-space (Sutherland-Hodgman against one plane), then
-//   F = -(1/2pi) sum_i atan2(|c_i|, a_i.b_i) (n.c_i)/|c_i|,  a_i = p_i - x, b_i = p_i+1 - x, c_i = a_i x b_i.
+// F from dA at x (unit normal n) to convex shape `shape` (counter-clockwise around its front
+// normal nf); 0 when x lies behind its plane. The shape is clipped to x's front half-space and
+//   F = -(1/2pi) sum_i atan2(|c_i|, a_i.b_i) (n.c_i)/|c_i|,  a_i = p_i - x, b_i = p_i+1 - x, c_i = a_i x b_i
+// summed over the clipped outline. The outline is streamed, never stored: each edge contributes
+// its part in front of the plane, and the cut adds one closing edge from where the outline
+// leaves the half-space to where it re-enters (a convex shape crosses the plane at most twice).
+// Local arrays would cost a scratch-memory round trip per vertex (llvmpipe: per lane).
 // Float care, for polygons far from x or small (subtending angle t): atan2 rather than acos,
-// and c_i = a_i x (p_i+1 - p_i) with the edge taken from vertices relative to v[0], not as
-// b_i - a_i, whose cancellation would cost a relative 1e-7 / t in each term and far more in
-// their sum (~t^2).
-float pointToPolygon(vec3 x, vec3 n, vec3 v[MAX_SHAPE_VERTICES], int count, vec3 nf) {
-  if (count < 3 || dot(x - v[0], nf) <= 0.0) return 0.0;
-  vec3 xr = x - v[0], c[MAX_SHAPE_VERTICES + 1];  // c: the clipped polygon, relative to v[0]
-  int m = 0;
-  for (int i = 0; i < count; ++i) {
-    vec3 p = v[i] - v[0], q = v[(i + 1) % count] - v[0];
-    float da = dot(p - xr, n), db = dot(q - xr, n);
-    if (da >= 0.0 && m <= MAX_SHAPE_VERTICES) c[m++] = p;
-    if ((da >= 0.0) != (db >= 0.0) && m <= MAX_SHAPE_VERTICES) c[m++] = p + (q - p) * (da / (da - db));
+// and c_i = a_i x (p_i+1 - p_i) with vertices taken relative to vertex 0, not as b_i - a_i,
+// whose cancellation would cost a relative 1e-7 / t in each term and far more in their sum (~t^2).
+float contourTerm(vec3 xr, vec3 n, vec3 p, vec3 q) {
+  vec3 a = p - xr, e = q - p;
+  vec3 k = cross(a, e);
+  float s = length(k);
+  return s > 0.0 ? atan(s, dot(a, a + e)) * dot(k, n) / s : 0.0;
+}
+
+float pointToPolygon(vec3 x, vec3 n, uint shape, vec3 nf) {
+  uint base = shape * SHAPE_STRIDE;
+  int count = int(shooterShape[base].x);
+  vec3 v0 = shooterShape[base + 1u].xyz;
+  if (count < 3 || dot(x - v0, nf) <= 0.0) return 0.0;
+  vec3 xr = x - v0, p = vec3(0.0), leave = vec3(0.0), enter = vec3(0.0);
+  float dp = dot(-xr, n), sum = 0.0;
+  bool cut = false;
+  for (int i = 1; i <= count; ++i) {
+    vec3 q = i < count ? shooterShape[base + 1u + uint(i)].xyz - v0 : vec3(0.0);
+    float dq = dot(q - xr, n);
+    vec3 h = p + (q - p) * (dp / (dp - dq));  // where p -> q crosses the plane, if it does
+    if (dp >= 0.0 && dq >= 0.0) sum += contourTerm(xr, n, p, q);
+    else if (dp >= 0.0) sum += contourTerm(xr, n, p, h), leave = h, cut = true;
+    else if (dq >= 0.0) sum += contourTerm(xr, n, h, q), enter = h;
+    p = q, dp = dq;
   }
-  if (m < 3) return 0.0;
-  float sum = 0.0;
-  for (int i = 0; i < m; ++i) {
-    vec3 a = c[i] - xr, e = c[(i + 1) % m] - c[i];
-    vec3 k = cross(a, e);
-    float s = length(k);
-    if (s > 0.0) sum += atan(s, dot(a, a + e)) * dot(k, n) / s;
-  }
+  if (cut) sum += contourTerm(xr, n, leave, enter);
   return max(0.0, -sum / (2.0 * PI));
 }

@@ -41,6 +41,9 @@ float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 // upper half.
 #ifdef HEMICUBE
 const int ITEM_FACES = 5;
+// The hemicube's near plane as a fraction of the far distance: below the horizon margin (1e-5
+// far, itembuffer.vert), so it clips nothing the hemisphere keeps.
+const float ITEM_NEAR = 1e-6;
 #else
 const int ITEM_FACES = 1;
 #endif
@@ -63,15 +66,18 @@ int cubeFaceOf(vec3 l) {
 }
 #endif
 
-// Clip-space position of a shooter-frame point on item-buffer layer `face`; depth is
-// distance / far after the perspective divide, so occlusion is ordered along each ray.
+// Clip-space position of a shooter-frame point on item-buffer layer `face`, so that occlusion
+// is ordered along each ray. Hemicube: a face is a plain perspective view, under which a planar
+// polygon's near / depth is linear across the screen, so the rasteriser's interpolated
+// reversed depth (near / f.z in [0, 1], GL_GREATER, gl/State.h) is exact and the fragment shader
+// writes none (early depth test). Hemisphere: distance / far, made exact per pixel by
+// itembuffer.frag (the curved projection's interpolation is not).
 vec4 itemClipPosition(vec3 local, float farDistance, int face) {
-  float depth = 2.0 * length(local) / farDistance - 1.0;
 #ifdef HEMICUBE
   vec3 f = cubeFace(local, face);
-  return vec4(f.xy, depth * f.z, f.z);
+  return vec4(f.xy, ITEM_NEAR * farDistance, f.z);
 #else
-  return vec4(hemiProject(local), depth, 1.0);
+  return vec4(hemiProject(local), 2.0 * length(local) / farDistance - 1.0, 1.0);
 #endif
 }
 

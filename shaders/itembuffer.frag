@@ -1,4 +1,4 @@
-// The polygon id, and the exact distance along the pixel-centre ray to the polygon's plane as
+// The polygon id, and (hemisphere only) the exact distance along the pixel-centre ray to the polygon's plane as
 // depth (distance / far): the vertex shader's depth is interpolated linearly over item-mesh
 // triangles, which under-estimates a curved projection's distances by far more than the gap
 // between, say, a ceiling and a light hung 0.5 mm below it. Exact depths order such surfaces
@@ -15,6 +15,7 @@ uniform float faceSize;  // pixels on a side
 
 void main() {
   itemId = vPolygon;
+#ifndef HEMICUBE  // the hemicube's interpolated depth is exact (hemisphere.glsl)
   uint shooter = uint(vLayer / ITEM_FACES);
   vec3 o = control.shooter[shooter].positionArea.xyz, n = control.shooter[shooter].normal.xyz;
   vec3 l = itemDirection(gl_FragCoord.xy / faceSize * 2.0 - 1.0, vLayer % ITEM_FACES);
@@ -26,4 +27,5 @@ void main() {
   // A ray (nearly) parallel to the plane, or a pixel centre beyond the triangle's reach: keep
   // the interpolated depth.
   gl_FragDepth = along != 0.0 && distance > 0.0 && distance < farDistance ? distance / farDistance : gl_FragCoord.z;
+#endif
 }

@@ -14,9 +14,7 @@
 
 layout(local_size_x = 64) in;
 layout(binding = 0, rgba32f) readonly uniform image2D radiosity;
-layout(std430, binding = 11) writeonly buffer ShooterShapes { vec4 shooterShape[]; };
 uniform uint seed, iteration, shooters, topLevel;
-const uint SHAPE_STRIDE = uint(MAX_SHAPE_VERTICES) + 1u;
 
 // The leaf texel reached from the root by shooter k's draws.
 uvec2 descend(uint k) {

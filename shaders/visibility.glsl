@@ -4,9 +4,7 @@
 // the depths themselves are not read); SSBO 11 the shooter-tree nodes' shapes (shapeTable).
 
 layout(binding = 2) uniform usampler2DArray itemId;
-layout(std430, binding = 11) readonly buffer ShooterShapes { vec4 shooterShape[]; };
 uniform float farDistance;
-const int SHAPE_STRIDE = MAX_SHAPE_VERTICES + 1;
 
 // Whether polygon q blocks the segment from o to x: o and x lie strictly on opposite sides of
 // its plane (by more than eps, float rounding) and the crossing point lies inside it (convex,
@@ -58,18 +56,13 @@ bool inShooterBlock(uint s, ivec2 t, uint polygon) {
 // integral over the block's shape, formfactor.glsl), or the disc formula for a shape too
 // complex for the table.
 float unoccludedFormFactor(uint s, vec3 x, vec3 nr) {
-  uint base = control.shooter[s].shape * uint(SHAPE_STRIDE);
-  int count = int(shooterShape[base].x);
-  vec3 origin = control.shooter[s].positionArea.xyz, ns = control.shooter[s].normal.xyz;
-  if (count < 3) {
-    vec3 d = x - origin;
-    float r2 = dot(d, d);
-    vec3 w = d * inversesqrt(r2);
-    return discFormFactor(dot(ns, w), -dot(nr, w), r2, control.shooter[s].positionArea.w);
-  }
-  vec3 v[MAX_SHAPE_VERTICES];
-  for (int i = 0; i < MAX_SHAPE_VERTICES; ++i) v[i] = i < count ? shooterShape[base + 1u + uint(i)].xyz : vec3(0.0);
-  return pointToPolygon(x, nr, v, count, ns);
+  uint shape = control.shooter[s].shape;
+  vec3 ns = control.shooter[s].normal.xyz;
+  if (shooterShape[shape * SHAPE_STRIDE].x >= 3.0) return pointToPolygon(x, nr, shape, ns);
+  vec3 d = x - control.shooter[s].positionArea.xyz;
+  float r2 = dot(d, d);
+  vec3 w = d * inversesqrt(r2);
+  return discFormFactor(dot(ns, w), -dot(nr, w), r2, control.shooter[s].positionArea.w);
 }
 
 // Form factor from receiver element t (of `polygon`) to shooter s of the pass, visibility
@@ -80,8 +73,9 @@ float unoccludedFormFactor(uint s, vec3 x, vec3 nr) {
 float shooterFormFactor(uint s, ivec2 t, uint polygon, out bool facing, out float visible) {
   vec3 x = texelFetch(atlasPositionArea, t, 0).xyz;
   vec3 origin = control.shooter[s].positionArea.xyz;
-  float F = unoccludedFormFactor(s, x, polygons[polygon].normal.xyz);
-  facing = F > 0.0 && dot(x - origin, control.shooter[s].normal.xyz) > 0.0;
+  facing = dot(x - origin, control.shooter[s].normal.xyz) > 0.0;  // cheap, first: half the scene fails it
+  float F = facing ? unoccludedFormFactor(s, x, polygons[polygon].normal.xyz) : 0.0;
+  facing = F > 0.0;
   visible = facing ? visibility(s, origin, x, polygon) : 0.0;
   return visible * F;
 }

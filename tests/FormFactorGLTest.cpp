@@ -13,7 +13,8 @@ namespace {
 constexpr double kRho = 0.5;
 
 // The emitter shoots once per block of 2^shootLevel x 2^shootLevel elements, nothing else.
-double gpuFormFactor(const Scene& s, double texelSize, int itemSubdivision, int shootLevel = 0) {
+double gpuFormFactor(const Scene& s, double texelSize, int itemSubdivision, int shootLevel = 0,
+                     Projection projection = Projection::Stereographic) {
   Atlas probe = buildAtlas(s, texelSize);
   unsigned emitterElements = 0;
   for (const ShooterBlock& b : probe.shooterBlocks(shootLevel))
@@ -21,6 +22,7 @@ double gpuFormFactor(const Scene& s, double texelSize, int itemSubdivision, int 
   ProgressiveSettings settings;
   settings.shootLevel = shootLevel;
   settings.itemSubdivision = itemSubdivision;
+  settings.projection = projection;
   settings.stop.maxShots = emitterElements;
   test::Solved r = test::solve(s, texelSize, settings);
   REQUIRE(r.status.shots == emitterElements);
@@ -103,7 +105,9 @@ TEST_CASE("GPU form factor between parallel plates with a plate between them mat
   s.addPolygon(test::rectangle({o0.x, o0.y, zo}, {1, 0, 0}, {0, 1, 0}, o1.x - o0.x, o1.y - o0.y), test::material(s, 0.0, 0.0),
                s.addObject("occluder"));
   const double texel = 1.0 / 24;
-  const double gpu = gpuFormFactor(s, texel, 3);
+  // The stereographic item buffer (mesh L3, the default) and the hemicube (L0, the fast plan).
+  const auto [projection, level] = GENERATE(std::pair{Projection::Stereographic, 3}, std::pair{Projection::Hemicube, 0});
+  const double gpu = gpuFormFactor(s, texel, level, 0, projection);
   const Atlas atlas = buildAtlas(s, texel);
   const cpu::Polygon emitter = s.polygons()[0].vertices;
   double sum = 0, unblocked = 0;
@@ -118,7 +122,7 @@ TEST_CASE("GPU form factor between parallel plates with a plate between them mat
     sum += (open - (shadow.size() >= 3 ? cpu::pointToPolygon(x, n, shadow, {0, 0, 1}) : 0.0)) * atlas.positionArea[t].w;
     unblocked += open * atlas.positionArea[t].w;
   }
-  INFO("gpu " << gpu << ", exact shadowed " << sum << ", unblocked " << unblocked << " (Howell "
+  INFO(projectionName(projection) << " L" << level << ": gpu " << gpu << ", exact shadowed " << sum << ", unblocked " << unblocked << " (Howell "
               << cpu::parallelRectangles(1, 1, 1) << ")");
   REQUIRE(sum < 0.8 * unblocked);  // the occluder matters
   CHECK(gpu == Approx(sum).epsilon(0.003));

@@ -96,7 +96,7 @@ TEST_CASE("GLSL exact form factor (formfactor.glsl) equals cpu::pointToPolygon o
     return glm::length(d) > 0.1 ? glm::normalize(d) : glm::dvec3(0, 0, 1);
   };
   const int cases = 256;
-  std::vector<glm::vec4> in;
+  std::vector<glm::vec4> in, shapes;
   std::vector<double> expect;
   for (int i = 0; i < cases; ++i) {
     const glm::dvec3 x = 10.0 * glm::dvec3(u(rng), u(rng), u(rng)), n = unit();
@@ -113,12 +113,15 @@ TEST_CASE("GLSL exact form factor (formfactor.glsl) equals cpu::pointToPolygon o
     for (auto& v : poly) rounded.push_back(f(v));
     expect.push_back(cpu::pointToPolygon(f(x), f(n), rounded, f(nf)));
     in.push_back(glm::vec4(glm::vec3(x), 0));
-    in.push_back(glm::vec4(glm::vec3(n), float(k)));
+    in.push_back(glm::vec4(glm::vec3(n), 0));
     in.push_back(glm::vec4(glm::vec3(nf), 0));
-    for (int j = 0; j < 13; ++j) in.push_back(j < k ? glm::vec4(glm::vec3(poly[size_t(j)]), 1) : glm::vec4(0.0f));
+    shapes.push_back(glm::vec4(float(k), 0, 0, 0));  // formfactor.glsl's shape layout: count, 12 vertices
+    for (int j = 0; j < 12; ++j) shapes.push_back(j < k ? glm::vec4(glm::vec3(poly[size_t(j)]), 1) : glm::vec4(0.0f));
   }
-  gl::Buffer inBuf{std::span<const glm::vec4>(in)}, outBuf{cases * sizeof(float)};
+  gl::Buffer inBuf{std::span<const glm::vec4>(in)}, shapeBuf{std::span<const glm::vec4>(shapes)},
+      outBuf{cases * sizeof(float)};
   inBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  shapeBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 11);
   outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
   p.use();
   gl::Program::dispatch(unsigned(cases));

@@ -133,15 +133,19 @@ std::vector<bool> contactBand(const Scene& s, const Atlas& atlas, double width) 
 }
 }  // namespace
 
-TEST_CASE("Cornell box at L = 4: visibility agrees with CGAL on 99.9% of pairs and 99% within two elements of contacts",
+TEST_CASE("Cornell box: visibility agrees with CGAL on 99.9% of pairs and 99% within two elements of contacts "
+          "(stereographic L4, hemicube L0)",
           "[gl]") {
   test::backend();
   Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2500));
   SolverState state(s, atlas);
-  // The item buffers the bench uses: 512^2 (the default) and 256^2 (--item-res auto at 10k).
-  const int resolution = GENERATE(256, 512);
-  FormFactorProbe probe(state, 4, resolution, Projection::Stereographic);
+  // The item buffers the bench uses: stereographic at mesh level 4, 512^2 (the default
+  // resolution) and 256^2 (--item-res auto at 10k); the hemicube at level 0, 256^2 and 128^2.
+  const auto [projection, level, resolution] =
+      GENERATE(std::tuple{Projection::Stereographic, 4, 256}, std::tuple{Projection::Stereographic, 4, 512},
+               std::tuple{Projection::Hemicube, 0, 256}, std::tuple{Projection::Hemicube, 0, 128});
+  FormFactorProbe probe(state, level, resolution, projection);
   ExactReference reference(s, atlas);
   const std::vector<bool> band = contactBand(s, atlas, 2.0);
   std::size_t pairs = 0, agree = 0, bandPairs = 0, bandAgree = 0, bandHidden = 0;
@@ -156,7 +160,7 @@ TEST_CASE("Cornell box at L = 4: visibility agrees with CGAL on 99.9% of pairs a
     }
   }
   const double overall = double(agree) / double(pairs), contact = double(bandAgree) / double(bandPairs);
-  INFO(resolution << "^2: " << pairs << " pairs, agreement " << overall << "; " << bandPairs << " in the contact band (" << bandHidden
+  INFO(projectionName(projection) << " L" << level << " " << resolution << "^2: " << pairs << " pairs, agreement " << overall << "; " << bandPairs << " in the contact band (" << bandHidden
              << " hidden), agreement " << contact);
   REQUIRE(bandHidden > 100);  // the band holds shadowed pairs: agreement there is not trivial
   CHECK(overall >= 0.999);
@@ -189,6 +193,8 @@ TEST_CASE("A light hung 0.5 mm below the ceiling leaves the ceiling above it dar
   settings.shootLevel = 1;
   settings.shootersPerPass = 16;
   settings.stop.targetConvergence = 0.95;
+  settings.projection = GENERATE(Projection::Stereographic, Projection::Hemicube);
+  if (settings.projection == Projection::Hemicube) settings.itemSubdivision = 0;
   const double ts = 556.0 / 24;
   test::Solved r = test::solve(s, ts, settings);
   const double covered = test::object(r, "ceiling_above_light").mean.y;
@@ -203,7 +209,7 @@ TEST_CASE("A light hung 0.5 mm below the ceiling leaves the ceiling above it dar
   }
   REQUIRE(area > 0);
   ring /= area;
-  INFO("ceiling above the light: B " << covered << ", its neighbours " << ring);
+  INFO(projectionName(settings.projection) << ": ceiling above the light: B " << covered << ", its neighbours " << ring);
   CHECK(ring > 0.05);
   CHECK(covered < 0.01 * ring);
 }

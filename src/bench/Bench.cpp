@@ -154,6 +154,7 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   add(cmd, "--shoot-level", o.progressive.shootLevel);
   add(cmd, "--item-subdiv", o.progressive.itemSubdivision);
   add(cmd, "--item-res", o.progressive.itemResolution);
+  add(cmd, "--hemisphere", o.projection);
   add(cmd, "--shooters-per-pass", o.shootersPerPass);
   add(cmd, "--algorithm", o.progressive.algorithm);
   add(cmd, "--method", o.method);
@@ -233,6 +234,7 @@ int runBench(BenchOptions o) {
   if (!o.json.empty()) checkWritable(o.json, "--json");
   if (!o.markdown.empty()) checkWritable(o.markdown, "--markdown");
   o.backend.kind = gl::parseBackendKind(o.backendName);
+  o.progressive.projection = parseProjection(o.projection);
   auto backend = gl::createBackend(o.backend);
   std::time_t now = std::time(nullptr);
   char date[32];
@@ -248,10 +250,9 @@ int runBench(BenchOptions o) {
     if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
     return 0;
   }
-  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, item buffer {}^2\n\n",
+  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, {} item buffer {}^2\n\n",
                   date, backend->name(), backend->renderer(), algorithmName(o.progressive.algorithm), o.converge,
-                  o.progressive.shootLevel,
-                  o.progressive.itemSubdivision, o.progressive.itemResolution));
+                  o.progressive.shootLevel, o.progressive.itemSubdivision, o.projection, o.progressive.itemResolution));
   Ceilings ceiling;
   if (o.ceiling) {
     ceiling = measureCeilings(*backend, o.scenes.front());
@@ -284,6 +285,7 @@ int runBench(BenchOptions o) {
                           {"shoot_level", o.progressive.shootLevel},
                           {"item_subdivision", o.progressive.itemSubdivision},
                           {"item_resolution", o.progressive.itemResolution},
+                          {"projection", projectionName(o.progressive.projection)},
                           {"rows", rows}};
     if (o.ceiling)
       out["ceilings"] = {{"load_store_invocations_per_s", ceiling.invocationsPerSecond},

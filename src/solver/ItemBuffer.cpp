@@ -29,7 +29,8 @@ gl::Defines projectionDefines(Projection p) {
 
 ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance, Projection projection,
                        int shooters)
-    : faceResolution_(faceSide(resolution, projection)),
+    : projection_(projection),
+      faceResolution_(faceSide(resolution, projection)),
       faces_(projection == Projection::Hemicube ? 5 : 1),
       shooters_(shooters),
       defines_(projectionDefines(projection)),
@@ -56,13 +57,20 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
 
 void ItemBuffer::render(const gl::Buffer& control) {
   // Every face occludes from both sides (no culling); the hemisphere clips at the horizon.
-  gl::RasterState{.width = faceResolution_, .height = faceResolution_, .clipDistance0 = true}.apply();
+  // The hemicube's depth is reversed (hemisphere.glsl: itemClipPosition).
+  const bool reversed = projection_ == Projection::Hemicube;
+  gl::RasterState{.width = faceResolution_,
+                  .height = faceResolution_,
+                  .depthFunc = reversed ? gl::DepthFunc::Greater : gl::DepthFunc::Less,
+                  .depthRange = reversed ? gl::DepthRange::Reversed : gl::DepthRange::Standard,
+                  .clipDistance0 = true}
+      .apply();
   control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   planes_.bindBase(GL_SHADER_STORAGE_BUFFER, 12);
   program_.use();
   vao_.bind();
   target_.clearColor(kNoPolygon);  // every layer
-  target_.clearDepth(1.0f);
+  target_.clearDepth(reversed ? 0.0f : 1.0f);
   target_.bind();
   gl::drawIndexedTriangles(indexCount_, faces_ * shooters_);
 }

@@ -37,6 +37,7 @@ class ItemBuffer {
   std::size_t pixelsPerShooter() const { return std::size_t(faces_) * faceResolution_ * faceResolution_; }
 
  private:
+  Projection projection_;
   int faceResolution_;
   int faces_, shooters_;
   gl::Defines defines_;
