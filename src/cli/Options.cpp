@@ -101,9 +101,11 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--converge", "C", "Stop at this convergence, 1 - unshot/emitted power", unit},
       {"--shots", "N", "Stop after N shots", kCount, "no limit"},
       {"--item-subdiv", "L", "Item-mesh 1-to-4 subdivision level", kLevel},
-      {"--item-res", "PIXELS|auto", "Item buffer resolution in pixels (the pixel budget's side), or auto: from the element size",
+      {"--item-res", "PIXELS|auto", "Item buffer resolution in pixels (the pixel budget's side), or auto: from the element size (the "
+       "hemicube, which resolves occluders only, a quarter of that)",
        autoOr(kAutoItemResolution, 16, 16384)},
-      {"--hemisphere", "NAME", "Item buffer: stereographic (seed 003) or hemicube (equal pixel budgets)",
+      {"--hemisphere", "NAME", "Item buffer: stereographic (seed 003; its curved edges need --item-subdiv 3-4) or hemicube (exact "
+       "at --item-subdiv 0; equal pixel budgets)",
        names({"stereographic", "hemicube"})},
       {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
        "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, 0, 8)},

@@ -42,7 +42,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   const unsigned keep = unsigned(settings.shootersPerPass);
   const bool perspective = settings.algorithm == Algorithm::Perspective;
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
-  plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution);
+  plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution, settings.projection);
   setUpTree(state.atlas.shooterBlocks(plan_.polygonLevel), defines);
   setUpReduction(keep, defines);
 

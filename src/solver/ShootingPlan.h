@@ -8,6 +8,7 @@
 
 #include "src/scene/Atlas.h"
 #include "src/scene/Scene.h"
+#include "src/solver/ItemBuffer.h"
 
 namespace hemirad {
 
@@ -20,6 +21,7 @@ struct ShootingPlan {
 };
 
 // shootLevel >= 0 and itemResolution > 0 are taken as given; the auto values are planned.
-ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel, int itemResolution);
+ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel, int itemResolution,
+                          Projection projection = Projection::Stereographic);
 
 }  // namespace hemirad

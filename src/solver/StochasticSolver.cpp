@@ -58,7 +58,7 @@ StochasticSolver::StochasticSolver(SolverState& state, const StochasticSettings&
     throw InputError(fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shooters));
   if (settings.stop.targetConvergence > 0)
     throw InputError("--method stochastic has no convergence measure: stop it with --shots (iterations), not --converge");
-  itemResolution_ = planShooting(state.scene, state.atlas, 0, settings.itemResolution).itemResolution;
+  itemResolution_ = planShooting(state.scene, state.atlas, 0, settings.itemResolution, settings.projection).itemResolution;
   while (side_ < unsigned(std::max(state.atlas.width, state.atlas.height))) side_ *= 2, ++levels_;
   std::size_t floats = 0;
   for (unsigned l = 0; l < levels_; ++l) floats += std::size_t(side_ >> l) * (side_ >> l);
