@@ -171,6 +171,11 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
 
 namespace {
 
+// A setting as printed: "auto" for its auto value, else the number (a side in pixels: N^2).
+std::string printedSetting(int value, int autoValue, const char* suffix = "") {
+  return value == autoValue ? "auto" : fmt::format("{}{}", value, suffix);
+}
+
 // Per-shot throughputs: item-buffer triangles and pixels (the shot's whole buffer; overdraw
 // makes the fragments more) and gather texel updates, per second of their pass.
 std::string tableHeader(const BenchOptions& o) {
@@ -250,9 +255,10 @@ int runBench(BenchOptions o) {
     if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
     return 0;
   }
-  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, {} item buffer {}^2\n\n",
+  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, {} item buffer {}\n\n",
                   date, backend->name(), backend->renderer(), algorithmName(o.progressive.algorithm), o.converge,
-                  o.progressive.shootLevel, o.progressive.itemSubdivision, o.projection, o.progressive.itemResolution));
+                  printedSetting(o.progressive.shootLevel, kAutoShootLevel), o.progressive.itemSubdivision, o.projection,
+                  printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
   Ceilings ceiling;
   if (o.ceiling) {
     ceiling = measureCeilings(*backend, o.scenes.front());
