@@ -40,7 +40,7 @@ const Scene& cornell() {
 
 }  // namespace
 
-TEST_CASE("VPL buffers read back in the vec4 std430 layout: each VPL lies in its polygon, at its level", "[gl][instant]") {
+TEST_CASE("VPL buffers read back in the vec4 std430 layout: each VPL lies in its polygon, at its level, at the nearest hit", "[gl][instant]") {
   test::backend();
   const Scene& scene = cornell();
   VplTracer tracer(scene, small(500));
@@ -49,7 +49,7 @@ TEST_CASE("VPL buffers read back in the vec4 std430 layout: each VPL lies in its
   const VplLevels& levels = tracer.levels();
   const double diagonal = tracer.sceneDiagonal();
   double emitted = 0;
-  unsigned lit = 0;
+  unsigned lit = 0, checkedBounces = 0;
   for (int j = 0; j <= levels.deepest; ++j)
     for (unsigned i = levels.offset[j]; i < levels.offset[j] + levels.count[j]; ++i) {
       const GpuVpl& v = vpls[i];
@@ -66,7 +66,17 @@ TEST_CASE("VPL buffers read back in the vec4 std430 layout: each VPL lies in its
       if (j == 0) {
         CHECK(scene.materials[p.material].emissive());
         emitted += luminance(glm::dvec3(v.flux));
+        continue;
       }
+      // The GPU's hit is the nearest along the bounce: the CPU traversal from the path's previous
+      // VPL (same path, slot i - offset[j] of level j - 1) meets this VPL's polygon first, there.
+      const GpuVpl& from = vpls[levels.offset[j - 1] + (i - levels.offset[j])];
+      const glm::vec3 o(from.position), d = glm::vec3(v.position) - o;
+      const auto hit = tracer.bvh().intersect(o, glm::normalize(d), floatBitsToUint(from.position.w));
+      REQUIRE(hit);
+      CHECK(hit->polygon == id);
+      CHECK(std::abs(hit->t - glm::length(d)) < 1e-4f * float(diagonal));
+      ++checkedBounces;
     }
   // Every path starts with a VPL on an emitter; together they carry the emitted power.
   CHECK(stats.paths == levels.count[0]);
@@ -74,6 +84,7 @@ TEST_CASE("VPL buffers read back in the vec4 std430 layout: each VPL lies in its
   CHECK(emitted == Approx(scene.emittedPower()).epsilon(1e-4));
   CHECK(lit + stats.escapedPaths + stats.behindPaths >= levels.count[0]);  // a path ends by a miss or runs out of levels
   CHECK(lit > levels.count[0]);
+  CHECK(checkedBounces == lit - levels.count[0]);
 }
 
 TEST_CASE("Instant radiosity in a closed box of emitters reaches E (1 + rho + ... + rho^(L+1))", "[gl][instant]") {
