@@ -36,7 +36,7 @@ struct InstantSettings {
   unsigned vpls = 256;    // VPL slots: exactly this many, over all levels
   int bounces = 8;        // the deepest level: VPLs at 0 (on emitters) to `bounces` hits
   unsigned seed = 0;
-  int shadowResolution = 64;  // each VPL's hemispherical shadow map, pixels a side
+  int shadowResolution = 128;  // each VPL's hemispherical shadow map, pixels a side
   int itemSubdivision = 2;    // the shadow maps' mesh: 1-to-4 splits (curved projection)
   double clamp = 0.05;        // cos cos / r^2 is clamped at 1 / (clamp x scene diagonal)^2
 };

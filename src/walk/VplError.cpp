@@ -23,19 +23,26 @@ double pixelLuminance(const Image& image, std::size_t p) {
 }
 
 // Mean over each region's pixels of |L - L_ref| / L_ref (pixels the reference leaves black are
-// left out); the last entry is over every region's pixels together.
-std::vector<double> regionErrors(const Scene& scene, const std::vector<std::uint32_t>& polygon, const Image& image,
-                                 const Image& reference) {
+// left out), and of the signed (L - L_ref) / L_ref, where noise cancels and bias stays; the last
+// entry of each is over every region's pixels together.
+struct RegionErrors {
+  std::vector<double> absolute, signedMean;
+};
+RegionErrors regionErrors(const Scene& scene, const std::vector<std::uint32_t>& polygon, const Image& image,
+                          const Image& reference) {
   const std::size_t regions = scene.objects.size();
-  std::vector<double> sum(regions + 1, 0.0), count(regions + 1, 0.0);
+  RegionErrors e{std::vector<double>(regions + 1, 0.0), std::vector<double>(regions + 1, 0.0)};
+  std::vector<double> count(regions + 1, 0.0);
   for (std::size_t p = 0; p < polygon.size(); ++p) {
     const double ref = pixelLuminance(reference, p);
     if (polygon[p] == kNoPolygon || ref <= 1e-12) continue;
-    const double e = std::abs(pixelLuminance(image, p) - ref) / ref;
-    for (std::size_t r : {std::size_t(scene.polygons()[polygon[p]].object), regions}) sum[r] += e, count[r] += 1;
+    const double d = (pixelLuminance(image, p) - ref) / ref;
+    for (std::size_t r : {std::size_t(scene.polygons()[polygon[p]].object), regions})
+      e.absolute[r] += std::abs(d), e.signedMean[r] += d, count[r] += 1;
   }
-  for (std::size_t r = 0; r <= regions; ++r) sum[r] = count[r] > 0 ? sum[r] / count[r] : 0.0;
-  return sum;
+  for (std::size_t r = 0; r <= regions; ++r)
+    if (count[r] > 0) e.absolute[r] /= count[r], e.signedMean[r] /= count[r];
+  return e;
 }
 
 Image converged(const Scene& scene, const VplErrorOptions& o, const Camera& camera, int maxTexture) {
@@ -75,7 +82,9 @@ int runVplError(VplErrorOptions o) {
   std::string csv = "vpls,paths,clamp_bias,escaped_fraction,render_ms";
   std::string table = "| VPLs | paths | clamp bias | escaped |";
   for (const SceneObject& object : scene.objects) csv += ",error_" + object.name, table += " " + object.name + " |";
-  csv += ",error_image\n", table += " image |\n|---|---|---|---|";
+  csv += ",error_image";
+  for (const SceneObject& object : scene.objects) csv += ",signed_" + object.name;
+  csv += ",signed_image\n", table += " image |\n|---|---|---|---|";
   for (std::size_t r = 0; r <= scene.objects.size(); ++r) table += "---|";
   table += "\n";
   std::vector<PlotSeries> series(scene.objects.size() + 1);
@@ -91,7 +100,8 @@ int runVplError(VplErrorOptions o) {
     InstantRenderer renderer(scene, tracer, s);
     const InstantImage render = renderer.render(camera, o.width, o.height, 1, Shading::Deferred);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    const std::vector<double> errors = regionErrors(scene, renderer.visiblePolygons(), render.image, reference);
+    const RegionErrors region = regionErrors(scene, renderer.visiblePolygons(), render.image, reference);
+    const std::vector<double>& errors = region.absolute;
     const double escaped = stats.emitted > 0 ? stats.escaped / stats.emitted : 0.0;
     csv += fmt::format("{},{},{:.6g},{:.6g},{:.1f}", vpls, stats.paths, render.clampBias(), escaped, ms);
     table += fmt::format("| {} | {} | {:.2f} % | {:.2f} % |", vpls, stats.paths, 100 * render.clampBias(), 100 * escaped);
@@ -100,6 +110,7 @@ int runVplError(VplErrorOptions o) {
       table += fmt::format(" {:.4f} |", errors[r]);
       series[r].x.push_back(vpls), series[r].y.push_back(errors[r]);
     }
+    for (double signedError : region.signedMean) csv += fmt::format(",{:.6g}", signedError);
     csv += "\n", table += "\n";
     last = render.image;
     fmt::print(stderr, "hemirad: {}: {} VPLs, image error {:.4f} ({:.0f} ms)\n", name, vpls, errors.back(), ms);

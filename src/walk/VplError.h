@@ -1,6 +1,7 @@
 // `hemirad compare-vpls`: instant radiosity's image error against a converged progressive solve
 // of the same scene and camera, per VPL count (seed 002's validation, issue 16): the mean
-// relative luminance error per region (scene object) and over the image, as a CSV, a log-log SVG
+// relative luminance error per region (scene object) and over the image (and in the CSV its signed
+// mean, the bias), as a CSV, a log-log SVG
 // and a markdown table, plus the two images side by side at the largest count.
 #pragma once
 #include <optional>
