@@ -14,6 +14,8 @@ void RasterState::apply() const {
   glDepthMask(depthWrite ? GL_TRUE : GL_FALSE);
   enable(GL_CULL_FACE, cullFaces);
   enable(GL_CLIP_DISTANCE0, clipDistance0);
+  enable(GL_BLEND, additiveBlend);
+  if (additiveBlend) glBlendFunc(GL_ONE, GL_ONE);
 }
 
 void barrier(Barrier bits) { glMemoryBarrier(GLbitfield(bits)); }

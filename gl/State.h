@@ -26,6 +26,7 @@ struct RasterState {
   bool depthWrite = true;
   bool cullFaces = false;      // hemirad's faces occlude and are seen from both sides
   bool clipDistance0 = false;  // gl_ClipDistance[0] (the item buffer's hemisphere)
+  bool additiveBlend = false;  // colour += fragment (instant radiosity sums VPL batches)
   void apply() const;
 };
 

@@ -6,21 +6,7 @@
 layout(binding = 2) uniform usampler2DArray itemId;
 uniform float farDistance;
 
-// Whether polygon q blocks the segment from o to x: o and x lie strictly on opposite sides of
-// its plane (by more than eps, float rounding) and the crossing point lies inside it (convex,
-// counter-clockwise around its normal; a point on an edge counts as inside).
-bool blocksSegment(uint q, vec3 o, vec3 x, float eps) {
-  vec3 n = polygons[q].normal.xyz;
-  float so = dot(n, o) - polygons[q].normal.w, sx = dot(n, x) - polygons[q].normal.w;
-  if (!((so > eps && sx < -eps) || (so < -eps && sx > eps))) return false;
-  vec3 h = o + (x - o) * (so / (so - sx));
-  uvec2 r = polygons[q].vertices.xy;
-  for (uint i = 0u; i < r.y; ++i) {
-    vec3 a = polygonVertex[r.x + i].xyz, b = polygonVertex[r.x + (i + 1u) % r.y].xyz;
-    if (dot(cross(b - a, h - a), n) < 0.0) return false;
-  }
-  return true;
-}
+#include "segment.glsl"
 
 // Point visibility of x (on `polygon`) from the shooter's origin o, robust by construction
 // rather than by a depth tolerance: the item buffer only nominates occluders. The 3 x 3 pixels

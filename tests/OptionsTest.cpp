@@ -97,13 +97,13 @@ TEST_CASE("validate takes --gpu, the EGL device index, as solve does", "[cli][ba
   CHECK_THAT(run.output, Contains("egl: GPU 99 not usable"));
 }
 
-TEST_CASE("Solve refuses --method instant naming its issue, before the scene is read", "[cli][bad-input]") {
+TEST_CASE("Solve refuses atlas outputs of --method instant and unknown methods, before the scene is read", "[cli][bad-input]") {
   // An OBJ without faces: reading it would be an error of its own.
   const std::string dir = test::tempPath("method");
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/empty.obj") << "# nothing\n";
-  expectOneError("solve " + dir + "/empty.obj --method instant",
-                 "--method instant is not built yet (issue 16: instant radiosity)");
+  expectOneError("solve " + dir + "/empty.obj --method instant --ply " + dir + "/x.ply",
+                 "--atlas and --ply need radiosity per element; --method instant shades camera pixels only");
   expectOneError("solve " + dir + "/empty.obj --method gauss-seidel", "--method");
 }
 

@@ -11,6 +11,7 @@
 #include "src/scene/Camera.h"
 #include "src/bench/Ceilings.h"
 #include "src/bench/StochasticBench.h"
+#include "src/bench/InstantBench.h"
 #include "src/cli/Options.h"
 #include "src/base/Error.h"
 #include "src/solver/Control.h"
@@ -159,7 +160,7 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   add(cmd, "--algorithm", o.progressive.algorithm);
   add(cmd, "--method", o.method);
   add(cmd, "--atlas-sides", o.atlasSides);
-  add(cmd, "--shots", o.iterations, "8 (--method stochastic: iterations timed per row)");
+  add(cmd, "--shots", o.iterations, "8 (--method stochastic: iterations timed per row; instant: frames)");
   add(cmd, "--markdown", o.markdown);
   add(cmd, "--split-shots", o.splitShots);
   add(cmd, "--backend", o.backendName);
@@ -167,6 +168,13 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   add(cmd, "--json", o.json);
   add(cmd, "--compare", o.compare);
   options::addSwitch(cmd, "--ceiling", o.ceiling);
+  add(cmd, "--vpls", o.vpls, "128,256,512 (--method instant: a row each)");
+  add(cmd, "--vpl-bounces", o.instant.bounces);
+  add(cmd, "--vpl-clamp", o.instant.clamp);
+  add(cmd, "--shadow-res", o.instant.shadowResolution);
+  add(cmd, "--seed", o.instant.seed);
+  add(cmd, "--width", o.width, "1024 (--method instant: frame size)");
+  add(cmd, "--height", o.height, "1024 (--method instant: frame size)");
 }
 
 namespace {
@@ -250,6 +258,18 @@ int runBench(BenchOptions o) {
     std::fflush(stdout);
     text += s;
   };
+  if (o.method == Method::Instant) {
+    say(fmt::format("hemirad bench, {}, {} ({}), instant radiosity (seed 002)\n\n", date, backend->name(),
+                    backend->renderer()));
+    const nlohmann::json rows = benchInstant(*backend, o, say);
+    if (!o.json.empty())
+      writeTextFile(o.json, nlohmann::json{{"date", date}, {"backend", backend->name()}, {"renderer", backend->renderer()},
+                                           {"method", "instant"}, {"width", o.width}, {"height", o.height},
+                                           {"frames_per_row", o.iterations}, {"shadow_resolution", o.instant.shadowResolution},
+                                           {"rows", rows}}.dump(2) + "\n");
+    if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
+    return 0;
+  }
   if (o.method == Method::Stochastic) {
     runStochasticBench(o, *backend, date, say);
     if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);

@@ -8,6 +8,7 @@
 
 #include "gl/Backend.h"
 #include "src/solver/Methods.h"
+#include "src/solver/VplTracer.h"
 
 namespace hemirad {
 
@@ -28,6 +29,9 @@ struct BenchOptions {
   std::string markdown;  // the printed tables, as a markdown file
   bool ceiling = false;  // also measure the device's compute and raster ceilings
   std::string compare;   // another bench JSON to compare per-object radiosity with
+  std::vector<unsigned> vpls{128, 256, 512};  // instant: a row per VPL count
+  InstantSettings instant;                    // instant: seed, bounces, clamp, shadow maps
+  int width = 1024, height = 1024;            // instant: the frame's size
 };
 
 // The bench flags, shared by `hemirad bench` and the lean `hemirad-bench`.

@@ -42,6 +42,7 @@ Commands::Commands() {
   addExperiment();
   addComparison();
   addAnimation();
+  addVplError();
 
   docsCmd = app.add_subcommand("docs", "Print docs/cli.md (this command line as markdown)")->group("");
   docsCmd->add_option("what", docs, "cli")->required()->check(CLI::IsMember({"cli"}));
@@ -60,7 +61,11 @@ void Commands::addSolve() {
   progressiveOnly = {converge, add(s, "--shoot-level", p.shootLevel), add(s, "--algorithm", p.algorithm),
                      add(s, "--fov-decay", p.fovDecayShots)};
   add(s, "--shooters-per-pass", p.shootersPerPass);
-  stochasticOnly = {add(s, "--seed", solve.stochastic.seed), add(s, "--transport", transport)};
+  CLI::Option* seed = add(s, "--seed", solve.stochastic.seed);
+  stochasticOnly = {seed, add(s, "--transport", transport)};
+  InstantSettings& i = solve.instant;
+  instantOnly = {add(s, "--vpls", i.vpls), add(s, "--vpl-bounces", i.bounces), add(s, "--vpl-clamp", i.clamp),
+                 add(s, "--shadow-res", i.shadowResolution), add(s, "--shading", shading)};
   addSwitch(s, "--sync-timings", syncTimings);
   add(s, "--backend", solveBackend);
   add(s, "--gpu", solve.backend.gpu);
@@ -198,13 +203,35 @@ void Commands::addAnimation() {
   add(a, "--gpu", m.backend.gpu);
 }
 
+void Commands::addVplError() {
+  CLI::App* c = vplErrorCmd = app.add_subcommand(
+      "compare-vpls", "Instant radiosity's image error per region against a converged progressive solve, per VPL count");
+  VplErrorOptions& v = vplError;
+  addScene(c, v.scene, v.load, v.discretisation);
+  add(c, "--vpls", v.vpls, "64,128,...,4096 (a row each)");
+  add(c, "--vpl-bounces", v.instant.bounces);
+  add(c, "--vpl-clamp", v.instant.clamp);
+  add(c, "--shadow-res", v.instant.shadowResolution);
+  add(c, "--item-subdiv", v.instant.itemSubdivision);
+  add(c, "--seed", v.instant.seed);
+  add(c, "--reference-convergence", v.referenceConvergence);
+  add(c, "--camera", v.camera);
+  add(c, "--width", v.width);
+  add(c, "--height", v.height);
+  add(c, "--out-dir", v.out);
+  add(c, "--image", v.sideBySide);  // instant (the largest VPL count) | progressive, side by side
+  add(c, "--backend", v.backendName);
+  add(c, "--gpu", v.backend.gpu);
+}
+
 // --method stochastic takes the item-buffer, batching and stop flags; the progressive
 // method's shooter choice, convergence and walkthroughs mean nothing to it.
 void Commands::settleStochastic() {
   const ProgressiveSettings& p = solve.progressive;
   if (solve.method != Method::Stochastic) {
     for (const CLI::Option* o : stochasticOnly)
-      if (*o) throw InputError(o->get_name() + " is for --method stochastic");
+      if (*o && !(solve.method == Method::Instant && o->get_name() == "--seed"))
+        throw InputError(o->get_name() + " is for --method stochastic");
     return;
   }
   for (const CLI::Option* o : progressiveOnly)
@@ -220,6 +247,23 @@ void Commands::settleStochastic() {
   s.stop = p.stop;
 }
 
+// --method instant takes its own flags, the seed and the shadow maps' item mesh; nothing of the
+// progressive solver's shooting or stop rule.
+void Commands::settleInstant() {
+  if (solve.method != Method::Instant) {
+    for (const CLI::Option* o : instantOnly)
+      if (*o) throw InputError(o->get_name() + " is for --method instant");
+    return;
+  }
+  for (const CLI::Option* o : progressiveOnly)
+    if (*o) throw InputError(o->get_name() + " is for --method progressive, not instant");
+  for (const char* name : {"--shots", "--shooters-per-pass", "--item-res", "--hemisphere", "--sync-timings"})
+    if (*solveCmd->get_option(name)) throw InputError(std::string(name) + " means nothing to --method instant");
+  solve.instant.seed = solve.stochastic.seed;
+  solve.instant.itemSubdivision = solve.progressive.itemSubdivision;
+  solve.shading = shading == "forward" ? Shading::Forward : Shading::Deferred;
+}
+
 int Commands::runSolve() {
   ProgressiveSettings& p = solve.progressive;
   // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told.
@@ -228,6 +272,7 @@ int Commands::runSolve() {
   solve.backend.kind = gl::parseBackendKind(solveBackend);
   p.projection = parseProjection(solveProjection);
   settleStochastic();
+  settleInstant();
   solve.progress = !quiet;
   return hemirad::runSolve(solve);
 }
@@ -239,6 +284,7 @@ int Commands::run() {
   if (*viewCmd) return runView(view);
   if (*experimentCmd) return runExperiment(experiment);
   if (*comparisonCmd) return runMethodComparison(comparison);
+  if (*vplErrorCmd) return runVplError(vplError);
   if (*animateCmd) {
     animation.stochastic.timings = gl::TimerMode::Off;
     return runAnimation(animation);

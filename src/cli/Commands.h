@@ -11,6 +11,7 @@
 #include "src/walk/Experiment.h"
 #include "src/walk/LightAnimation.h"
 #include "src/walk/MethodComparison.h"
+#include "src/walk/VplError.h"
 
 namespace hemirad {
 
@@ -30,6 +31,7 @@ struct Commands {
   ExperimentOptions experiment;
   MethodComparisonOptions comparison;
   AnimationOptions animation;
+  VplErrorOptions vplError;
 
  private:
   void addSolve();
@@ -40,21 +42,24 @@ struct Commands {
   void addExperiment();
   void addComparison();
   void addAnimation();
+  void addVplError();
   int runSolve();
   void settleStochastic();
+  void settleInstant();
 
   // Flags read into text, turned into the options after parsing.
-  std::string solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa", transport = "iterate",
+  std::string shading = "deferred", solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa", transport = "iterate",
               shooters = "16";
   std::vector<std::string> validateProjections{"stereographic"};
   bool quiet = false, syncTimings = false;
   std::string docs;
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
            *experimentCmd = nullptr, *docsCmd = nullptr,
-           *comparisonCmd = nullptr, *animateCmd = nullptr;
+           *comparisonCmd = nullptr, *animateCmd = nullptr, *vplErrorCmd = nullptr;
   CLI::Option *converge = nullptr, *shots = nullptr;
   std::vector<CLI::Option*> stochasticOnly;   // flags that mean nothing to --method progressive
   std::vector<CLI::Option*> progressiveOnly;  // flags that mean nothing to --method stochastic
+  std::vector<CLI::Option*> instantOnly;      // flags only --method instant takes
 };
 
 }  // namespace hemirad

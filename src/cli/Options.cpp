@@ -91,7 +91,8 @@ std::vector<Flag> sceneAndSolverFlags() {
       // The solver.
       {"--method", "METHOD",
        "Radiosity method: progressive refinement; stochastic iteration (seed 000: --shots iterations of K random "
-       "texel shooters, K = --shooters-per-pass); instant is not built yet",
+       "texel shooters, K = --shooters-per-pass); instant radiosity (seed 002: --vpls virtual point lights traced "
+       "from the emitters, camera images only)",
        oneOf(methods(), "progressive|stochastic|instant"), "progressive"},
       {"--algorithm", "NAME",
        "Progressive shooter choice: progressive; importance: shooters ranked by unshot power x importance from "
@@ -117,12 +118,25 @@ std::vector<Flag> sceneAndSolverFlags() {
        "Perspective-driven: shots over which the simulated field of view grows from the camera's to the whole "
        "scene after each camera move",
        kCount, "a quarter of the shooter blocks"},
-      {"--seed", "N", "Stochastic iteration's random seed: the same seed and backend give bitwise the same result",
+      {"--seed", "N", "Random seed of stochastic iteration and instant radiosity: the same seed and backend give "
+       "bitwise the same result",
        CLI::Range(0u, 0xFFFFFFFFu)},
       {"--transport", "WHAT",
        "Stochastic iteration: what the random operator carries each iteration, the last iterate (a chain, "
        "averaged) or the running mean itself (seed 000's eq. 2 as printed; slower to lose its bias)",
        names({"iterate", "mean"})},
+      // Instant radiosity (seed 002, docs/instant.md).
+      {"--vpls", "N", "Instant radiosity: virtual point lights, over all bounces (Keller's quasi-random walk)",
+       CLI::Range(1u, 1u << 16)},
+      {"--vpl-bounces", "D", "Instant radiosity: the deepest bounce that leaves a VPL (0: direct light only)",
+       CLI::Range(0, 15)},
+      {"--vpl-clamp", "F",
+       "Instant radiosity: clamp cos cos / r^2 at 1 / (F x scene diagonal)^2 (the VPL singularity); 0: no clamp",
+       number([](double x) { return x >= 0 && x < 1; }, "in [0, 1)", "must be in [0, 1)")},
+      {"--shadow-res", "PIXELS", "Instant radiosity: each VPL's hemispherical shadow map, pixels a side",
+       CLI::Range(8, 2048)},
+      {"--shading", "PATH", "Instant radiosity: forward (a scene pass per VPL batch) or deferred (G-buffer)",
+       names({"forward", "deferred"})},
       {"--sync-timings", "", "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)",
        none},
   };

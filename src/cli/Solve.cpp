@@ -171,6 +171,7 @@ RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, con
 
 int runSolve(const SolveOptions& o) {
   auto start = std::chrono::steady_clock::now();
+  if (o.method == Method::Instant) return runInstantSolve(o);
   checkSolveInputs(o);
   std::optional<Checkpoint> resumed;
   if (!o.resume.empty()) resumed = readCheckpoint(o.resume);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "gl/Backend.h"
+#include "src/output/InstantRenderer.h"
 #include "src/solver/Methods.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/scene/Atlas.h"
@@ -19,6 +20,8 @@ struct SolveOptions {
   Method method = Method::Progressive;
   ProgressiveSettings progressive;  // the progressive method's
   StochasticSettings stochastic;    // the stochastic method's (Commands copies the shared flags in)
+  InstantSettings instant;          // instant radiosity's (docs/instant.md)
+  Shading shading = Shading::Deferred;
   gl::BackendOptions backend;
   std::optional<std::string> camera;
   int width = 512, height = 512, supersample = 2;
@@ -37,6 +40,10 @@ struct SolveOptions {
 };
 
 int runSolve(const SolveOptions& options);
+// --method instant (src/cli/InstantSolve.cpp): camera images from VPLs, no atlas.
+int runInstantSolve(const SolveOptions& options);
+// FNV-1a 64 of an image's float bit patterns (determinism checks).
+std::uint64_t imageHash(const Image& image);
 
 struct InfoOptions {
   std::string scene;

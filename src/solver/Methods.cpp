@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 #include "src/base/Error.h"
 
 namespace hemirad {
@@ -22,13 +24,14 @@ void requireBuilt(Method m) {
   switch (m) {
     case Method::Progressive: return;
     case Method::Stochastic: return;
-    case Method::Instant: throw InputError("--method instant is not built yet (issue 16: instant radiosity)");
+    case Method::Instant: return;
   }
 }
 
 std::unique_ptr<Solver> makeSolver(Method m, SolverState& state, const ProgressiveSettings& progressive,
                                    const StochasticSettings& stochastic) {
   requireBuilt(m);
+  if (m == Method::Instant) throw std::logic_error("instant radiosity renders camera images, it has no Solver");
   if (m == Method::Stochastic) return std::make_unique<StochasticSolver>(state, stochastic);
   return std::make_unique<ProgressiveSolver>(state, progressive);
 }

@@ -1,5 +1,6 @@
-// `solve --method`: the radiosity methods behind the Solver seam. Progressive refinement and
-// stochastic iteration are built; instant radiosity is named so the flag can say which issue brings it.
+// `solve --method`: the radiosity methods. Progressive refinement and stochastic iteration are
+// Solvers over the atlas; instant radiosity (seed 002) renders camera images from VPLs instead
+// (src/solver/VplTracer.h, src/output/InstantRenderer.h, src/cli/InstantSolve.cpp), so it has no Solver.
 #pragma once
 #include <memory>
 #include <string>
@@ -13,10 +14,10 @@ namespace hemirad {
 enum class Method { Progressive, Stochastic, Instant };
 const char* methodName(Method m);
 const std::vector<std::pair<std::string, Method>>& methodNames();
-// InputError for a method not built yet, naming the issue that builds it; cheap, so the
-// solve command calls it before reading the scene.
+// InputError for a method not built yet, naming the issue that builds it (none today); cheap,
+// so the solve command calls it before reading the scene.
 void requireBuilt(Method m);
-// The solver of method `m` over `state` with that method's settings.
+// The solver of method `m` over `state` with that method's settings (not Method::Instant).
 std::unique_ptr<Solver> makeSolver(Method m, SolverState& state, const ProgressiveSettings& progressive,
                                    const StochasticSettings& stochastic);
 

@@ -1,0 +1,63 @@
+// Nearest-hit ray traversal of the scene's BVH (src/solver/Bvh.h, which mirrors this walk on the
+// CPU for tests). SSBO 20 the nodes, 21 the triangles; every member a vec4 (seed 002 §4.1).
+
+struct BvhNode {
+  vec4 lo;  // xyz box min; w (uint bits): inner node: its second child; leaf: first triangle
+  vec4 hi;  // xyz box max; w (uint bits): leaf: triangle count; inner node: 0
+};
+struct BvhTriangle {
+  vec4 v0;  // w (uint bits): polygon id
+  vec4 e1, e2;
+};
+layout(std430, binding = 20) readonly buffer BvhNodes { BvhNode bvhNode[]; };
+layout(std430, binding = 21) readonly buffer BvhTriangles { BvhTriangle bvhTriangle[]; };
+
+const int BVH_STACK = 33;  // Bvh::kMaxDepth + 1
+const float BVH_MISS = 3.402823e38;
+
+float bvhHitTriangle(uint i, vec3 o, vec3 d) {
+  vec3 e1 = bvhTriangle[i].e1.xyz, e2 = bvhTriangle[i].e2.xyz, p = cross(d, e2);
+  float det = dot(e1, p);
+  if (det == 0.0) return -1.0;
+  float inv = 1.0 / det;
+  vec3 s = o - bvhTriangle[i].v0.xyz;
+  float u = dot(s, p) * inv;
+  if (u < 0.0 || u > 1.0) return -1.0;
+  vec3 q = cross(s, e1);
+  float v = dot(d, q) * inv;
+  if (v < 0.0 || u + v > 1.0) return -1.0;
+  return dot(e2, q) * inv;
+}
+
+bool bvhHitBox(uint n, vec3 o, vec3 invD, float tMax) {
+  vec3 t0 = (bvhNode[n].lo.xyz - o) * invD, t1 = (bvhNode[n].hi.xyz - o) * invD;
+  vec3 lo = min(t0, t1), hi = max(t0, t1);
+  return max(max(lo.x, lo.y), max(lo.z, 0.0)) <= min(min(hi.x, hi.y), min(hi.z, tMax));
+}
+
+// The nearest hit t > 0 along o + t d, ignoring polygon `skip`; BVH_MISS if none. `polygon`: the hit's.
+float bvhIntersect(vec3 o, vec3 d, uint skip, out uint polygon) {
+  vec3 invD = 1.0 / d;
+  float tMax = BVH_MISS;
+  polygon = 0xFFFFFFFFu;
+  uint stack[BVH_STACK];
+  int top = 0;
+  stack[top++] = 0u;
+  while (top > 0) {
+    uint n = stack[--top];
+    if (!bvhHitBox(n, o, invD, tMax)) continue;
+    uint first = floatBitsToUint(bvhNode[n].lo.w), count = floatBitsToUint(bvhNode[n].hi.w);
+    if (count == 0u) {
+      stack[top++] = first;
+      stack[top++] = n + 1u;
+      continue;
+    }
+    for (uint i = first; i < first + count; ++i) {
+      uint q = floatBitsToUint(bvhTriangle[i].v0.w);
+      if (q == skip) continue;
+      float t = bvhHitTriangle(i, o, d);
+      if (t > 0.0 && t < tMax) tMax = t, polygon = q;
+    }
+  }
+  return tMax;
+}

@@ -1,0 +1,19 @@
+// Exact segment-polygon occlusion, shared by the gather's visibility (visibility.glsl) and instant
+// radiosity's VPL shadows (instant_shade.glsl). Needs scene.glsl (the polygon table, SSBO 0, and
+// its vertices, SSBO 10).
+
+// Whether polygon q blocks the segment from o to x: o and x lie strictly on opposite sides of
+// its plane (by more than eps, float rounding) and the crossing point lies inside it (convex,
+// counter-clockwise around its normal; a point on an edge counts as inside).
+bool blocksSegment(uint q, vec3 o, vec3 x, float eps) {
+  vec3 n = polygons[q].normal.xyz;
+  float so = dot(n, o) - polygons[q].normal.w, sx = dot(n, x) - polygons[q].normal.w;
+  if (!((so > eps && sx < -eps) || (so < -eps && sx > eps))) return false;
+  vec3 h = o + (x - o) * (so / (so - sx));
+  uvec2 r = polygons[q].vertices.xy;
+  for (uint i = 0u; i < r.y; ++i) {
+    vec3 a = polygonVertex[r.x + i].xyz, b = polygonVertex[r.x + (i + 1u) % r.y].xyz;
+    if (dot(cross(b - a, h - a), n) < 0.0) return false;
+  }
+  return true;
+}
