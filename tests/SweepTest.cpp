@@ -2,10 +2,16 @@
 // one by one as Slurm would run them, one stopped by SIGTERM mid-solve and run again, merge to
 // the bytes of a local `--jobs 2` run; merge lists missing and failed configurations; bad specs
 // are refused before anything is written. tests/slurm/sweep.sh runs the same on a real Slurm.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <sstream>
 
+#include "src/base/Error.h"
+#include "src/cli/SweepCommand.h"
+#include "src/sweep/SweepSpec.h"
 #include "tests/support/Files.h"
 #include "tests/support/Support.h"
 
@@ -21,13 +27,13 @@ std::string readText(const std::string& path) {
 }
 
 // Cornell box, 300 elements, 4 configurations (item-mesh level x item-buffer resolution) of
-// 160 shots each: a second or so apiece on llvmpipe, checkpointed every 16 shots.
+// 96 shots each: a second or so apiece on llvmpipe, checkpointed every 16 shots.
 std::string cornellSpec(const std::string& name) {
   return test::writeTempFile(name, R"({
   "name": "cornell-item-mesh",
   "scenes": [")" + test::sourcePath("scenes/cornell/cornell.obj") + R"("],
   "axes": {"item-subdiv": [0, 2], "item-res": [64, 128]},
-  "flags": {"elements": 300, "shots": 160, "shooters-per-pass": 4},
+  "flags": {"elements": 300, "shots": 96, "shooters-per-pass": 4},
   "resources": {"cpus": 2, "mem": "1G", "time": "00:05:00"},
   "checkpoint_every": 16,
   "metrics": ["shots", "convergence", "radiosity_hash", "objects.floor.mean_radiosity"]
@@ -48,7 +54,7 @@ const std::string& localTable() {
 
 }  // namespace
 
-TEST_CASE("A sweep's tasks run as Slurm would, one stopped by SIGTERM mid-solve and requeued, merge to the bytes "
+TEST_CASE("A sweep's tasks run as Slurm runs them (one stopped by SIGTERM mid-solve and run again) merge to the bytes "
           "of a local --jobs 2 run",
           "[cli][sweep]") {
   const std::string dir = test::tempPath("sweep-tasks");
@@ -62,13 +68,13 @@ TEST_CASE("A sweep's tasks run as Slurm would, one stopped by SIGTERM mid-solve 
                          Contains("experiment run-task " + dir + " \"$SLURM_ARRAY_TASK_ID\""));
   CHECK_THAT(script, !Contains("--gres"));
   // Task 1 is stopped once its first checkpoint (16 shots) is written, then run again: the
-  // requeue. The others run whole.
+  // requeue. The others run whole, beside it, logging where Slurm would.
   const std::string ck = dir + "/tasks/0001/checkpoint.ckpt";
   test::Run run = test::shell(
-      "for i in 0 2 3; do $HEMIRAD experiment run-task " + dir + " $i || echo \"task $i failed\"; done\n"
+      "for i in 0 2 3; do $HEMIRAD experiment run-task " + dir + " $i >>" + dir + "/logs/task_$i.log 2>&1 || echo \"task $i failed\" & done\n"
       "$HEMIRAD experiment run-task " + dir + " 1 & p=$!\n"
       "while [ ! -e " + ck + " ] && kill -0 $p 2>/dev/null; do sleep 0.01; done\n"
-      "kill -TERM $p; wait $p; echo \"first attempt exit $?\"\n"
+      "kill -TERM $p; wait $p; echo \"first attempt exit $?\"; wait\n"
       "$HEMIRAD experiment merge " + dir + "; echo \"merge exit $?\"\n"
       "$HEMIRAD experiment run-task " + dir + " 1; echo \"second attempt exit $?\"\n"
       "$HEMIRAD experiment run-task " + dir + " 1; echo \"third attempt exit $?\"");
@@ -88,8 +94,20 @@ TEST_CASE("A sweep's tasks run as Slurm would, one stopped by SIGTERM mid-solve 
   CHECK(test::count(table, ",done\n") == 4);
   CHECK_THAT(table, Contains("id,scene,item-subdiv,item-res,shots,convergence,radiosity_hash,"
                              "objects.floor.mean_radiosity,status\n"));
-  // Different item meshes give different solutions: the table is not one row four times.
-  CHECK(test::count(table, ",160,") == 4);
+  // Every row solved its own configuration: 96 shots each, and four different solutions.
+  std::set<std::string> hashes;
+  std::istringstream rows(table);
+  std::string line;
+  std::getline(rows, line);  // the header
+  while (std::getline(rows, line)) {
+    CHECK_THAT(line, Contains(",96,"));
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    REQUIRE(cells.size() == 9);
+    hashes.insert(cells[6]);  // radiosity_hash
+  }
+  CHECK(hashes.size() == 4);
 }
 
 TEST_CASE("merge lists missing and failed configurations with their error lines and tabulates only complete ones",
@@ -130,6 +148,8 @@ TEST_CASE("merge lists missing and failed configurations with their error lines 
 
 TEST_CASE("A bad sweep spec is refused with one error line before anything is written", "[cli][sweep][bad-input]") {
   const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
+  const std::string scenes = R"("scenes": [")" + scene + R"("], )";
+  // Through the binary: the error line, the exit code, no folder.
   auto refused = [&](const std::string& body, const std::string& why, const std::string& flags = "") {
     const std::string spec = test::writeTempFile("bad.json", body);
     const std::string dir = test::tempPath("sweep-bad");
@@ -140,21 +160,34 @@ TEST_CASE("A bad sweep spec is refused with one error line before anything is wr
     CHECK_THAT(run.output, Contains(why));
     CHECK(!fs::exists(dir));
   };
-  const std::string scenes = R"("scenes": [")" + scene + R"("], )";
   refused("{" + scenes + R"("axes": {"item-subdivs": [0, 1]}, "metrics": ["shots"]})", "did you mean --item-subdiv?");
-  refused("{" + scenes + R"("axes": {"item-subdiv": [0, 9]}, "metrics": ["shots"]})",
-          "configuration 0001 (" + scene + ", 9)");
-  refused("{" + scenes + R"("flags": {"report": "r.json"}, "metrics": ["shots"]})", "--report is set by each task");
-  refused("{" + scenes + R"("metrics": ["shot"]})", "metric 'shot': 'shot' is not a report field");
-  refused("{" + scenes + R"("metrics": ["shots"], "resource": {}})", "unknown field 'resource'");
-  refused("{" + scenes + R"("metrics": ["shots"], "resources": {"gpu": "yes"}})", "resources.gpu");
-  refused(R"({"scenes": ["missing.obj"], "metrics": ["shots"]})", "missing.obj");
-  refused("{" + scenes + R"("metrics": ["shots"]})", "give --slurm DIR", " ");
-  refused("{" + scenes + R"("metrics": ["shots"]})", "--elements is for seed 004's experiments",
-          " --elements 10 --out-dir " + test::tempPath("sweep-bad"));
   refused("{" + scenes + R"("metrics": ["shots"]})", "--jobs is for a local run",
           " --jobs 2 --slurm " + test::tempPath("sweep-bad"));
-  refused("not json", "not valid JSON");
+  // The same reading and checks in-process: the message of each refusal.
+  auto message = [&](const std::string& body) {
+    try {
+      readSweepSpec(test::writeTempFile("bad-spec.json", body), checkHemiradArgs);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  CHECK_THAT(message("{" + scenes + R"("axes": {"item-subdiv": [0, 9]}, "metrics": ["shots"]})"),
+             Contains("configuration 0001 (" + scene + ", 9)") && Contains("--item-subdiv"));
+  CHECK_THAT(message("{" + scenes + R"("flags": {"report": "r.json"}, "metrics": ["shots"]})"),
+             Contains("--report is set by each task"));
+  CHECK_THAT(message("{" + scenes + R"("flags": {"method": "stochastic"}, "metrics": ["shots"]})"),
+             Contains("--method stochastic needs --shots"));
+  CHECK_THAT(message("{" + scenes + R"("metrics": ["shot"]})"), Contains("metric 'shot': 'shot' is not a report field"));
+  CHECK_THAT(message("{" + scenes + R"("metrics": ["shots"], "resource": {}})"), Contains("unknown field 'resource'"));
+  CHECK_THAT(message("{" + scenes + R"("metrics": ["shots"], "resources": {"gpu": "yes"}})"), Contains("resources.gpu"));
+  CHECK_THAT(message("{" + scenes + R"("metrics": ["shots"], "resources": {"mem": "1 G"}})"),
+             Contains("'1 G' is not a Slurm value"));
+  CHECK_THAT(message(R"({"scenes": ["missing.obj"], "metrics": ["shots"]})"), Contains("missing.obj"));
+  CHECK_THAT(message("{" + scenes + R"("axes": {"shots": []}, "metrics": ["shots"]})"),
+             Contains("axes.shots must be a non-empty list"));
+  CHECK_THAT(message("not json"), Contains("not valid JSON"));
+  CHECK(message("{" + scenes + R"("axes": {"item-subdiv": [0, 1]}, "metrics": ["shots"]})") == "accepted");
 }
 
 TEST_CASE("A GPU sweep's array tasks request a GPU with --gres and solve on EGL", "[cli][sweep]") {
@@ -173,10 +206,10 @@ TEST_CASE("A GPU sweep's array tasks request a GPU with --gres and solve on EGL"
                          Contains("#SBATCH --cpus-per-task=4\n") && Contains("#SBATCH --job-name=hemirad-gpu\n"));
   const nlohmann::json sweep = test::readJson(dir + "/sweep.json");
   REQUIRE(sweep["configurations"].size() == 3);
+  const std::vector<std::string> egl = {"--backend", "egl"};
   for (const auto& c : sweep["configurations"]) {
     const auto args = c["args"].get<std::vector<std::string>>();
-    CHECK(std::search(args.begin(), args.end(), std::begin({std::string("--backend"), std::string("egl")}),
-                      std::end({std::string("--backend"), std::string("egl")})) != args.end());
+    CHECK(std::search(args.begin(), args.end(), egl.begin(), egl.end()) != args.end());
   }
   CHECK(sweep["configurations"][2]["values"] == nlohmann::json({test::sourcePath("scenes/cornell/cornell.obj"), "1024"}));
 }
