@@ -36,20 +36,21 @@ std::string cornellSpec(const std::string& name) {
   "flags": {"elements": 300, "shots": 96, "shooters-per-pass": 4},
   "resources": {"cpus": 2, "mem": "1G", "time": "00:05:00"},
   "checkpoint_every": 16,
-  "metrics": ["shots", "convergence", "radiosity_hash", "objects.floor.mean_radiosity"]
+  "metrics": ["shots", "convergence", "radiosity_hash", "objects.floor.mean_radiosity"],
+  "plot": {"x": "item-res", "y": "convergence"}
 })");
 }
 
-// The local run's merged table, computed once.
-const std::string& localTable() {
-  static const std::string csv = [] {
+// The local run's merged table and figure, computed once.
+const std::pair<std::string, std::string>& localResults() {
+  static const std::pair<std::string, std::string> results = [] {
     const std::string dir = test::tempPath("sweep-local");
     test::Run run = test::hemirad("experiment " + cornellSpec("local.json") + " --out-dir " + dir + " --jobs 2");
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
-    return readText(dir + "/results.csv");
+    return std::pair{readText(dir + "/results.csv"), readText(dir + "/results.svg")};
   }();
-  return csv;
+  return results;
 }
 
 }  // namespace
@@ -90,7 +91,10 @@ TEST_CASE("A sweep's tasks run as Slurm runs them (one stopped by SIGTERM mid-so
   INFO(merged.output);
   REQUIRE(merged.exitCode == 0);
   const std::string table = readText(dir + "/results.csv");
-  CHECK(table == localTable());
+  CHECK(table == localResults().first);
+  const std::string figure = readText(dir + "/results.svg");
+  CHECK(figure == localResults().second);
+  CHECK(test::count(figure, "<polyline") == 2);  // item-subdiv 0 and 2, convergence against item-res
   CHECK(test::count(table, ",done\n") == 4);
   CHECK_THAT(table, Contains("id,scene,item-subdiv,item-res,shots,convergence,radiosity_hash,"
                              "objects.floor.mean_radiosity,status\n"));
@@ -186,6 +190,8 @@ TEST_CASE("A bad sweep spec is refused with one error line before anything is wr
   CHECK_THAT(message(R"({"scenes": ["missing.obj"], "metrics": ["shots"]})"), Contains("missing.obj"));
   CHECK_THAT(message("{" + scenes + R"("axes": {"shots": []}, "metrics": ["shots"]})"),
              Contains("axes.shots must be a non-empty list"));
+  CHECK_THAT(message("{" + scenes + R"("metrics": ["shots"], "plot": {"x": "item-res", "y": "shots"}})"),
+             Contains("plot.x 'item-res' is not one of the axes"));
   CHECK_THAT(message("not json"), Contains("not valid JSON"));
   CHECK(message("{" + scenes + R"("axes": {"item-subdiv": [0, 1]}, "metrics": ["shots"]})") == "accepted");
 }

@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
+#include "src/output/SvgPlot.h"
 
 namespace hemirad {
 
@@ -68,6 +70,22 @@ Row mergeRow(const std::string& dir, const Sweep& sweep, const SweepConfiguratio
   return row;
 }
 
+// A done row's point on the spec's plot, in the series of its other values.
+void addPoint(const Sweep& sweep, const std::vector<std::string>& cells, std::vector<PlotSeries>& plot) {
+  const std::size_t xColumn = std::find(sweep.columns.begin(), sweep.columns.end(), sweep.plotX) - sweep.columns.begin();
+  const std::size_t yCell = 1 + sweep.columns.size() +
+                            (std::find(sweep.metrics.begin(), sweep.metrics.end(), sweep.plotY) - sweep.metrics.begin());
+  std::string label;
+  for (std::size_t k = 0; k < sweep.columns.size(); ++k)
+    if (k != xColumn)
+      label += fmt::format("{}{}={}", label.empty() ? "" : ", ", sweep.columns[k],
+                           k == 0 ? fs::path(cells[1]).stem().string() : cells[1 + k]);
+  auto series = std::find_if(plot.begin(), plot.end(), [&](const PlotSeries& s) { return s.label == label; });
+  if (series == plot.end()) series = plot.insert(plot.end(), PlotSeries{label, {}, {}});
+  series->x.push_back(std::strtod(cells[1 + xColumn].c_str(), nullptr));
+  series->y.push_back(std::strtod(cells[yCell].c_str(), nullptr));
+}
+
 }  // namespace
 
 std::optional<std::string> reportField(const nlohmann::json& report, const std::string& path) {
@@ -105,6 +123,7 @@ SweepTable mergeSweep(const std::string& dir, const Sweep& sweep) {
     Row row = mergeRow(dir, sweep, c);
     addLine(row.cells);
     if (!row.problem.empty()) t.problems.push_back(row.problem);
+    else if (!sweep.plotX.empty()) addPoint(sweep, row.cells, t.plot);
   }
   if (!t.problems.empty()) {
     t.markdown += fmt::format("\n{} of {} configurations not done:\n\n", t.problems.size(), sweep.configurations.size());
@@ -118,6 +137,10 @@ int runMerge(const std::string& dir) {
   const SweepTable t = mergeSweep(dir, sweep);
   writeTextFile(dir + "/results.csv", t.csv);
   writeTextFile(dir + "/results.md", t.markdown);
+  if (!sweep.plotX.empty())  // points with x or y <= 0 (or not numbers) are left out: log axes
+    writeLogLogSvg(dir + "/results.svg", {fmt::format("sweep {}: {} against {}", sweep.name, sweep.plotY, sweep.plotX),
+                                          sweep.plotX, sweep.plotY, true, 720, 480},
+                   t.plot);
   fmt::print("{}", t.markdown);
   for (const std::string& p : t.problems) fmt::print(stderr, "hemirad sweep {}: {}\n", sweep.name, p);
   fmt::print(stderr, "hemirad sweep {}: {} of {} configurations done; table in {}/results.csv and results.md\n",

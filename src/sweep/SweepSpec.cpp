@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -60,8 +61,9 @@ SweepResources readResources(const std::string& spec, const ojson& r) {
     else if (key == "mem" && v.is_string()) out.mem = v.get<std::string>();
     else if (key == "time" && v.is_string()) out.time = v.get<std::string>();
     else if (key == "gpu" && v.is_boolean()) out.gpu = v.get<bool>();
-    else fail("{}: resources.{} = {}: expected cpus (integer >= 1), mem (\"4G\"), time (\"02:00:00\") or gpu (true/false)",
-              spec, key, v.dump());
+    else
+      fail("{}: resources.{} = {}: expected cpus (integer >= 1), mem (\"4G\"), time (\"02:00:00\") or gpu (true/false)",
+           spec, key, v.dump());
   }
   for (const std::string* s : {&out.mem, &out.time})
     if (s->empty() || s->find_first_of(" \t\n'\"$`\\") != std::string::npos)
@@ -91,6 +93,45 @@ std::vector<std::string> stringList(const std::string& spec, const ojson& j, con
   return out;
 }
 
+// The spec's axes (each flag with its values, in the spec's order; their names appended to
+// `columns`) and the flags every configuration gets, as command-line words.
+struct SpecFlags {
+  std::vector<std::pair<std::string, std::vector<std::string>>> axes;
+  std::vector<std::string> fixed;
+};
+
+SpecFlags readFlags(const std::string& spec, const ojson& j, std::vector<std::string>& columns) {
+  const ojson axes = j.value("axes", ojson::object()), flags = j.value("flags", ojson::object());
+  if (!axes.is_object() || !flags.is_object()) fail("{}: 'axes' and 'flags' are objects: {{\"flag\": ...}}", spec);
+  SpecFlags out;
+  for (const auto& [flag, values] : axes.items()) {
+    checkFlagName(spec, flag);
+    if (!values.is_array() || values.empty()) fail("{}: axes.{} must be a non-empty list of values", spec, flag);
+    out.axes.push_back({flag, {}});
+    for (const ojson& v : values) out.axes.back().second.push_back(valueText(spec, flag, v));
+    columns.push_back(flag);
+  }
+  for (const auto& [flag, v] : flags.items()) {
+    checkFlagName(spec, flag);
+    addFlag(out.fixed, flag, valueText(spec, flag, v));
+  }
+  return out;
+}
+
+// "plot": {"x": AXIS, "y": METRIC}: merge also draws results.svg.
+void readPlot(const std::string& spec, const ojson& j, Sweep& s) {
+  if (!j.contains("plot")) return;
+  const ojson& p = j["plot"];
+  if (!p.is_object() || p.size() != 2 || !p.contains("x") || !p.contains("y") || !p["x"].is_string() ||
+      !p["y"].is_string())
+    fail("{}: plot must be {{\"x\": AXIS, \"y\": METRIC}}", spec);
+  s.plotX = p["x"], s.plotY = p["y"];
+  if (std::find(s.columns.begin() + 1, s.columns.end(), s.plotX) == s.columns.end())
+    fail("{}: plot.x '{}' is not one of the axes", spec, s.plotX);
+  if (std::find(s.metrics.begin(), s.metrics.end(), s.plotY) == s.metrics.end())
+    fail("{}: plot.y '{}' is not one of the metrics", spec, s.plotY);
+}
+
 // Scenes x axes, the last axis varying fastest.
 std::vector<SweepConfiguration> crossProduct(const std::string& spec, const std::vector<std::string>& scenes,
                                              const std::vector<std::pair<std::string, std::vector<std::string>>>& axes,
@@ -109,7 +150,8 @@ std::vector<SweepConfiguration> crossProduct(const std::string& spec, const std:
   if (rows.size() > 100000) fail("{}: {} configurations; at most 100,000", spec, rows.size());
   std::vector<SweepConfiguration> out;
   for (const auto& row : rows) {
-    SweepConfiguration c{fmt::format("{:04}", out.size()), row, {"solve", fs::absolute(row[0]).lexically_normal().string()}};
+    const std::string scene = fs::absolute(row[0]).lexically_normal().string();
+    SweepConfiguration c{fmt::format("{:04}", out.size()), row, {"solve", scene}};
     for (std::size_t a = 0; a < axes.size(); ++a) addFlag(c.args, axes[a].first, row[a + 1]);
     c.args.insert(c.args.end(), fixed.begin(), fixed.end());
     out.push_back(std::move(c));
@@ -122,42 +164,33 @@ std::vector<SweepConfiguration> crossProduct(const std::string& spec, const std:
 Sweep readSweepSpec(const std::string& spec, const ArgsCheck& check) {
   const ojson j = readJsonFile(spec, "sweep spec");
   if (!j.is_object()) fail("{}: a sweep spec is a JSON object (docs/sweeps.md)", spec);
-  const std::set<std::string> known = {"name", "scenes", "axes", "flags", "resources", "checkpoint_every", "metrics"};
+  const std::set<std::string> known = {"name",      "scenes",           "axes",    "flags",
+                                       "resources", "checkpoint_every", "metrics", "plot"};
   for (const auto& [key, v] : j.items())
-    if (!known.count(key)) fail("{}: unknown field '{}' (known: name, scenes, axes, flags, resources, checkpoint_every, metrics)", spec, key);
+    if (!known.count(key)) fail("{}: unknown field '{}' (known: {})", spec, key, fmt::join(known, ", "));
   Sweep s;
-  s.name = j.value("name", fs::path(spec).stem().string());
-  if (s.name.empty() || s.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") != std::string::npos)
-    fail("{}: name '{}': letters, digits, '_', '.' and '-' only (it names the Slurm job)", spec, s.name);
+  s.name = j.contains("name") && j["name"].is_string() ? j["name"].get<std::string>() : fs::path(spec).stem().string();
+  const char* kNameChars = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-";
+  if ((j.contains("name") && !j["name"].is_string()) || s.name.empty() ||
+      s.name.find_first_not_of(kNameChars) != std::string::npos)
+    fail("{}: name {}: letters, digits, '_', '.' and '-' only (it names the Slurm job)", spec,
+         j.contains("name") ? j["name"].dump() : s.name);
   const std::vector<std::string> scenes = stringList(spec, j, "scenes");
   s.metrics = stringList(spec, j, "metrics");
   for (const std::string& m : s.metrics) checkMetric(spec, m);
   s.columns = {"scene"};
-  std::vector<std::pair<std::string, std::vector<std::string>>> axes;
-  const ojson axesSpec = j.value("axes", ojson::object()), flagsSpec = j.value("flags", ojson::object());
-  if (!axesSpec.is_object() || !flagsSpec.is_object()) fail("{}: 'axes' and 'flags' are objects: {{\"flag\": ...}}", spec);
-  for (const auto& [flag, values] : axesSpec.items()) {
-    checkFlagName(spec, flag);
-    if (!values.is_array() || values.empty()) fail("{}: axes.{} must be a non-empty list of values", spec, flag);
-    axes.push_back({flag, {}});
-    for (const ojson& v : values) axes.back().second.push_back(valueText(spec, flag, v));
-    s.columns.push_back(flag);
-  }
-  std::vector<std::string> fixed;
-  for (const auto& [flag, v] : flagsSpec.items()) {
-    checkFlagName(spec, flag);
-    addFlag(fixed, flag, valueText(spec, flag, v));
-  }
+  SpecFlags flags = readFlags(spec, j, s.columns);
   const ojson resources = j.value("resources", ojson::object());
   if (!resources.is_object()) fail("{}: 'resources' is an object: {{\"cpus\": 2, ...}}", spec);
   s.resources = readResources(spec, resources);
-  if (s.resources.gpu) fixed.insert(fixed.end(), {"--backend", "egl"});  // the GPU Slurm gives the task
+  if (s.resources.gpu) flags.fixed.insert(flags.fixed.end(), {"--backend", "egl"});  // the GPU Slurm gives it
   if (j.contains("checkpoint_every")) {
     if (!j["checkpoint_every"].is_number_unsigned() || j["checkpoint_every"].get<unsigned>() == 0)
       fail("{}: checkpoint_every must be a positive integer (shots)", spec);
     s.checkpointEvery = j["checkpoint_every"].get<unsigned>();
   }
-  s.configurations = crossProduct(spec, scenes, axes, fixed);
+  readPlot(spec, j, s);
+  s.configurations = crossProduct(spec, scenes, flags.axes, flags.fixed);
   for (const SweepConfiguration& c : s.configurations) {
     try {
       check(c.args);
@@ -175,14 +208,17 @@ nlohmann::json sweepJson(const Sweep& s) {
   return {{"name", s.name},
           {"columns", s.columns},
           {"metrics", s.metrics},
-          {"resources", {{"cpus", s.resources.cpus}, {"mem", s.resources.mem}, {"time", s.resources.time}, {"gpu", s.resources.gpu}}},
+          {"resources",
+           {{"cpus", s.resources.cpus}, {"mem", s.resources.mem}, {"time", s.resources.time}, {"gpu", s.resources.gpu}}},
           {"checkpoint_every", s.checkpointEvery},
+          {"plot", {{"x", s.plotX}, {"y", s.plotY}}},
           {"configurations", configs}};
 }
 
 Sweep readSweepDir(const std::string& dir) {
   const std::string path = dir + "/sweep.json";
-  if (!fs::exists(path)) fail("{}: no sweep here (no sweep.json; make one with hemirad experiment SPEC --slurm DIR)", dir);
+  if (!fs::exists(path))
+    fail("{}: no sweep here (no sweep.json; make one with hemirad experiment SPEC --slurm DIR)", dir);
   try {
     const nlohmann::json j = nlohmann::json::parse(std::ifstream(path));
     Sweep s;
@@ -192,6 +228,7 @@ Sweep readSweepDir(const std::string& dir) {
     const auto& r = j.at("resources");
     s.resources = {r.at("cpus"), r.at("mem"), r.at("time"), r.at("gpu")};
     s.checkpointEvery = j.at("checkpoint_every");
+    s.plotX = j.at("plot").at("x"), s.plotY = j.at("plot").at("y");
     for (const auto& c : j.at("configurations"))
       s.configurations.push_back({c.at("id"), c.at("values"), c.at("args")});
     return s;

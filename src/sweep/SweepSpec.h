@@ -29,6 +29,7 @@ struct Sweep {
   std::vector<std::string> metrics;       // report fields, '.'-separated paths
   SweepResources resources;
   unsigned checkpointEvery = 64;          // shots between a task's checkpoints
+  std::string plotX, plotY;               // optional figure: a numeric axis against a metric (log-log)
   std::vector<SweepConfiguration> configurations;
 };
 

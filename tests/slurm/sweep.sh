@@ -14,6 +14,7 @@ scontrol ping 2>/dev/null | grep -q UP || skip "slurmctld is not running (scontr
 sinfo -h -o %T 2>/dev/null | grep -qE 'idle|mixed|alloc' || skip "no Slurm node is up (slurmd)"
 
 work=$(mktemp -d /tmp/hemirad-slurm-test.XXXXXX)  # slurmd runs on this machine: it sees /tmp
+say() { echo "$(date -u +%T) $*" | tee -a "$work/steps.txt"; }
 trap 'squeue -h -o %i -n hemirad-slurm-test 2>/dev/null | xargs -r scancel' EXIT
 cat > "$work/spec.json" <<JSON
 {
@@ -30,7 +31,7 @@ JSON
   fail "local run: $(cat "$work/local.err")"
 "$hemirad" experiment "$work/spec.json" --slurm "$work/slurm" >/dev/null 2>&1 || fail "writing the job array"
 job=$(sbatch --parsable "$work/slurm/sweep.sbatch") || fail "sbatch"
-echo "submitted job array $job"
+say "submitted job array $job: $(sbatch --version)"
 
 wait_for() {  # wait_for SECONDS DESCRIPTION COMMAND...
   local until=$((SECONDS + $1)) what=$2; shift 2
@@ -39,14 +40,16 @@ wait_for() {  # wait_for SECONDS DESCRIPTION COMMAND...
 ck=$work/slurm/tasks/0001/checkpoint.ckpt
 wait_for 120 "task 1's first checkpoint" test -e "$ck"
 [ -e "$work/slurm/tasks/0001/report.json" ] && fail "task 1 finished before it could be requeued"
+say "task 1 has checkpointed; scontrol requeue ${job}_1"
 scontrol requeue "${job}_1" || fail "scontrol requeue ${job}_1"
-echo "requeued ${job}_1 mid-solve"
 # Slurm holds a requeued job back (BeginTime, about 2 minutes); the test lets it start at once.
 pending() { squeue -h -j "${job}_1" -o %T 2>/dev/null | grep -q PENDING; }
 wait_for 60 "task 1 to be pending again" pending
+say "task 1 pending again: scontrol update JobId=${job}_1 StartTime=now"
 scontrol update JobId="${job}_1" StartTime=now || fail "scontrol update StartTime=now"
 queue_empty() { [ -z "$(squeue -h -j "$job" 2>/dev/null)" ]; }
 wait_for 300 "the job array to finish" queue_empty
+say "job array $job finished; merging"
 
 "$hemirad" experiment merge "$work/slurm" >/dev/null 2>"$work/merge.err" || fail "merge: $(cat "$work/merge.err")"
 log=$work/slurm/logs/task_1.log
@@ -59,7 +62,7 @@ if [ -n "$keep" ]; then
   cp "$work/slurm/results.md" "$keep/slurm_results.md"; cp "$work/slurm/results.csv" "$keep/slurm_results.csv"
   cp "$work/slurm/sweep.sbatch" "$keep/sweep.sbatch"
   cp "$work/results.diff" "$keep/results.diff"; cp "$log" "$keep/requeue_task_1.log"
-  sacct -j "$job" --format=JobID,State,ExitCode,Elapsed -P > "$keep/sacct.txt" 2>/dev/null || true
+  cp "$work/steps.txt" "$keep/steps.txt"
   sed -i "s|$work|\$WORK|g; s|$src|\$SRC|g" "$keep"/*
 fi
 cat "$log"
