@@ -45,6 +45,24 @@ std::string describe(const Sweep& sweep, const SweepConfiguration& c) {
   return out;
 }
 
+// The solve's command line: the configuration's, writing the task's report and checkpoint, and
+// resuming from the checkpoint when one is there.
+std::vector<std::string> taskArgs(const Sweep& sweep, const SweepConfiguration& c, const std::string& tag,
+                                  const std::string& task) {
+  const std::string ck = task + "/checkpoint.ckpt";
+  std::vector<std::string> args = c.args;
+  args.insert(args.end(), {"--report", task + "/report.json", "--quiet"});
+  if (resumable(args)) {
+    args.insert(args.end(), {"--checkpoint", ck, "--checkpoint-every", std::to_string(sweep.checkpointEvery)});
+    if (fs::exists(ck)) {
+      fmt::print(stderr, "{}: resuming from its checkpoint at {} shots\n", tag, readCheckpoint(ck).shots);
+      args.insert(args.end(), {"--resume", ck});
+    }
+  }
+  fmt::print(stderr, "{}: hemirad {}\n", tag, fmt::join(args, " "));
+  return args;
+}
+
 }  // namespace
 
 int runSweepTask(const std::string& dir, const std::string& index, const SolveRunner& solve) {
@@ -58,20 +76,10 @@ int runSweepTask(const std::string& dir, const std::string& index, const SolveRu
     return 0;
   }
   fs::remove(task + "/error");  // a failed task run again
-  std::vector<std::string> args = c.args;
-  args.insert(args.end(), {"--report", report, "--quiet"});
-  if (resumable(args)) {
-    args.insert(args.end(), {"--checkpoint", ck, "--checkpoint-every", std::to_string(sweep.checkpointEvery)});
-    if (fs::exists(ck)) {
-      fmt::print(stderr, "{}: resuming from its checkpoint at {} shots\n", tag, readCheckpoint(ck).shots);
-      args.insert(args.end(), {"--resume", ck});
-    }
-  }
-  fmt::print(stderr, "{}: hemirad {}\n", tag, fmt::join(args, " "));
   int code = 0;
   try {
-    code = solve(args);
-  } catch (const std::exception& e) {
+    code = solve(taskArgs(sweep, c, tag, task));
+  } catch (const std::exception& e) {  // a bad checkpoint too: the task fails with its line
     writeTextFile(task + "/error", fmt::format("hemirad: error: {}\n", e.what()));
     throw;
   }
