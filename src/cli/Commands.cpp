@@ -144,22 +144,36 @@ void Commands::addView() {
 
 void Commands::addExperiment() {
   CLI::App* x = experimentCmd = app.add_subcommand(
-      "experiment", "Seed 004's experiments: progressive vs importance vs perspective along camera paths");
+      "experiment", "Seed 004's experiments: progressive vs importance vs perspective along camera paths; or, "
+                    "with SPEC, a parameter sweep run here or on Slurm (docs/sweeps.md)");
   ExperimentOptions& e = experiment;
-  add(x, "--scenes", e.scenes);
-  add(x, "--algorithms", e.algorithms);
-  add(x, "--elements", e.elements);
-  add(x, "--fps", e.walkthrough.fps);
-  add(x, "--frame-ms", e.walkthrough.frameMs);
-  add(x, "--width", e.walkthrough.width);
-  add(x, "--height", e.walkthrough.height);
-  add(x, "--ambient", e.walkthrough.ambient);
-  add(x, "--reference-convergence", e.referenceConvergence);
-  add(x, "--fov-decay", e.progressive.fovDecayShots);
+  seed004Only = {add(x, "--scenes", e.scenes), add(x, "--algorithms", e.algorithms), add(x, "--elements", e.elements),
+                 add(x, "--fps", e.walkthrough.fps), add(x, "--frame-ms", e.walkthrough.frameMs),
+                 add(x, "--width", e.walkthrough.width), add(x, "--height", e.walkthrough.height),
+                 add(x, "--ambient", e.walkthrough.ambient), add(x, "--reference-convergence", e.referenceConvergence),
+                 add(x, "--fov-decay", e.progressive.fovDecayShots)};
   add(x, "--out-dir", e.out);
-  addSwitch(x, "--keep-frames", e.frames);
-  add(x, "--backend", e.backendName);
-  add(x, "--gpu", e.backend.gpu);
+  seed004Only.push_back(addSwitch(x, "--keep-frames", e.frames));
+  seed004Only.push_back(add(x, "--backend", e.backendName));
+  seed004Only.push_back(add(x, "--gpu", e.backend.gpu));
+  addSweep(x);
+}
+
+void Commands::addSweep(CLI::App* x) {
+  x->add_option("spec", sweep.spec, "A sweep spec (JSON, docs/sweeps.md); without it, seed 004's experiments")
+      ->type_name("SPEC")
+      ->check(CLI::ExistingFile);
+  add(x, "--slurm", sweep.slurm);
+  add(x, "--jobs", sweep.jobs);
+  mergeCmd = x->add_subcommand("merge", "Collect a sweep's task reports into DIR/results.csv and results.md; "
+                                        "lists missing and failed configurations");
+  mergeCmd->add_option("dir", sweep.dir, "The sweep's folder")->required()->type_name("DIR")->check(CLI::ExistingDirectory);
+  runTaskCmd = x->add_subcommand("run-task", "Run one configuration of a sweep (what each Slurm array task runs); "
+                                             "resumes from its checkpoint");
+  runTaskCmd->add_option("dir", sweep.dir, "The sweep's folder")->required()->type_name("DIR")->check(CLI::ExistingDirectory);
+  runTaskCmd->add_option("index", sweep.index, "The configuration, 0 to N - 1 ($SLURM_ARRAY_TASK_ID)")
+      ->required()
+      ->type_name("INDEX");
 }
 
 void Commands::addComparison() {
@@ -264,7 +278,8 @@ void Commands::settleInstant() {
   solve.shading = shading == "forward" ? Shading::Forward : Shading::Deferred;
 }
 
-int Commands::runSolve() {
+void Commands::settle() {
+  if (!*solveCmd) return;
   ProgressiveSettings& p = solve.progressive;
   // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told.
   if (!*shots && !*converge) p.stop.targetConvergence = solve.cameraPath.empty() ? 0.9 : 0.9999;
@@ -274,7 +289,28 @@ int Commands::runSolve() {
   settleStochastic();
   settleInstant();
   solve.progress = !quiet;
+}
+
+int Commands::runSolve() {
+  settle();
   return hemirad::runSolve(solve);
+}
+
+int Commands::runExperiment() {
+  if (*mergeCmd) return runSweepMergeCommand(sweep);
+  if (*runTaskCmd) return runSweepTaskCommand(sweep);
+  const CLI::Option* slurm = experimentCmd->get_option("--slurm");
+  const CLI::Option* jobs = experimentCmd->get_option("--jobs");
+  if (sweep.spec.empty()) {
+    for (const CLI::Option* o : {slurm, jobs})
+      if (*o) throw InputError(o->get_name() + " needs a sweep SPEC: hemirad experiment SPEC " + o->get_name() + " ...");
+    return hemirad::runExperiment(experiment);
+  }
+  for (const CLI::Option* o : seed004Only)
+    if (*o) throw InputError(o->get_name() + " is for seed 004's experiments, not a SPEC sweep (the spec sets the flags)");
+  if (*experimentCmd->get_option("--out-dir")) sweep.outDir = experiment.out;
+  if (*jobs && *slurm) throw InputError("--jobs is for a local run (--out-dir), not --slurm");
+  return runSweepCommand(sweep);
 }
 
 int Commands::run() {
@@ -282,7 +318,7 @@ int Commands::run() {
   if (*infoCmd) return runInfo(info);
   if (*benchCmd) return runBench(bench);
   if (*viewCmd) return runView(view);
-  if (*experimentCmd) return runExperiment(experiment);
+  if (*experimentCmd) return runExperiment();
   if (*comparisonCmd) return runMethodComparison(comparison);
   if (*vplErrorCmd) return runVplError(vplError);
   if (*animateCmd) {

@@ -6,6 +6,7 @@
 
 #include "src/bench/Bench.h"
 #include "src/cli/Solve.h"
+#include "src/cli/SweepCommand.h"
 #include "src/validate/Validate.h"
 #include "src/viewer/Viewer.h"
 #include "src/walk/Experiment.h"
@@ -21,6 +22,9 @@ struct Commands {
   Commands(const Commands&) = delete;
   // Runs the chosen subcommand, after settling what depends on several flags. Throws InputError.
   int run();
+  // Settles what depends on several of solve's flags (InputError for a bad combination), as
+  // run() does before solving: a sweep's configurations are checked so before any runs.
+  void settle();
 
   CLI::App app{"hemirad: diffuse global illumination by GPU progressive-refinement radiosity", "hemirad"};
   SolveOptions solve;
@@ -32,6 +36,7 @@ struct Commands {
   MethodComparisonOptions comparison;
   AnimationOptions animation;
   VplErrorOptions vplError;
+  SweepCommandOptions sweep;
 
  private:
   void addSolve();
@@ -40,6 +45,8 @@ struct Commands {
   void addValidate();
   void addView();
   void addExperiment();
+  void addSweep(CLI::App* x);
+  int runExperiment();
   void addComparison();
   void addAnimation();
   void addVplError();
@@ -55,11 +62,13 @@ struct Commands {
   std::string docs;
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
            *experimentCmd = nullptr, *docsCmd = nullptr,
-           *comparisonCmd = nullptr, *animateCmd = nullptr, *vplErrorCmd = nullptr;
+           *comparisonCmd = nullptr, *animateCmd = nullptr, *vplErrorCmd = nullptr, *mergeCmd = nullptr,
+           *runTaskCmd = nullptr;
   CLI::Option *converge = nullptr, *shots = nullptr;
   std::vector<CLI::Option*> stochasticOnly;   // flags that mean nothing to --method progressive
   std::vector<CLI::Option*> progressiveOnly;  // flags that mean nothing to --method stochastic
   std::vector<CLI::Option*> instantOnly;      // flags only --method instant takes
+  std::vector<CLI::Option*> seed004Only;      // experiment's flags that mean nothing to a SPEC sweep
 };
 
 }  // namespace hemirad

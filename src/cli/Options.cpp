@@ -206,6 +206,9 @@ std::vector<Flag> frameAndCommandFlags() {
       {"--reference-convergence", "C", "Convergence of the reference the frames are compared with",
        CLI::Range(0.5, 0.99999)},
       {"--screenshot", "FILE", "On quit, write the window's last frame here (.png)", none},
+      // Sweeps (hemirad experiment SPEC).
+      {"--slurm", "DIR", "Write the sweep's Slurm job array into DIR (sweep.sbatch, one task per configuration)", none},
+      {"--jobs", "N", "Run the sweep here into --out-dir, N configurations at a time", CLI::Range(1, 1024)},
       // validate.
       {"--levels", "L", "Item-mesh subdivision levels to compare", kLevel},
       {"--shooters", "N|all", "Shooter elements: a count spread over the scene, or all",
