@@ -48,6 +48,9 @@ void main() {
     control.importanceShots += n;
     passShooters = n;
   } else if (l == 0u) {
+    // Before the first shot the unshot power is the emitted power: taking this reduction's own
+    // sum (not the CPU's double one) makes the history start at exactly 0, never -1e-7.
+    if (control.shots == 0u) control.emittedPower = groupSum[0];
     float convergence = 1.0 - groupSum[0] / control.emittedPower;
     control.convergence = convergence;
     control.unshotPower = groupSum[0];

@@ -15,7 +15,7 @@ using options::addSwitch;
 namespace {
 
 void addScene(CLI::App* cmd, std::string& scene, LoadOptions& load, Discretisation& d) {
-  cmd->add_option("scene", scene, "Wavefront OBJ (materials from its MTL)")
+  cmd->add_option("scene", scene, "Wavefront OBJ (materials from its MTL) or glTF 2.0 (.gltf, .glb)")
       ->required()
       ->type_name("SCENE")
       ->check(CLI::ExistingFile);

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <tuple>
 
 #include "src/base/AtomicFile.h"
 #include "src/scene/Atlas.h"
@@ -20,6 +22,12 @@
 namespace hemirad {
 
 namespace {
+
+bool isPng(const std::string& path) {
+  std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : path;
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".png";
+}
 
 Image atlasImage(const Atlas& atlas, const std::vector<glm::vec4>& B) {
   Image img{atlas.width, atlas.height, std::vector<float>(B.size() * 3)};
@@ -78,9 +86,18 @@ void describeProgressive(RunInfo& run, const ProgressiveSolver& solver) {
 // Everything checkable before a scene is read: the method, writable outputs, flag combinations.
 void checkSolveInputs(const SolveOptions& o) {
   requireBuilt(o.method);
-  for (auto [path, flag] : {std::pair{o.out, "--out"}, {o.image, "--image"}, {o.atlas, "--atlas"}, {o.ply, "--ply"},
-                            {o.report, "--report"}, {o.checkpoint, "--checkpoint"}})
-    if (!path.empty()) checkWritable(path, flag);
+  using Exts = std::vector<std::string>;
+  for (auto [path, flag, exts] : {std::tuple{o.out, "--out", Exts{".exr", ".png"}}, {o.image, "--image", Exts{".png"}},
+                                  {o.atlas, "--atlas", Exts{".exr"}}, {o.ply, "--ply", Exts{".ply"}},
+                                  {o.report, "--report", Exts{".json"}}, {o.checkpoint, "--checkpoint", Exts{}}})
+    if (!path.empty()) {
+      if (!exts.empty()) checkExtension(path, flag, exts, std::string(flag) == "--report");
+      checkWritable(path, flag);
+    }
+  if (o.out.empty() && o.image.empty() && o.atlas.empty() && o.ply.empty() && o.report.empty() &&
+      o.checkpoint.empty() && o.cameraPath.empty())
+    warn("no output flag (--out, --image, --atlas, --ply, --report, --checkpoint): only the summary line will "
+         "show the result");
   if ((!o.checkpoint.empty() || !o.resume.empty()) && o.progressive.algorithm == Algorithm::Perspective)
     throw InputError("--checkpoint and --resume do not support --algorithm perspective (its stored radiosity table is "
                      "not saved)");
@@ -130,7 +147,8 @@ void writeImages(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
     view = renderer.render(camera, o.width, o.height, o.supersample);
     scale = exposureScale(view, o.exposure);
   }
-  if (!o.out.empty()) writeExr(o.out, view);
+  // --out is the linear render; named .png it gets --image's tone mapping (8 bits cannot hold linear light).
+  if (!o.out.empty()) isPng(o.out) ? writePng(o.out, view, scale) : writeExr(o.out, view);
   if (!o.image.empty()) writePng(o.image, view, scale);
   if (!o.atlas.empty()) writeExr(o.atlas, atlasImage(atlas, B));
   if (!o.ply.empty()) writePly(o.ply, scene, atlas, B, scale);

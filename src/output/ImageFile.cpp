@@ -8,10 +8,11 @@
 namespace hemirad {
 
 namespace {
-void writeWith(const std::string& path, const OIIO::ImageSpec& spec, const void* pixels) {
+// The format is chosen by name, not by the path's extension: /dev/stdout or a FIFO has none.
+void writeWith(const std::string& path, const char* format, const OIIO::ImageSpec& spec, const void* pixels) {
   writeAtomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) fail("{}: no image writer for this extension", path);
+    auto out = OIIO::ImageOutput::create(format);
+    if (!out) fail("{}: no {} image writer", path, format);
     if (!out->open(tmp, spec) || !out->write_image(spec.format, pixels) || !out->close())
       fail("{}: cannot write: {}", path, out->geterror());
   });
@@ -21,13 +22,13 @@ void writeWith(const std::string& path, const OIIO::ImageSpec& spec, const void*
 void writeExr(const std::string& path, const Image& image) {
   OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
   spec.attribute("compression", "zip");
-  writeWith(path, spec, image.rgb.data());
+  writeWith(path, "openexr", spec, image.rgb.data());
 }
 
 void writePng(const std::string& path, const Image& image, double scale) {
   OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
   std::vector<unsigned char> pixels = toneMap(image, scale);
-  writeWith(path, spec, pixels.data());
+  writeWith(path, "png", spec, pixels.data());
 }
 
 Image readImage(const std::string& path) {

@@ -1,42 +1,92 @@
 #include "src/output/Progress.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace hemirad {
 
+namespace {
+constexpr auto kTtyInterval = std::chrono::milliseconds(100);
+constexpr auto kPlainInterval = std::chrono::seconds(5);
+
+std::string duration(double s) {
+  if (!std::isfinite(s)) return "?";
+  if (s < 60) return fmt::format("{:.1f}s", s);
+  if (s < 3600) return fmt::format("{}m{:02}s", int(s / 60), int(s) % 60);
+  return fmt::format("{}h{:02}m", int(s / 3600), int(s / 60) % 60);
+}
+}  // namespace
+
+int terminalColumns() {
+  if (const char* c = std::getenv("COLUMNS")) {
+    const int n = std::atoi(c);
+    if (n > 0) return n;
+  }
+  winsize w{};
+  if (ioctl(STDERR_FILENO, TIOCGWINSZ, &w) == 0 && w.ws_col > 0) return w.ws_col;
+  return 80;
+}
+
 Progress::Progress(const StopRule& stop, bool enabled)
-    : stop_(stop), tty_(enabled && isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()), lastDraw_(start_) {}
+    : stop_(stop), enabled_(enabled), tty_(enabled && isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()),
+      lastDraw_(start_) {}
 
 double Progress::elapsedSeconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-double Progress::fraction(const SolveStatus& s) const {
-  double f = 0;
-  if (stop_.targetConvergence > 0) f = std::max(f, s.convergence / stop_.targetConvergence);
-  if (stop_.maxShots > 0) f = std::max(f, double(s.shots) / stop_.maxShots);
-  return std::clamp(s.done ? 1.0 : f, 0.0, 1.0);
+Progress::Estimate Progress::estimate(const SolveStatus& s, double elapsed) const {
+  if (s.done) return {1.0, 0.0};
+  if (s.shots == 0) return {0.0, NAN};
+  // Shots left to whichever stop comes first: the shot limit, or the model's convergence target.
+  double left = INFINITY;
+  if (stop_.maxShots > 0) left = double(stop_.maxShots) - double(s.shots);
+  if (stop_.targetConvergence > 0 && !std::isnan(s.convergence))
+    if (auto model = model_.shotsLeft(stop_.targetConvergence)) left = std::min(left, *model);
+  if (!std::isfinite(left)) return {0.0, NAN};
+  left = std::max(left, 0.0);
+  return {double(s.shots) / (s.shots + left), left * elapsed / s.shots};
+}
+
+std::string Progress::barLine(const SolveStatus& s, const Estimate& e, double elapsed, int columns) const {
+  // Stochastic iteration has no convergence measure (NaN, docs/design.md#convergence).
+  const std::string convergence = std::isnan(s.convergence) ? "" : fmt::format("  convergence {:.4f}", s.convergence);
+  const std::string eta = s.done ? duration(elapsed) : "ETA " + duration(e.secondsLeft);
+  const std::string tail = fmt::format(" {:3.0f}%  shots {}{}  {}", e.fraction * 100, s.shots, convergence, eta);
+  const int width = std::min(40, columns - 1 - int(tail.size()) - 2);  // "[...]" + the tail, one column spare
+  if (width < 5) return tail.substr(std::min(tail.size(), std::size_t(1)), std::size_t(std::max(0, columns - 1)));
+  const int filled = int(e.fraction * width + 0.5);
+  return "[" + std::string(std::size_t(filled), '#') + std::string(std::size_t(width - filled), '.') + "]" + tail;
 }
 
 void Progress::update(const SolveStatus& s) {
-  if (!tty_) return;
+  if (!enabled_) return;
+  model_.add(s.shots, s.convergence);
   auto now = std::chrono::steady_clock::now();
-  if (drawn_ && !s.done && now - lastDraw_ < std::chrono::milliseconds(100)) return;
+  if (now - lastDraw_ < (tty_ ? std::chrono::duration_cast<std::chrono::milliseconds>(kTtyInterval)
+                              : std::chrono::duration_cast<std::chrono::milliseconds>(kPlainInterval)) &&
+      !(tty_ && s.done && drawn_))
+    return;
   lastDraw_ = now;
-  drawn_ = true;
-  double f = fraction(s), t = elapsedSeconds();
-  int width = 30, filled = int(f * width + 0.5);
-  std::string eta = f > 0.01 && !s.done ? fmt::format("ETA {:.1f}s", t * (1 - f) / f) : fmt::format("{:.1f}s", t);
-  // Stochastic iteration has no convergence measure (NaN, docs/design.md#convergence).
-  const std::string convergence = std::isnan(s.convergence) ? "" : fmt::format("  convergence {:.4f}", s.convergence);
-  fmt::print(stderr, "\r[{}{}] {:3.0f}%  shots {}{}  {}   ", std::string(size_t(filled), '#'),
-             std::string(size_t(width - filled), '.'), f * 100, s.shots, convergence, eta);
+  const double t = elapsedSeconds();
+  const Estimate e = estimate(s, t);
+  if (tty_) {
+    const int columns = terminalColumns();
+    const std::string line = barLine(s, e, t, columns);
+    // \r, the line, spaces over what a longer earlier line left, all within the width.
+    fmt::print(stderr, "\r{}{}", line, std::string(std::size_t(std::max(0, columns - 1 - int(line.size()))), ' '));
+    drawn_ = true;
+  } else {
+    const std::string convergence = std::isnan(s.convergence) ? "" : fmt::format(", convergence {:.4f}", s.convergence);
+    fmt::print(stderr, "hemirad: {:.0f}%, {} shots{}, {} elapsed, ETA {}\n", e.fraction * 100, s.shots, convergence,
+               duration(t), duration(e.secondsLeft));
+  }
   std::fflush(stderr);
 }
 

@@ -94,6 +94,7 @@ std::string sidecarCameraPath(const std::string& objPath) {
 
 Camera resolveCamera(const Scene& scene, const std::optional<std::string>& cameraFlag) {
   Camera cam = frameScene(scene);
+  if (!scene.camera.empty()) cam = parseCamera(scene.camera, cam, scene.path);
   std::string sidecar = sidecarCameraPath(scene.path);
   if (!scene.path.empty() && std::filesystem::is_regular_file(sidecar)) {
     std::ifstream in(sidecar);

@@ -43,6 +43,7 @@ class Scene {
   std::vector<Material> materials;
   std::vector<SceneObject> objects;
   std::vector<std::string> warnings;  // what loading repaired or skipped
+  std::string camera;  // the scene file's own camera (glTF) as --camera text; "" for none
 
   // Adds a polygon; returns false (and records nothing) if it has no area.
   bool addPolygon(const Poly3& vertices, int material, int object);

@@ -12,15 +12,16 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "src/base/Error.h"
+#include "src/scene/FaceRepair.h"
+#include "src/scene/GltfLoader.h"
 
 namespace hemirad {
 
 namespace {
-
-constexpr double kPlanarTolerance = 1e-4;  // of the polygon's size
 
 // Line numbers of OBJ statements, which tinyobjloader does not keep.
 struct ObjLines {
@@ -125,6 +126,8 @@ void scanMaterialNumbers(const std::string& objPath, const ObjLines& lines) {
 struct MtlLines {
   std::map<std::string, std::vector<std::string>> newmtl;              // every definition of a name
   std::map<std::pair<std::string, std::string>, std::string> values;  // (name, key): its line
+  std::set<std::pair<std::string, std::string>> grey;  // (name, key) given one value: r = g = b
+  std::vector<std::string> warnings;                   // texture maps, which are not used
   std::string fallback;
   std::string at(const std::string& name, const std::string& key) const {
     if (auto v = values.find({name, key}); v != values.end()) return v->second;
@@ -154,7 +157,18 @@ MtlLines scanMaterialLines(const std::string& objPath, const ObjLines& lines) {
         std::string where = fmt::format("{}:{}", mtlPath.string(), no);
         if (key == "newmtl") out.newmtl[current = trim(line.substr(line.find("newmtl") + 6))].push_back(where);
         // A second definition of a name is refused before its values are read.
-        if ((key == "Kd" || key == "Ka" || key == "Ke") && out.newmtl[current].size() == 1) out.values[{current, key}] = where;
+        if ((key == "Kd" || key == "Ka" || key == "Ke") && out.newmtl[current].size() == 1) {
+          out.values[{current, key}] = where;
+          // The MTL format's `Kd r [g b]`: one value is grey (tinyobjloader would read r 0 0).
+          std::string value;
+          int values = 0;
+          while (ss >> value) ++values;
+          if (values == 1) out.grey.insert({current, key});
+        }
+        if (key.rfind("map_", 0) == 0 || key == "bump" || key == "disp" || key == "decal")
+          out.warnings.push_back(fmt::format("{}: material '{}': {} texture ignored: hemirad uses the constant Kd/Ke "
+                                             "of each material, never textures",
+                                             where, current, key));
       }
     }
   }
@@ -167,6 +181,8 @@ Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, co
   const double* e = options.emission == EmissionSource::Ka ? m.ambient : m.emission;
   Material out{m.name, {m.diffuse[0], m.diffuse[1], m.diffuse[2]}, {e[0], e[1], e[2]}};
   const char* eKey = options.emission == EmissionSource::Ka ? "Ka" : "Ke";
+  if (mtl.grey.count({m.name, "Kd"})) out.reflectance = glm::dvec3(m.diffuse[0]);
+  if (mtl.grey.count({m.name, eKey})) out.emission = glm::dvec3(e[0]);
   const std::string kd = mtl.at(m.name, "Kd"), ek = mtl.at(m.name, eKey);
   if (!finite3(m.diffuse)) fail("{}: material '{}': Kd is not a finite number", kd, m.name);
   if (!finite3(e)) fail("{}: material '{}': {} is not a finite number", ek, m.name, eKey);
@@ -214,8 +230,6 @@ void addMaterials(Scene& scene, const tinyobj::ObjReader& reader, const LoadOpti
     if (!materialIds.count(name)) fail("{}:{}: unknown material '{}' (not in the MTL file)", path, line, name);
 }
 
-using FaceSite = std::function<std::string()>;  // "file:line" of the face being read
-
 // A face's `n` vertices from `offset`, without consecutive repeats or a closing repeat.
 Poly3 facePolygon(const tinyobj::attrib_t& attrib, const tinyobj::mesh_t& mesh, size_t offset, size_t n,
                   const FaceSite& where) {
@@ -232,27 +246,6 @@ Poly3 facePolygon(const tinyobj::attrib_t& attrib, const tinyobj::mesh_t& mesh, 
   return poly;
 }
 
-// A face as scene polygons: none if degenerate, triangles if non-planar or non-convex.
-void addFace(Scene& scene, const Poly3& poly, int material, int object, const FaceSite& where) {
-  double size = 0;
-  for (auto& v : poly) size = std::max(size, glm::length(v - poly.front()));
-  glm::dvec3 normal = poly.size() >= 3 ? newellNormal(poly) : glm::dvec3(0.0);
-  if (poly.size() < 3 || !(glm::length(normal) > 1e-12 * size * size)) {
-    scene.warnings.push_back(fmt::format("{}: degenerate face with zero area skipped", where()));
-    return;
-  }
-  bool planar = planarityError(poly) <= kPlanarTolerance * size;
-  if (planar && isConvex(poly, normal)) {
-    scene.addPolygon(poly, material, object);
-    return;
-  }
-  scene.warnings.push_back(
-      fmt::format("{}: {} polygon split into triangles", where(), planar ? "non-convex" : "non-planar"));
-  std::vector<int> tris = triangulate(poly, normal);
-  for (size_t t = 0; t < tris.size(); t += 3)
-    scene.addPolygon({poly[tris[t]], poly[tris[t + 1]], poly[tris[t + 2]]}, material, object);
-}
-
 }  // namespace
 
 Scene loadScene(const std::string& path, const LoadOptions& options) {
@@ -261,6 +254,7 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
   if (!fs::exists(path, ec)) fail("{}: no such file", path);
   if (!fs::is_regular_file(path, ec)) fail("{}: is not a readable file (a folder?)", path);
   if (!std::ifstream(path)) fail("{}: cannot be read", path);
+  if (isGltfPath(path)) return loadGltf(path);
   ObjLines lines = scanLines(path);
   const MtlLines mtl = scanMaterialLines(path, lines);
   tinyobj::ObjReader reader;
@@ -269,6 +263,7 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
 
   Scene scene;
   scene.path = path;
+  scene.warnings = mtl.warnings;
   addMaterials(scene, reader, options, mtl, lines, path);
   int defaultMaterial = -1;
   size_t faceNo = 0, totalFaces = 0;

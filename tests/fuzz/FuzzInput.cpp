@@ -41,19 +41,30 @@ void writeFile(const fs::path& path, std::string_view text) {
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
+// The OBJ part (after an mtllib line) and the MTL part of an OBJ+MTL input.
+void writeObjAndMtl(const fs::path& dir, std::string_view input) {
+  size_t cut = input.find(kMtlSeparator);
+  std::string_view obj = input.substr(0, cut);
+  std::string_view mtl = cut == std::string_view::npos ? std::string_view() : input.substr(cut + kMtlSeparator.size());
+  writeFile(dir / "scene.mtl", mtl);
+  writeFile(dir / "scene.obj", "mtllib scene.mtl\n" + std::string(obj));
+}
+
 }  // namespace
 
 Outcome loadFuzzInput(std::string_view input) {
   static TempFolder folder;
-  size_t cut = input.find(kMtlSeparator);
-  std::string_view obj = input.substr(0, cut);
-  std::string_view mtl = cut == std::string_view::npos ? std::string_view() : input.substr(cut + kMtlSeparator.size());
-  writeFile(folder.dir / "scene.mtl", mtl);
-  writeFile(folder.dir / "scene.obj", "mtllib scene.mtl\n" + std::string(obj));
+  fs::path scenePath = folder.dir / "scene.obj";
+  if (input.substr(0, kGltfPrefix.size()) == kGltfPrefix) {
+    scenePath = folder.dir / "scene.gltf";
+    writeFile(scenePath, input.substr(kGltfPrefix.size()));
+  } else {
+    writeObjAndMtl(folder.dir, input);
+  }
 
   Outcome out;
   try {
-    Scene scene = loadScene((folder.dir / "scene.obj").string());
+    Scene scene = loadScene(scenePath.string());
     Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, kElements), kMaxAtlasSize);
     validateSolvable(scene);
     out.loaded = true;

@@ -12,6 +12,8 @@ namespace hemirad::fuzz {
 // An input is OBJ text, this separator line, then MTL text (no separator: all OBJ, empty MTL).
 // ci/fuzz writes the seeds in this form.
 inline constexpr std::string_view kMtlSeparator = "\n@mtl\n";
+// An input starting with this line is instead a glTF file (JSON, buffers as data URIs).
+inline constexpr std::string_view kGltfPrefix = "@gltf\n";
 
 struct Outcome {
   bool loaded = false;       // loaded, atlas built, solvable
@@ -20,7 +22,7 @@ struct Outcome {
 };
 
 // Writes `mtllib scene.mtl` + the OBJ part to scene.obj and the MTL part to scene.mtl in this
-// process's temp folder (/dev/shm, else $TMPDIR), then runs loadScene, an atlas of about 200
+// process's temp folder (/dev/shm, else $TMPDIR) (a glTF input: the rest to scene.gltf), then runs loadScene, an atlas of about 200
 // elements (as `hemirad info` does) and validateSolvable. An InputError is the expected refusal
 // and is returned; any other exception propagates (a bug).
 Outcome loadFuzzInput(std::string_view input);
