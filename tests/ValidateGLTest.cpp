@@ -193,8 +193,13 @@ TEST_CASE("A light hung 0.5 mm below the ceiling leaves the ceiling above it dar
   settings.shootLevel = 1;
   settings.shootersPerPass = 16;
   settings.stop.targetConvergence = 0.95;
+  // The default item buffer, and the bench's fast plan (coarse shooters, hemicube L0 buffers).
   settings.projection = GENERATE(Projection::Stereographic, Projection::Hemicube);
-  if (settings.projection == Projection::Hemicube) settings.itemSubdivision = 0;
+  if (settings.projection == Projection::Hemicube) {
+    settings.itemSubdivision = 0;
+    settings.shootLevel = kAutoShootLevel;
+    settings.itemResolution = kAutoItemResolution;
+  }
   const double ts = 556.0 / 24;
   test::Solved r = test::solve(s, ts, settings);
   const double covered = test::object(r, "ceiling_above_light").mean.y;
