@@ -1,5 +1,6 @@
 // Exact differential-area-to-polygon form factor (Lambert's contour formula), unoccluded. The
-// CPU twin is cpu::pointToPolygon (cpu/ExactFormFactor.cpp, double): same clip, same atan2 sum.
+// CPU twin is cpu::pointToPolygon (cpu/ExactFormFactor.cpp, double): the same clipped outline
+// (stored there, streamed here) and the same atan2 sum.
 // Needs hemisphere.glsl (PI). Shapes live in SSBO 11, SHAPE_STRIDE vec4s each: the vertex count
 // (x), then up to MAX_SHAPE_VERTICES vertices (the shooter tree's nodes, stochastic iteration's
 // texels, the tests' probe cases).

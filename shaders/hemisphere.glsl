@@ -41,8 +41,9 @@ float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 // upper half.
 #ifdef HEMICUBE
 const int ITEM_FACES = 5;
-// The hemicube's near plane as a fraction of the far distance: below the horizon margin (1e-5
-// far, itembuffer.vert), so it clips nothing the hemisphere keeps.
+// The hemicube's near plane (along each face's axis) as a fraction of the far distance: a point is
+// drawn in the face of its largest axis, so only points within ~1e-6 far of the shooter are lost,
+// ten times closer than the horizon margin (1e-5 far, itembuffer.vert) already drops.
 const float ITEM_NEAR = 1e-6;
 #else
 const int ITEM_FACES = 1;

@@ -1,7 +1,7 @@
 // Visibility and form factor of a receiver element from a shooter of the pass. Needs
 // hemisphere.glsl, scene.glsl, control.glsl and formfactor.glsl. Texture unit 2: polygon ids,
 // ITEM_FACES layers per shooter, each pixel the nearest surface by exact depth (itembuffer.frag;
-// the depths themselves are not read); SSBO 11 the shooter-tree nodes' shapes (shapeTable).
+// the depths themselves are not read); SSBO 11 (formfactor.glsl) the shooters' shapes.
 
 layout(binding = 2) uniform usampler2DArray itemId;
 uniform float farDistance;
