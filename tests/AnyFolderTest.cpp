@@ -24,7 +24,7 @@ TEST_CASE("bench and experiment run from an empty folder, finding the shipped sc
 
   test::Run experiment = test::shell(
       "cd " + dir + " && $HEMIRAD experiment --scenes scenes/cornell/cornell.obj --algorithms progressive --elements 150 "
-      "--reference-convergence 0.9 --fps 0.5 --frame-ms 10 --width 32 --height 32 --out-dir out");
+      "--reference-convergence 0.9 --fps 0.25 --frame-ms 5 --width 32 --height 32 --out-dir out");
   INFO(experiment.output);
   REQUIRE(experiment.exitCode == 0);
   for (const char* f : {"events.csv", "summary.md", "cornell_progressive.csv", "cornell_image_error.svg",

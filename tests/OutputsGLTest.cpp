@@ -1,5 +1,6 @@
 // What `hemirad solve` writes: images, atlas, PLY mesh and report, checked by reading them back.
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>

@@ -7,7 +7,6 @@
 #include <map>
 
 #include "src/base/AtomicFile.h"
-#include "src/base/DataDir.h"
 #include "src/output/Figure.h"
 #include "src/output/ImageFile.h"
 #include "src/output/InstantRenderer.h"
@@ -72,7 +71,6 @@ Image sideBySide(const Image& left, const Image& right) {
 
 int runVplError(VplErrorOptions o) {
   o.backend.kind = gl::parseBackendKind(o.backendName);
-  o.scene = findScene(o.scene);  // the shipped Cornell box from any directory
   checkPlotting();
   Scene scene = loadScene(o.scene, o.load);
   validateSolvable(scene);
