@@ -9,5 +9,5 @@ add_custom_command(
           --extensions GL_KHR_debug --out-path ${GLAD_OUT} c
   COMMENT "Generating the glad GL 4.5 core loader")
 add_library(glad_gl STATIC ${GLAD_OUT}/src/gl.c)
-target_include_directories(glad_gl SYSTEM PUBLIC ${GLAD_OUT}/include)
+target_include_directories(glad_gl SYSTEM PUBLIC $<BUILD_INTERFACE:${GLAD_OUT}/include>)
 set_target_properties(glad_gl PROPERTIES POSITION_INDEPENDENT_CODE ON)

@@ -11,4 +11,4 @@ add_custom_command(
   COMMENT "Embedding shaders"
   VERBATIM)
 add_library(hemirad_shaders STATIC ${HEMIRAD_SHADERS_CPP})
-target_include_directories(hemirad_shaders PUBLIC ${CMAKE_SOURCE_DIR})
+target_include_directories(hemirad_shaders PUBLIC $<BUILD_INTERFACE:${CMAKE_SOURCE_DIR}>)

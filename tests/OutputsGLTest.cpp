@@ -1,5 +1,6 @@
 // What `hemirad solve` writes: images, atlas, PLY mesh and report, checked by reading them back.
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -92,11 +93,23 @@ TEST_CASE("validate writes its report and figures, and bench its table and JSON"
   // Every object holding a shooter, to each of the 8 objects.
   CHECK(r["object_form_factors"].size() % 8 == 0);
   CHECK(r["object_form_factors"].size() >= 8);
-  for (const char* f : {"index.html", "levels.csv", "agreement_vs_level.png", "ff_error_vs_level.png",
-                        "atlas_visibility_L0.png", "view_visibility_L2.png", "atlas_ff_error_L2.png"})
+  for (const char* f : {"index.html", "levels.csv", "agreement_vs_level.svg", "ff_error_vs_level.pdf",
+                        "atlas_visibility_L0.svg", "view_visibility_L2.png", "atlas_ff_error_L2.pdf"})
     CHECK(std::filesystem::exists(dir + "/" + f));
-  Image plot = readImage(dir + "/agreement_vs_level.png");
-  CHECK(plot.width == 960);
+  // Provenance, the same in the report and in every figure's metadata: what --version says, the
+  // command line as run, the backend.
+  const std::string version = test::hemirad("--version").output;
+  const nlohmann::json& p = r["provenance"];
+  CHECK(version == fmt::format("hemirad {} (git {})\n", p["version"].get<std::string>(), p["git_hash"].get<std::string>()));
+  CHECK(p["git_hash"].get<std::string>().size() >= 7);
+  CHECK_THAT(p["command_line"].get<std::string>(), Contains("validate ") && Contains(" --figures " + dir));
+  CHECK(p["backend"] == r["backend"]);
+  CHECK(p["renderer"] == r["renderer"]);
+  const std::string svg = test::readText(dir + "/ff_error_vs_level.svg");
+  CHECK_THAT(svg, Contains(fmt::format("<dc:description>hemirad {} (git {}), {} (", p["version"].get<std::string>(),
+                                       p["git_hash"].get<std::string>(), p["backend"].get<std::string>())));
+  CHECK_THAT(svg, Contains(" --figures " + dir + "</dc:description>"));
+  CHECK_THAT(test::readText(dir + "/atlas_ff_error_L2.svg"), Contains("relative error of F"));  // the colour bar
 
   std::string json = test::tempPath("bench.json");
   test::Run b = test::hemirad("bench --scenes " + test::sourcePath("scenes/analytic/parallel_squares.obj") +

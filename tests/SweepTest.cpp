@@ -21,10 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::readText;
 
 // Cornell box, 300 elements, 4 configurations (item-mesh level x item-buffer resolution) of
 // 96 shots each: a second or so apiece on llvmpipe, checkpointed every 16 shots.
@@ -94,7 +91,12 @@ TEST_CASE("A sweep's tasks run as Slurm runs them (one stopped by SIGTERM mid-so
   CHECK(table == localResults().first);
   const std::string figure = readText(dir + "/results.svg");
   CHECK(figure == localResults().second);
-  CHECK(test::count(figure, "<polyline") == 2);  // item-subdiv 0 and 2, convergence against item-res
+  // matplotlib's SVG: a legend entry per line (item-subdiv 0 and 2), convergence against item-res,
+  // and the sweep as its provenance.
+  CHECK(test::count(figure, ">scene=cornell, item-subdiv=") == 2);
+  CHECK_THAT(figure, Contains(">scene=cornell, item-subdiv=0<") && Contains(">scene=cornell, item-subdiv=2<"));
+  CHECK_THAT(figure, Contains("<dc:description>hemirad ") && Contains("sweep cornell-item-mesh (4 configurations"));
+  CHECK(readText(dir + "/results.pdf").rfind("%PDF-", 0) == 0);
   CHECK(test::count(table, ",done\n") == 4);
   CHECK_THAT(table, Contains("id,scene,item-subdiv,item-res,shots,convergence,radiosity_hash,"
                              "objects.floor.mean_radiosity,status\n"));

@@ -9,6 +9,7 @@
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Clock.h"
+#include "src/base/DataDir.h"
 #include "src/scene/Camera.h"
 #include "src/bench/Ceilings.h"
 #include "src/bench/StochasticBench.h"
@@ -16,6 +17,7 @@
 #include "src/cli/Options.h"
 #include "src/base/Error.h"
 #include "src/solver/Control.h"
+#include "src/output/Provenance.h"
 #include "src/output/Report.h"
 #include "src/scene/SceneLoader.h"
 
@@ -235,7 +237,8 @@ void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const
                                          {"method", "stochastic"},
                                          {"item_subdivision", o.progressive.itemSubdivision},
                                          {"item_resolution", o.progressive.itemResolution},
-                                         {"rows", rows}}
+                                         {"rows", rows},
+                                         {"provenance", provenanceJson(provenance(backend.name(), backend.renderer()))}}
                                   .dump(2) + "\n");
 }
 
@@ -245,6 +248,7 @@ int runBench(BenchOptions o) {
   if (!o.json.empty()) checkWritable(o.json, "--json");
   if (!o.markdown.empty()) checkWritable(o.markdown, "--markdown");
   o.backend.kind = gl::parseBackendKind(o.backendName);
+  for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
   o.progressive.projection = parseProjection(o.projection);
   auto backend = gl::createBackend(o.backend);
   std::time_t now = std::time(nullptr);
@@ -264,7 +268,9 @@ int runBench(BenchOptions o) {
       writeTextFile(o.json, nlohmann::json{{"date", date}, {"backend", backend->name()}, {"renderer", backend->renderer()},
                                            {"method", "instant"}, {"width", o.width}, {"height", o.height},
                                            {"frames_per_row", o.iterations}, {"shadow_resolution", o.instant.shadowResolution},
-                                           {"rows", rows}}.dump(2) + "\n");
+                                           {"rows", rows},
+                                           {"provenance", provenanceJson(provenance(backend->name(), backend->renderer()))}}
+                                   .dump(2) + "\n");
     if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
     return 0;
   }
@@ -310,7 +316,8 @@ int runBench(BenchOptions o) {
                           {"item_subdivision", o.progressive.itemSubdivision},
                           {"item_resolution", o.progressive.itemResolution},
                           {"projection", projectionName(o.progressive.projection)},
-                          {"rows", rows}};
+                          {"rows", rows},
+                          {"provenance", provenanceJson(provenance(backend->name(), backend->renderer()))}};
     if (o.ceiling)
       out["ceilings"] = {{"load_store_invocations_per_s", ceiling.invocationsPerSecond},
                          {"item_buffer_triangles_per_s", ceiling.trianglesPerSecond},

@@ -6,8 +6,10 @@
 #include "src/bench/Bench.h"
 #include "src/base/Error.h"
 #include "src/cli/Suggest.h"
+#include "src/output/Provenance.h"
 
 int main(int argc, char** argv) {
+  hemirad::recordCommandLine(argc, argv);  // the JSON's provenance
   CLI::App app{"hemirad-bench: time the progressive radiosity solver", "hemirad-bench"};
   hemirad::BenchOptions options;
   hemirad::addBenchFlags(&app, options);

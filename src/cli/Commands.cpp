@@ -5,6 +5,7 @@
 #include "src/base/Error.h"
 #include "src/cli/CliDocs.h"
 #include "src/cli/Options.h"
+#include "src/output/Provenance.h"
 #include "src/solver/Methods.h"
 
 namespace hemirad {
@@ -28,7 +29,7 @@ void addScene(CLI::App* cmd, std::string& scene, LoadOptions& load, Discretisati
 
 Commands::Commands() {
   app.require_subcommand(1);
-  app.set_version_flag("--version", "hemirad 0.1.0");
+  app.set_version_flag("--version", versionString());
   addSolve();
 
   infoCmd = app.add_subcommand("info", "Describe a scene: objects, polygons, area, emitters, elements");

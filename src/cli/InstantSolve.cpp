@@ -12,6 +12,7 @@
 #include "src/base/Hash.h"
 #include "src/cli/Solve.h"
 #include "src/output/ImageFile.h"
+#include "src/output/Provenance.h"
 #include "src/scene/Camera.h"
 #include "src/scene/SceneLoader.h"
 
@@ -74,6 +75,7 @@ int runInstantSolve(const SolveOptions& o) {
   if (!o.image.empty()) writePng(o.image, render.image, exposureScale(render.image, o.exposure));
   nlohmann::json report = instantReport(o, *backend, tracer, stats, render);
   report["total_ms"] = msSince(start);
+  report["provenance"] = provenanceJson(provenance(backend->name(), backend->renderer()));
   if (!o.report.empty()) writeTextFile(o.report, report.dump(2) + "\n");
   fmt::print(stderr, "hemirad: {}: {} VPLs from {} paths, {:.2f} % of the power escaped, clamp bias {:.2f} %, {} "
              "shading in {:.0f} ms ({}, {})\n", o.scene, stats.vpls, stats.paths,

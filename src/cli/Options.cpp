@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "src/base/DataDir.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/Control.h"
 #include "src/solver/Methods.h"
@@ -56,6 +57,15 @@ const CLI::Validator kPixels = CLI::Range(1, 16384);
 
 const CLI::Validator kNone;  // any value the field parses
 
+// An existing file, or a relative path to one of the scenes shipped beside the binary
+// (base/DataDir.h), which it becomes: bench and experiment run from any directory.
+const CLI::Validator kScene(
+    [](std::string& v) {
+      v = findScene(v);
+      return CLI::ExistingFile(v);
+    },
+    "FILE");
+
 // "auto" (planned from the scene, src/solver/ShootingPlan.h; stored as autoValue) or an integer
 // in [lo, hi].
 CLI::Validator autoOr(int autoValue, int lo, int hi) {
@@ -87,7 +97,7 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--texel-size", "SIZE", "Element (texel) side in scene units", positive.description("SIZE > 0")},
       {"--elements", "N", "Choose the texel size for about N elements",
        CLI::Range(std::size_t(1), std::size_t(1) << 28)},
-      {"--scenes", "OBJ", "OBJ scenes", CLI::ExistingFile},
+      {"--scenes", "OBJ", "OBJ scenes; a relative path not found from here is read from the shipped scenes (docs/install.md)", kScene},
       // The solver.
       {"--method", "METHOD",
        "Radiosity method: progressive refinement; stochastic iteration (seed 000: --shots iterations of K random "

@@ -9,6 +9,7 @@
 #include "src/base/Error.h"
 #include "src/cli/Commands.h"
 #include "src/cli/Suggest.h"
+#include "src/output/Figure.h"
 #include "src/sweep/SlurmScript.h"
 #include "src/sweep/SweepMerge.h"
 #include "src/sweep/SweepTask.h"
@@ -58,6 +59,7 @@ int runSweepCommand(const SweepCommandOptions& o) {
                "then, when they are done: hemirad experiment merge {}\n", sweep.name, sweep.configurations.size(), dir, dir);
     return 0;
   }
+  if (!sweep.plotX.empty()) checkPlotting();  // the merge draws results.svg: fail before the solves
   const std::string dir = absoluteDir(o.outDir);
   writeSweepDir(dir, sweep);
   fmt::print(stderr, "hemirad sweep {}: {} configurations, {} at a time, into {}\n", sweep.name,

@@ -5,10 +5,12 @@
 #include "src/base/Error.h"
 #include "src/cli/Commands.h"
 #include "src/cli/Suggest.h"
+#include "src/output/Provenance.h"
 
 using namespace hemirad;
 
 int main(int argc, char** argv) {
+  recordCommandLine(argc, argv);  // every report's and figure's provenance
   auto commands = std::make_unique<Commands>();
   if (std::optional<int> exit = options::parse(commands->app, argc, argv)) return *exit;
   try {

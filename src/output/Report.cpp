@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-
 #include "src/base/AtomicFile.h"
+#include "src/output/Provenance.h"
 #include "src/base/Error.h"
 
 namespace hemirad {
@@ -45,6 +45,7 @@ nlohmann::json reportJson(const RunInfo& r) {
       {"radiosity_hash", fmt::format("{:016x}", r.radiosityHash)},
       {"convergence_history", r.convergenceHistory},
       {"objects", objectsJson(r.objects)},
+      {"provenance", provenanceJson(provenance(r.backend, r.renderer))},
   };
 }
 

@@ -10,7 +10,7 @@
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
-#include "src/output/SvgPlot.h"
+#include "src/output/Figure.h"
 
 namespace hemirad {
 
@@ -41,11 +41,12 @@ std::string readText(const std::string& path) {
 struct Row {
   std::vector<std::string> cells;  // id, values, metrics, status
   std::string problem;             // "" when done
+  std::string backend, renderer;   // the report's
 };
 
 Row mergeRow(const std::string& dir, const Sweep& sweep, const SweepConfiguration& c) {
   const std::string task = taskDir(dir, c);
-  Row row{{c.id}, {}};
+  Row row{{c.id}, {}, {}, {}};
   row.cells.insert(row.cells.end(), c.values.begin(), c.values.end());
   std::string status = "done";
   if (fs::exists(task + "/report.json")) {
@@ -58,6 +59,7 @@ Row mergeRow(const std::string& dir, const Sweep& sweep, const SweepConfiguratio
     if (report.value("scene", "") != c.args.at(1))
       fail("{}/report.json is of scene {}, not this sweep's {}", task, report.value("scene", "?"), c.args.at(1));
     for (const std::string& m : sweep.metrics) row.cells.push_back(reportField(report, m).value_or(""));
+    row.backend = report.value("backend", ""), row.renderer = report.value("renderer", "");
   } else {
     std::string error = readText(task + "/error");
     while (!error.empty() && error.back() == '\n') error.pop_back();
@@ -84,6 +86,16 @@ void addPoint(const Sweep& sweep, const std::vector<std::string>& cells, std::ve
   if (series == plot.end()) series = plot.insert(plot.end(), PlotSeries{label, {}, {}});
   series->x.push_back(std::strtod(cells[1 + xColumn].c_str(), nullptr));
   series->y.push_back(std::strtod(cells[yCell].c_str(), nullptr));
+}
+
+// The figure's provenance: this hemirad, the tasks' backend, and the sweep rather than the command
+// that merged it, so a merge after Slurm tasks and a local run give the same bytes.
+Provenance sweepProvenance(const Sweep& sweep, const SweepTable& t) {
+  Provenance p = provenance(t.backend, t.renderer);
+  p.commandLine = fmt::format("sweep {} ({} configurations, varying {}); the first: hemirad {}", sweep.name,
+                              sweep.configurations.size(), fmt::join(sweep.columns, ", "),
+                              fmt::join(sweep.configurations.front().args, " "));
+  return p;
 }
 
 }  // namespace
@@ -124,6 +136,7 @@ SweepTable mergeSweep(const std::string& dir, const Sweep& sweep) {
     addLine(row.cells);
     if (!row.problem.empty()) t.problems.push_back(row.problem);
     else if (!sweep.plotX.empty()) addPoint(sweep, row.cells, t.plot);
+    if (row.problem.empty() && t.backend.empty()) t.backend = row.backend, t.renderer = row.renderer;
   }
   if (!t.problems.empty()) {
     t.markdown += fmt::format("\n{} of {} configurations not done:\n\n", t.problems.size(), sweep.configurations.size());
@@ -134,13 +147,16 @@ SweepTable mergeSweep(const std::string& dir, const Sweep& sweep) {
 
 int runMerge(const std::string& dir) {
   const Sweep sweep = readSweepDir(dir);
+  if (!sweep.plotX.empty()) checkPlotting();
   const SweepTable t = mergeSweep(dir, sweep);
   writeTextFile(dir + "/results.csv", t.csv);
   writeTextFile(dir + "/results.md", t.markdown);
-  if (!sweep.plotX.empty())  // points with x or y <= 0 (or not numbers) are left out: log axes
-    writeLogLogSvg(dir + "/results.svg", {fmt::format("sweep {}: {} against {}", sweep.name, sweep.plotY, sweep.plotX),
-                                          sweep.plotX, sweep.plotY, true, 720, 480},
-                   t.plot);
+  if (!sweep.plotX.empty()) {  // points with x or y <= 0 (or not numbers) are left out: log axes
+    Figures figures(sweepProvenance(sweep, t));
+    figures.add(dir + "/results", LinePlot{fmt::format("sweep {}: {} against {}", sweep.name, sweep.plotY, sweep.plotX),
+                                           sweep.plotX, sweep.plotY, true, true, t.plot});
+    figures.write();
+  }
   fmt::print("{}", t.markdown);
   for (const std::string& p : t.problems) fmt::print(stderr, "hemirad sweep {}: {}\n", sweep.name, p);
   fmt::print(stderr, "hemirad sweep {}: {} of {} configurations done; table in {}/results.csv and results.md\n",

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "src/output/Plot.h"
+#include "src/output/Figure.h"
 #include "src/sweep/SweepSpec.h"
 
 namespace hemirad {
@@ -17,10 +17,11 @@ struct SweepTable {
   std::string csv, markdown;
   std::vector<std::string> problems;  // one line per missing or failed configuration
   std::vector<PlotSeries> plot;       // with the spec's plot: y against x, a series per other values
+  std::string backend, renderer;      // the first done task's (its report's provenance)
 };
 
 SweepTable mergeSweep(const std::string& dir, const Sweep& sweep);
-// Writes DIR/results.csv and DIR/results.md (and results.svg with a plot), prints the markdown and the problems; returns 0
+// Writes DIR/results.csv and DIR/results.md (and results.svg and .pdf with a plot), prints the markdown and the problems; returns 0
 // when every configuration is done, else 1.
 int runMerge(const std::string& dir);
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/base/AtomicFile.h"
+#include "src/output/Provenance.h"
 #include "src/scene/Camera.h"
 #include "src/validate/DenseSolver.h"
 #include "src/solver/ProgressiveSolver.h"
@@ -235,7 +236,8 @@ int runValidate(const ValidateOptions& o) {
     for (const auto& f : v.objectFormFactors) ffs.push_back({{"from", f.from}, {"to", f.to}, {"exact", f.exact}, {"gpu", f.gpu}});
     json report = {{"scene", o.scene},         {"backend", backend->name()}, {"renderer", backend->renderer()},
                    {"elements", v.elements},   {"shooters", v.shooters},     {"exact_ms", v.exactMs},
-                   {"total_ms", totalMs},      {"levels", levels},           {"object_form_factors", ffs}};
+                   {"total_ms", totalMs},      {"levels", levels},           {"object_form_factors", ffs},
+                   {"provenance", provenanceJson(provenance(backend->name(), backend->renderer()))}};
     if (o.solution) {
       json sol = json::array();
       for (const SolutionError& e : v.solution)
@@ -247,19 +249,33 @@ int runValidate(const ValidateOptions& o) {
   }
   if (!o.figures.empty()) {
     SolverState state(scene, atlas);
-    writeFigures(o.figures, scene, atlas, state, camera, o, v);
+    writeFigures(o.figures, scene, atlas, state, camera, o, v, provenance(backend->name(), backend->renderer()));
   }
   return 0;
 }
 
-std::string levelTable(const Validation& v) {
-  std::string out =
-      "| item buffer | L | item triangles | texel pairs | visibility agreement | false visible | false hidden | FF rel. "
-      "error median | p95 | max | GPU ms |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+std::vector<std::vector<std::string>> levelRows(const Validation& v) {
+  std::vector<std::vector<std::string>> rows = {{"item buffer", "L", "item triangles", "texel pairs",
+                                                 "visibility agreement", "false visible", "false hidden",
+                                                 "FF rel. error median", "p95", "max", "GPU ms"}};
   for (const LevelStats& s : v.levels)
-    out += fmt::format("| {} | {} | {} | {} | {:.5f} | {} | {} | {:.4f} | {:.4f} | {:.3g} | {:.0f} |\n", configName(s),
-                       s.itemSubdivision, s.itemTriangles, s.texelPairs, s.visibilityAgreement, s.falseVisible,
-                       s.falseHidden, s.ffRelErrorMedian, s.ffRelErrorP95, s.ffRelErrorMax, s.gpuMs);
+    rows.push_back({configName(s), fmt::format("{}", s.itemSubdivision), fmt::format("{}", s.itemTriangles),
+                    fmt::format("{}", s.texelPairs), fmt::format("{:.5f}", s.visibilityAgreement),
+                    fmt::format("{}", s.falseVisible), fmt::format("{}", s.falseHidden),
+                    fmt::format("{:.4f}", s.ffRelErrorMedian), fmt::format("{:.4f}", s.ffRelErrorP95),
+                    fmt::format("{:.3g}", s.ffRelErrorMax), fmt::format("{:.0f}", s.gpuMs)});
+  return rows;
+}
+
+std::string levelTable(const Validation& v) {
+  const std::vector<std::vector<std::string>> rows = levelRows(v);
+  std::string out;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    for (const std::string& cell : rows[r]) out += "| " + cell + " ";
+    out += "|\n";
+    if (r == 0)
+      for (std::size_t c = 0; c <= rows[r].size(); ++c) out += c == rows[r].size() ? "\n" : c == 0 ? "|---|" : "---|";
+  }
   return out;
 }
 

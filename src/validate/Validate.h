@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "gl/Backend.h"
+#include "src/output/Provenance.h"
 #include "src/scene/Camera.h"
 #include "src/validate/ExactReference.h"
 #include "src/validate/FormFactorProbe.h"
@@ -71,14 +72,20 @@ std::vector<std::size_t> chooseShooters(const Atlas& atlas, std::optional<std::s
 Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOptions& options);
 int runValidate(const ValidateOptions& options);
 
-// The per-level table (markdown), as printed and as written into the figures' summary.
+// The per-level table: its header and a row per level; as printed (markdown) and in index.html.
+std::vector<std::vector<std::string>> levelRows(const Validation& v);
 std::string levelTable(const Validation& v);
 std::string configName(const LevelStats& s);  // "stereographic 512^2"
 
-// validate --figures (src/validate/ValidateFigures.cpp): plots and CSV against L, heat maps on the atlas
-// and in the camera view for the figure shooter, and index.html linking them.
+// validate --figures (src/validate/ValidateFigures.cpp): plots (SVG, PDF) and CSV against L, heat
+// maps on the atlas and renders of the camera view for the figure shooter, and index.html showing
+// them. prepareFigureFolder fails before any work if the folder or matplotlib is missing.
 void prepareFigureFolder(const std::string& dir);
 void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas, const SolverState& state,
-                  const Camera& camera, const ValidateOptions& options, const Validation& v);
+                  const Camera& camera, const ValidateOptions& options, const Validation& v,
+                  const Provenance& provenance);
+// index.html (src/validate/ValidatePage.cpp): the run's provenance, the tables and the figures.
+std::string validationPage(const std::string& title, const Scene& scene, const Atlas& atlas,
+                           const ValidateOptions& options, const Validation& v, const Provenance& provenance);
 
 }  // namespace hemirad

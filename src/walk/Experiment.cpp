@@ -6,7 +6,8 @@
 #include "src/base/AtomicFile.h"
 #include "src/scene/Atlas.h"
 #include "src/base/Error.h"
-#include "src/output/Plot.h"
+#include "src/base/DataDir.h"
+#include "src/output/Figure.h"
 #include "src/scene/SceneLoader.h"
 
 namespace hemirad {
@@ -77,8 +78,9 @@ std::string summaryMarkdown(const std::vector<Run>& runs, const ExperimentOption
   return md;
 }
 
-void plotScene(const std::string& out, const std::string& scene, const std::vector<Run>& runs) {
-  std::vector<PlotSeries> error, visible;
+void plotScene(Figures& figures, const std::string& out, const std::string& scene, const std::vector<Run>& runs) {
+  LinePlot error{scene + ": image error along the path", "solver time (s)", "image error vs converged", false, true, {}};
+  LinePlot visible{scene + ": visible convergence along the path", "solver time (s)", "light in frame / converged", false, false, {}};
   for (const Run& run : runs) {
     if (run.scene != scene) continue;
     PlotSeries e{run.algorithm, {}, {}}, v{run.algorithm, {}, {}};
@@ -86,14 +88,11 @@ void plotScene(const std::string& out, const std::string& scene, const std::vect
       e.x.push_back(r.solveMs / 1e3), e.y.push_back(std::max(r.imageError, 1e-4));
       v.x.push_back(r.solveMs / 1e3), v.y.push_back(r.visibleConvergence);
     }
-    error.push_back(e);
-    visible.push_back(v);
+    error.series.push_back(e);
+    visible.series.push_back(v);
   }
-  writeLinePlot(out + "/" + scene + "_image_error.png",
-                {scene + ": image error along the path (log)", "solver time (s)", "image error vs converged", true}, error);
-  writeLinePlot(out + "/" + scene + "_visible_convergence.png",
-                {scene + ": visible convergence along the path", "solver time (s)", "light in frame / converged"},
-                visible);
+  figures.add(out + "/" + scene + "_image_error", error);
+  figures.add(out + "/" + scene + "_visible_convergence", visible);
 }
 
 }  // namespace
@@ -102,6 +101,8 @@ int runExperiment(ExperimentOptions o) {
   std::filesystem::create_directories(o.out);
   checkWritable(o.out + "/summary.md", "--out-dir");
   o.backend.kind = gl::parseBackendKind(o.backendName);
+  for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
+  checkPlotting();
   auto backend = gl::createBackend(o.backend);
   std::vector<Run> runs;
   std::vector<std::string> names;
@@ -139,7 +140,9 @@ int runExperiment(ExperimentOptions o) {
                : fmt::format("{},{},{},{},,\n", run.scene, run.elements, run.algorithm, e.name);
     }
   writeTextFile(o.out + "/events.csv", csv);
-  for (const std::string& name : names) plotScene(o.out, name, runs);
+  Figures figures(provenance(backend->name(), backend->renderer()));
+  for (const std::string& name : names) plotScene(figures, o.out, name, runs);
+  figures.write();
   const std::string md = summaryMarkdown(runs, o, fmt::format("{} ({})", backend->name(), backend->renderer()));
   writeTextFile(o.out + "/summary.md", md);
   fmt::print("{}", md);

@@ -10,7 +10,8 @@
 #include "src/base/AtomicFile.h"
 #include "src/base/Clock.h"
 #include "src/walk/SolutionError.h"
-#include "src/output/SvgPlot.h"
+#include "src/base/DataDir.h"
+#include "src/output/Figure.h"
 #include "src/scene/SceneLoader.h"
 
 namespace hemirad {
@@ -57,7 +58,10 @@ PlotSeries series(const std::string& label, const std::vector<Sample>& samples) 
 
 int runMethodComparison(MethodComparisonOptions o) {
   o.backend.kind = gl::parseBackendKind(o.backendName);
+  for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
+  checkPlotting();
   auto backend = gl::createBackend(o.backend);
+  Figures figures(provenance(backend->name(), backend->renderer()));
   std::filesystem::create_directories(o.out);
   std::string summary = fmt::format("# Error against solver time: progressive vs stochastic ({}, {})\n\n"
                                     "| scene | elements | method | shots / iterations | solver ms | RMS error / mean (non-emitters) |\n"
@@ -92,17 +96,18 @@ int runMethodComparison(MethodComparisonOptions o) {
     const std::string name = std::filesystem::path(path).stem().string();
     writeTextFile(o.out + "/" + name + "_methods.csv",
                   "method,shots,solver_ms,relative_rms_error\n" + csv("progressive", prSamples) + csv("stochastic", stSamples));
-    writeLogLogSvg(o.out + "/" + name + "_error_vs_time.svg",
-                   {fmt::format("{}: {} elements", name, atlas.elements), "solver time (ms)",
-                    "RMS error of luminance / mean (non-emitters)", true, 720, 480},
-                   {series("progressive (K = " + std::to_string(p.shootersPerPass) + ")", prSamples),
-                    series("stochastic (K = " + std::to_string(st.shooters) + ")", stSamples)});
+    figures.add(o.out + "/" + name + "_error_vs_time",
+                LinePlot{fmt::format("{}: {} elements", name, atlas.elements), "solver time (ms)",
+                         "RMS error of luminance / mean (non-emitters)", true, true,
+                         {series("progressive (K = " + std::to_string(p.shootersPerPass) + ")", prSamples),
+                          series("stochastic (K = " + std::to_string(st.shooters) + ")", stSamples)}});
     for (const auto& [method, samples] : {std::pair{"progressive", &prSamples}, {"stochastic", &stSamples}})
       summary += fmt::format("| {} | {} | {} | {} | {:.0f} | {:.4f} |\n", name, atlas.elements, method, samples->back().shots,
                              samples->back().solverMs, samples->back().error);
     fmt::print(stderr, "hemirad: {}: reference to {}, {} samples each, into {}\n", name, o.referenceConvergence,
                stSamples.size(), o.out);
   }
+  figures.write();
   writeTextFile(o.out + "/summary.md", summary);
   return 0;
 }

@@ -7,10 +7,10 @@
 #include <map>
 
 #include "src/base/AtomicFile.h"
+#include "src/output/Figure.h"
 #include "src/output/ImageFile.h"
 #include "src/output/InstantRenderer.h"
 #include "src/output/Renderer.h"
-#include "src/output/SvgPlot.h"
 #include "src/scene/Camera.h"
 #include "src/solver/ProgressiveSolver.h"
 
@@ -71,6 +71,7 @@ Image sideBySide(const Image& left, const Image& right) {
 
 int runVplError(VplErrorOptions o) {
   o.backend.kind = gl::parseBackendKind(o.backendName);
+  checkPlotting();
   Scene scene = loadScene(o.scene, o.load);
   validateSolvable(scene);
   const Camera camera = resolveCamera(scene, o.camera);
@@ -117,10 +118,11 @@ int runVplError(VplErrorOptions o) {
   }
   writeTextFile(o.out + "/" + name + "_vpl_error.csv", csv);
   writeTextFile(o.out + "/" + name + "_vpl_error.md", table);
-  writeLogLogSvg(o.out + "/" + name + "_vpl_error.svg",
-                 {fmt::format("{}: instant radiosity vs progressive ({} x {} px)", name, o.width, o.height), "VPLs",
-                  "mean relative luminance error per pixel", true, 720, 480},
-                 series);
+  Figures figures(provenance(backend->name(), backend->renderer()));
+  figures.add(o.out + "/" + name + "_vpl_error",
+              LinePlot{fmt::format("{}: instant radiosity vs progressive ({} x {} px)", name, o.width, o.height), "VPLs",
+                       "mean relative luminance error per pixel", true, true, series});
+  figures.write();
   if (!o.sideBySide.empty())
     writePng(o.sideBySide, sideBySide(last, reference), exposureScale(reference, 0));
   fmt::print("{}", table);

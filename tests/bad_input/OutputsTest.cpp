@@ -31,3 +31,23 @@ TEST_CASE("Bad input: an output path in a missing folder or naming a folder is o
   }
   CHECK(fs::is_empty(folder));
 }
+
+TEST_CASE("Bad input: figures without python3 or without matplotlib are one error before any work, nothing written",
+          "[cli][bad-input]") {
+  std::string obj = writeScene("noplot", kQuad + "f 1 2 3 4\n");
+  // A python3 that cannot import matplotlib: the system one without its site packages.
+  std::string bare = test::writeTempFile("bare-python3", "#!/bin/sh\nexec /usr/bin/python3 -I -S \"$@\"\n");
+  fs::permissions(bare, fs::perms::owner_all);
+  for (auto [python, message] : {std::pair<std::string, std::string>{"/no/such/python3", "cannot run /no/such/python3"},
+                                 {bare, "No module named 'matplotlib'"}}) {
+    const std::string figures = test::tempPath("noplot-figures"), report = test::tempPath("noplot.json");
+    test::Run run = test::hemirad("validate " + obj + " --levels 0 --report " + report + " --figures " + figures,
+                                  "HEMIRAD_PYTHON=" + python);
+    INFO(run.output);
+    CHECK(run.exitCode == 2);
+    CHECK(count(run.output, "hemirad: error:") == 1);
+    CHECK_THAT(run.output, Contains("python3-matplotlib") && Contains(message));
+    CHECK(!fs::exists(figures));
+    CHECK(!fs::exists(report));
+  }
+}

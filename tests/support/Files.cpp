@@ -24,6 +24,11 @@ std::string writeTempFile(const std::string& name, const std::string& text) {
 
 nlohmann::json readJson(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
 
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 int count(const std::string& text, const std::string& what) {
   int n = 0;
   for (std::size_t p = 0; (p = text.find(what, p)) != std::string::npos; p += what.size()) ++n;

@@ -15,6 +15,7 @@ std::string writeScene(const std::string& folder, const std::string& obj, const 
 // Writes `text` to the fresh temp path `name`; returns the path.
 std::string writeTempFile(const std::string& name, const std::string& text);
 nlohmann::json readJson(const std::string& path);  // a report, a bench or validation JSON
+std::string readText(const std::string& path);     // a whole file ("" if missing)
 
 int count(const std::string& text, const std::string& what);  // non-overlapping occurrences
 // The `hemirad: error:` lines in a run's output: bad input must give exactly one.

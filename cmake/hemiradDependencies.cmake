@@ -1,0 +1,18 @@
+# What hemirad's libraries link: found by the build (CMakeLists.txt) and, installed next to
+# hemiradConfig.cmake, by every find_package(hemirad) (Debian 12 packages, ci/setup).
+find_package(OpenMesh REQUIRED)
+find_package(tinyobjloader REQUIRED)
+find_package(TinyGLTF REQUIRED)
+find_package(OpenImageIO REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json REQUIRED)
+find_package(fmt REQUIRED)
+find_package(glm REQUIRED)
+find_package(Threads REQUIRED)
+find_package(CGAL REQUIRED)
+find_package(TBB REQUIRED)
+
+# Debian's OpenImageIO target names /usr/include/opencv4, which does not exist.
+get_target_property(_oiio_inc OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
+list(FILTER _oiio_inc EXCLUDE REGEX "opencv4")
+set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_inc}")
