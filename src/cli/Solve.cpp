@@ -140,7 +140,7 @@ int solveInBatches(const SolveOptions& o, const SolverState& state, Solver& solv
   return 0;
 }
 
-// The camera render (EXR, PNG), the atlas and the PLY the user asked for.
+// The camera render (EXR, PNG), the atlas, the PLY and the glTF the user asked for.
 void writeImages(const SolveOptions& o, const Scene& scene, const Atlas& atlas, const SolverState& state,
                  const Camera& camera, const std::vector<glm::vec4>& B) {
   Image view;
