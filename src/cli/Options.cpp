@@ -167,8 +167,8 @@ std::vector<Flag> deviceAndOutputFlags() {
       {"--atlas", "FILE", "Radiosity atlas, one texel per element (.exr)", none},
       {"--ply", "FILE", "Mesh with per-vertex radiosity (.ply)", none},
       {"--gltf", "FILE",
-       "Scene with its lightmap (TEXCOORD_1) as glTF 2.0 (.glb); writes FILE's stem .lightmap.exr (linear B) and "
-       ".lightmap.png (tone mapped, the texture the .glb uses) beside it",
+       "Scene with its lightmap (TEXCOORD_1) as glTF 2.0 (X.glb), with X.lightmap.exr (linear B) and X.lightmap.png "
+       "(tone mapped as --image: the texture X.glb uses) beside it",
        none},
       {"--report", "FILE", "Report (.json; - writes it to stdout)", none},
       {"--json", "FILE", "Results as JSON", none},

@@ -116,6 +116,13 @@ void addCamera(tinygltf::Model& m, const Scene& scene, const Camera& camera, dou
   cam.perspective.yfov = glm::radians(camera.fovY);
   cam.perspective.aspectRatio = aspect;
   cam.perspective.znear = nearPlane(camera, scene.boundsMin(), scene.boundsMax());
+  // tinygltf always writes zfar, and 0 (infinite) is not a valid one: twice the farthest corner.
+  double farthest = 0;
+  for (int k = 0; k < 8; ++k)
+    farthest = std::max(farthest, glm::length(glm::dvec3(k & 1 ? scene.boundsMax().x : scene.boundsMin().x,
+                                                          k & 2 ? scene.boundsMax().y : scene.boundsMin().y,
+                                                          k & 4 ? scene.boundsMax().z : scene.boundsMin().z) - camera.eye));
+  cam.perspective.zfar = std::max(2 * farthest, 2 * cam.perspective.znear);
   m.cameras.push_back(cam);
   const glm::dmat4 world = glm::inverse(glm::lookAt(camera.eye, camera.target, camera.up));
   const glm::dquat q = glm::normalize(glm::quat_cast(glm::dmat3(world)));

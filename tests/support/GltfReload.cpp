@@ -51,6 +51,7 @@ Camera camera(const tinygltf::Model& m, double& aspect) {
     if (n.camera < 0) continue;
     const tinygltf::Camera& c = m.cameras.at(std::size_t(n.camera));
     REQUIRE(c.type == "perspective");
+    REQUIRE((c.perspective.znear > 0 && c.perspective.zfar > c.perspective.znear));  // a valid glTF camera
     REQUIRE(n.translation.size() == 3);
     REQUIRE(n.rotation.size() == 4);
     const glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
