@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/base/AtomicFile.h"
+#include "src/base/Clock.h"
 #include "src/scene/Camera.h"
 #include "src/bench/Ceilings.h"
 #include "src/bench/StochasticBench.h"
@@ -35,9 +36,6 @@ struct BenchRow {
   std::uint64_t hash = 0;                // of the converged B: equal across runs on one backend
   std::vector<ObjectRadiosity> objects;  // for comparing backends (--compare)
 };
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // Runs to the stop rule; returns the wall time of the shots (setup excluded).
 double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveStatus& status) {

@@ -2,13 +2,16 @@
 // scenes of growing element counts, or (--method stochastic) the cost of one stochastic
 // iteration at given atlas sides, as a table and JSON. Speed lives here, never in tests.
 #pragma once
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
 #include "gl/Backend.h"
 #include "src/solver/Methods.h"
 #include "src/solver/VplTracer.h"
+
+namespace CLI {
+class App;  // CLI11 (src/cli/Options.h): parsed only where flags are declared
+}
 
 namespace hemirad {
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <map>
 
+#include "src/base/Clock.h"
 #include "src/output/InstantRenderer.h"
 #include "src/scene/Camera.h"
 #include "src/scene/SceneLoader.h"
@@ -17,8 +18,6 @@ namespace {
 const std::map<unsigned, std::pair<double, double>> kSeedFigure5{
     {128, {252.75, 280.88}}, {192, {176.94, 216.57}}, {256, {135.73, 186.81}}, {320, {108.24, 160.84}},
     {384, {92.91, 141.29}},  {448, {80.76, 131.34}},  {512, {68.73, 120.28}}};
-
-using Clock = std::chrono::steady_clock;
 
 // Frames per second over `frames` frames after one untimed (shaders compile at first use).
 double fps(gl::RenderBackend& backend, InstantRenderer& renderer, const Camera& camera, const BenchOptions& o,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "src/base/Clock.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/StochasticSolver.h"
 
@@ -21,8 +22,6 @@ struct StochasticRow {
   PassTimings split;          // ms per iteration, synchronised: select = pyramid + selection, gather = update
   std::uint64_t hash = 0;
 };
-
-using Clock = std::chrono::steady_clock;
 
 // The finest texel size whose atlas fits `side` texels a side (bisection on the size).
 Atlas atlasFilling(const Scene& scene, int side, int maxTexture) {

@@ -7,7 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "src/base/AtomicFile.h"
+#include "src/base/Clock.h"
 #include "src/base/Error.h"
+#include "src/base/Hash.h"
 #include "src/cli/Solve.h"
 #include "src/output/ImageFile.h"
 #include "src/scene/Camera.h"
@@ -16,9 +18,6 @@
 namespace hemirad {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // Everything checkable before the scene is read.
 void checkInstantInputs(const SolveOptions& o) {
@@ -51,13 +50,9 @@ nlohmann::json instantReport(const SolveOptions& o, const gl::RenderBackend& bac
 }  // namespace
 
 std::uint64_t imageHash(const Image& image) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (float f : image.rgb) {
-    std::uint32_t bits;
-    std::memcpy(&bits, &f, sizeof bits);
-    for (int k = 0; k < 4; ++k) h = (h ^ ((bits >> (8 * k)) & 0xFFu)) * 1099511628211ull;
-  }
-  return h;
+  Fnv1a h;
+  h.add(image.rgb.data(), image.rgb.size() * sizeof(float));
+  return h.value();
 }
 
 int runInstantSolve(const SolveOptions& o) {

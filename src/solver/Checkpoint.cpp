@@ -11,6 +11,7 @@
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
+#include "src/base/Hash.h"
 
 namespace hemirad {
 
@@ -19,18 +20,6 @@ namespace {
 // Layout: magic, then length-prefixed sections (identity JSON, B, dB, solver state), then an
 // FNV-1a 64 checksum of everything before it, so truncation or corruption is detected.
 constexpr char kMagic[] = "hemirad checkpoint 1\n";
-
-struct Fnv {
-  std::uint64_t h = 1469598103934665603ull;
-  void add(const void* data, std::size_t n) {
-    auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 1099511628211ull;
-  }
-  template <class T>
-  void add(const T& v) {
-    add(&v, sizeof v);
-  }
-};
 
 void appendSection(std::string& out, const void* data, std::uint64_t bytes) {
   out.append(reinterpret_cast<const char*>(&bytes), sizeof bytes);
@@ -56,13 +45,13 @@ void writeAll(int fd, const char* data, std::size_t n, const std::string& path) 
 }  // namespace
 
 std::uint64_t sceneHash(const Scene& scene) {
-  Fnv f;
+  Fnv1a f;
   for (const ScenePolygon& p : scene.polygons()) {
     for (const glm::dvec3& v : p.vertices) f.add(v);
     f.add(p.material), f.add(p.object);
   }
   for (const Material& m : scene.materials) f.add(m.reflectance), f.add(m.emission);
-  return f.h;
+  return f.value();
 }
 
 void writeCheckpoint(const std::string& path, const Checkpoint& c) {
@@ -73,9 +62,10 @@ void writeCheckpoint(const std::string& path, const Checkpoint& c) {
   appendSection(bytes, c.radiosity.data(), c.radiosity.size() * sizeof(glm::vec4));
   appendSection(bytes, c.deltaB.data(), c.deltaB.size() * sizeof(glm::vec4));
   appendSection(bytes, c.solver.data(), c.solver.size());
-  Fnv f;
+  Fnv1a f;
   f.add(bytes.data(), bytes.size());
-  bytes.append(reinterpret_cast<const char*>(&f.h), sizeof f.h);
+  const std::uint64_t sum = f.value();
+  bytes.append(reinterpret_cast<const char*>(&sum), sizeof sum);
   writeAtomically(path, [&](const std::string& tmp) {
     int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) fail("{}: cannot write: {}", path, std::strerror(errno));
@@ -103,9 +93,9 @@ Checkpoint readCheckpoint(const std::string& path) {
     fail("--resume {}: not a hemirad checkpoint", path);
   std::uint64_t stored;
   std::memcpy(&stored, bytes.data() + bytes.size() - sizeof stored, sizeof stored);
-  Fnv f;
+  Fnv1a f;
   f.add(bytes.data(), bytes.size() - sizeof stored);
-  if (f.h != stored) fail("--resume {}: checkpoint is truncated or corrupt (checksum mismatch)", path);
+  if (f.value() != stored) fail("--resume {}: checkpoint is truncated or corrupt (checksum mismatch)", path);
 
   std::size_t at = magic, end = bytes.size() - sizeof stored;
   auto section = [&](auto& out) {

@@ -2,21 +2,13 @@
 
 #include "gl/Shader.h"
 #include "gl/State.h"
-#include "src/scene/Atlas.h"
 #include "src/base/Error.h"
+#include "src/scene/Atlas.h"
 #include "src/scene/ItemMesh.h"
 
 #include <cmath>
 
 namespace hemirad {
-
-Projection parseProjection(const std::string& name) {
-  if (name == "stereographic" || name == "hemisphere") return Projection::Stereographic;
-  if (name == "hemicube") return Projection::Hemicube;
-  throw InputError("--hemisphere must be stereographic or hemicube, not '" + name + "'");
-}
-
-std::string projectionName(Projection p) { return p == Projection::Hemicube ? "hemicube" : "stereographic"; }
 
 namespace {
 int faceSide(int resolution, Projection p) {

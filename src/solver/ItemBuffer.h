@@ -9,14 +9,9 @@
 #include "gl/Objects.h"
 #include "gl/Shader.h"
 #include "src/scene/Scene.h"
+#include "src/solver/Projection.h"
 
 namespace hemirad {
-
-// Seed 003's single-pass stereographic projection of the hemisphere, or the classic five-face
-// hemicube (Cohen & Greenberg 1985) as the baseline.
-enum class Projection { Stereographic, Hemicube };
-Projection parseProjection(const std::string& name);  // "stereographic" or "hemicube"
-std::string projectionName(Projection p);
 
 class ItemBuffer {
  public:

@@ -8,7 +8,7 @@
 
 #include "src/scene/Atlas.h"
 #include "src/scene/Scene.h"
-#include "src/solver/ItemBuffer.h"
+#include "src/solver/Projection.h"
 
 namespace hemirad {
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "src/base/Error.h"
+#include "src/base/Hash.h"
 
 namespace hemirad {
 
@@ -97,16 +98,10 @@ std::vector<ObjectRadiosity> objectRadiosity(const Scene& scene, const Atlas& at
 }
 
 std::uint64_t radiosityHash(const Atlas& atlas, const std::vector<glm::vec4>& B) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (size_t t = 0; t < B.size(); ++t) {
-    if (atlas.polygonOf[t] == kNoPolygon) continue;
-    for (int c = 0; c < 3; ++c) {
-      std::uint32_t bits;
-      std::memcpy(&bits, &B[t][c], 4);
-      for (int k = 0; k < 4; ++k) h = (h ^ ((bits >> (8 * k)) & 0xFFu)) * 1099511628211ull;
-    }
-  }
-  return h;
+  Fnv1a h;
+  for (size_t t = 0; t < B.size(); ++t)
+    if (atlas.polygonOf[t] != kNoPolygon) h.add(&B[t][0], 3 * sizeof(float));
+  return h.value();
 }
 
 }  // namespace hemirad

@@ -7,6 +7,7 @@
 #include <memory>
 #include <utility>
 
+#include "src/base/Clock.h"
 #include "src/scene/Atlas.h"
 #include "src/output/Image.h"
 #include "src/output/Renderer.h"
@@ -14,9 +15,6 @@
 namespace hemirad {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 bool sameView(const ViewerControls& a, const ViewerControls& b) {
   return a.camera == b.camera && a.width == b.width && a.height == b.height;

@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "src/base/AtomicFile.h"
+#include "src/base/Clock.h"
 #include "src/walk/SolutionError.h"
 #include "src/output/SvgPlot.h"
 #include "src/scene/SceneLoader.h"
@@ -20,8 +21,6 @@ struct Sample {
   unsigned shots = 0;  // progressive shots or stochastic iterations
   double solverMs = 0, error = 0;
 };
-
-using Clock = std::chrono::steady_clock;
 
 // Batches of doubling size until `done`; only advance() and the wait for the GPU are timed.
 std::vector<Sample> trace(gl::RenderBackend& backend, const SolverState& state, Solver& solver,
