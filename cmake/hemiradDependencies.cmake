@@ -11,6 +11,8 @@ find_package(glm REQUIRED)
 find_package(Threads REQUIRED)
 find_package(CGAL REQUIRED)
 find_package(TBB REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)  # stb_rect_pack (libstb-dev)
 
 # Debian's OpenImageIO target names /usr/include/opencv4, which does not exist.
 get_target_property(_oiio_inc OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)

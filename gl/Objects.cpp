@@ -96,6 +96,10 @@ void Texture::read(GLenum format, GLenum type, std::size_t bytes, void* out) con
   glGetTextureImage(id_, 0, format, type, static_cast<GLsizei>(bytes), out);
 }
 void Texture::bindUnit(GLuint unit) const { glBindTextureUnit(unit, id_); }
+void Texture::linearFiltering() {
+  glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
 void Texture::bindImage(GLuint unit, GLenum access) const {
   glBindImageTexture(unit, id_, 0, GL_FALSE, 0, access, format_);
 }

@@ -76,6 +76,8 @@ class Texture : public Handle<deleteTexture> {
   void upload(GLenum format, GLenum type, const void* data);
   void read(GLenum format, GLenum type, std::size_t bytes, void* out) const;
   void bindUnit(GLuint unit) const;
+  // Bilinear filtering (GL_LINEAR, edges clamped): how engines sample a lightmap.
+  void linearFiltering();
   void bindImage(GLuint unit, GLenum access) const;
   void clear(float value);          // a GL_R32F texture
   void clear(std::uint32_t value);  // a GL_R32UI texture

@@ -103,7 +103,7 @@ TEST_CASE("Solve refuses atlas outputs of --method instant and unknown methods, 
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/empty.obj") << "# nothing\n";
   expectOneError("solve " + dir + "/empty.obj --method instant --ply " + dir + "/x.ply",
-                 "--atlas and --ply need radiosity per element; --method instant shades camera pixels only");
+                 "--atlas, --ply and --gltf need radiosity per element; --method instant shades camera pixels only");
   expectOneError("solve " + dir + "/empty.obj --method gauss-seidel", "--method");
 }
 

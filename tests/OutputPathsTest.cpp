@@ -72,6 +72,7 @@ TEST_CASE("Bad output names are refused before the scene is read, naming the fla
         {"--out", "x.tiff", "must end in .exr or .png"},
         {"--atlas", "a.png", "must end in .exr"},
         {"--ply", "m.obj", "must end in .ply"},
+        {"--gltf", "s.gltf", "'.gltf' is not a format it writes; the file name must end in .glb"},
         {"--report", "r.txt", "must end in .json (or be - for stdout)"}}) {
     test::Run run = test::hemirad("solve " + broken + " --quiet " + flag + " " + dir + "/" + name);
     INFO(run.output);

@@ -84,7 +84,7 @@ void Commands::addSolve() {
 
 void Commands::addSolveOutputs(CLI::App* s) {
   for (auto [flag, path] : {std::pair{"--out", &solve.out}, {"--image", &solve.image}, {"--atlas", &solve.atlas},
-                            {"--ply", &solve.ply}, {"--report", &solve.report}})
+                            {"--ply", &solve.ply}, {"--gltf", &solve.gltf}, {"--report", &solve.report}})
     add(s, flag, *path);
   CLI::Option* checkpoint = add(s, "--checkpoint", solve.checkpoint);
   add(s, "--checkpoint-every", solve.checkpointEvery)->needs(checkpoint);

@@ -22,8 +22,8 @@ namespace {
 
 // Everything checkable before the scene is read.
 void checkInstantInputs(const SolveOptions& o) {
-  if (!o.atlas.empty() || !o.ply.empty())
-    throw InputError("--atlas and --ply need radiosity per element; --method instant shades camera pixels only "
+  if (!o.atlas.empty() || !o.ply.empty() || !o.gltf.empty())
+    throw InputError("--atlas, --ply and --gltf need radiosity per element; --method instant shades camera pixels only "
                      "(--out, --image)");
   if (!o.checkpoint.empty() || !o.resume.empty()) throw InputError("--method instant has nothing to checkpoint");
   if (!o.cameraPath.empty()) throw InputError("--camera-path is for --method progressive, not instant");

@@ -176,6 +176,10 @@ std::vector<Flag> deviceAndOutputFlags() {
       {"--image", "FILE", "Tone-mapped camera render (.png)", none},
       {"--atlas", "FILE", "Radiosity atlas, one texel per element (.exr)", none},
       {"--ply", "FILE", "Mesh with per-vertex radiosity (.ply)", none},
+      {"--gltf", "FILE",
+       "Scene with its lightmap (TEXCOORD_1) as glTF 2.0 (X.glb), with X.lightmap.exr (linear B) and X.lightmap.png "
+       "(tone mapped as --image: the texture X.glb uses) beside it",
+       none},
       {"--report", "FILE", "Report (.json; - writes it to stdout)", none},
       {"--json", "FILE", "Results as JSON", none},
       {"--markdown", "FILE", "The printed tables as markdown (e.g. into docs/bench)", none},

@@ -13,6 +13,7 @@
 #include "src/solver/Checkpoint.h"
 #include "src/base/Interrupt.h"
 #include "src/base/Error.h"
+#include "src/output/GltfWriter.h"
 #include "src/output/ImageFile.h"
 #include "src/output/PlyWriter.h"
 #include "src/output/Progress.h"
@@ -94,9 +95,14 @@ void checkSolveInputs(const SolveOptions& o) {
       if (!exts.empty()) checkExtension(path, flag, exts, std::string(flag) == "--report");
       checkWritable(path, flag);
     }
-  if (o.out.empty() && o.image.empty() && o.atlas.empty() && o.ply.empty() && o.report.empty() &&
+  if (!o.gltf.empty()) {
+    checkExtension(o.gltf, "--gltf", {".glb"});
+    const GltfPaths files = gltfPaths(o.gltf);
+    for (const std::string& path : {files.glb, files.exr, files.png}) checkWritable(path, "--gltf");
+  }
+  if (o.out.empty() && o.image.empty() && o.atlas.empty() && o.ply.empty() && o.gltf.empty() && o.report.empty() &&
       o.checkpoint.empty() && o.cameraPath.empty())
-    warn("no output flag (--out, --image, --atlas, --ply, --report, --checkpoint): only the summary line will "
+    warn("no output flag (--out, --image, --atlas, --ply, --gltf, --report, --checkpoint): only the summary line will "
          "show the result");
   if ((!o.checkpoint.empty() || !o.resume.empty()) && o.progressive.algorithm == Algorithm::Perspective)
     throw InputError("--checkpoint and --resume do not support --algorithm perspective (its stored radiosity table is "
@@ -134,12 +140,12 @@ int solveInBatches(const SolveOptions& o, const SolverState& state, Solver& solv
   return 0;
 }
 
-// The camera render (EXR, PNG), the atlas and the PLY the user asked for.
+// The camera render (EXR, PNG), the atlas, the PLY and the glTF the user asked for.
 void writeImages(const SolveOptions& o, const Scene& scene, const Atlas& atlas, const SolverState& state,
                  const Camera& camera, const std::vector<glm::vec4>& B) {
   Image view;
   double scale = 1;
-  if (!o.out.empty() || !o.image.empty() || !o.ply.empty()) {
+  if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
     Renderer renderer(state);
     // The ambient term stands in for light not yet shot (dB); stochastic iteration keeps its
     // iterate there instead, and its running mean already holds every bounce.
@@ -152,6 +158,14 @@ void writeImages(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
   if (!o.image.empty()) writePng(o.image, view, scale);
   if (!o.atlas.empty()) writeExr(o.atlas, atlasImage(atlas, B));
   if (!o.ply.empty()) writePly(o.ply, scene, atlas, B, scale);
+  if (!o.gltf.empty()) {
+    const GltfPaths files = gltfPaths(o.gltf);
+    const Lightmap map = writeGltf(files, scene, atlas, B, camera, double(o.width) / o.height, scale);
+    fmt::print(stderr, "hemirad: {}: {} x {} lightmap, {} elements, texel use {:.1f} % (charts with {}-texel gutters "
+               "{:.1f} %) ({}, {})\n",
+               o.gltf, map.width, map.height, map.elements, 100 * map.texelUse(), map.gutter, 100 * map.packing(),
+               files.exr, files.png);
+  }
 }
 
 // The report's description of the run; the item buffer and shoot level are the ones the

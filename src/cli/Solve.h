@@ -28,6 +28,7 @@ struct SolveOptions {
   double exposure = 0;  // stops over the automatic exposure
   bool ambient = true;  // seed 004's ambient term on the camera images (never on B, report, atlas, PLY)
   std::string out, image, atlas, ply, report;
+  std::string gltf;  // OUT.glb, with OUT.lightmap.exr and OUT.lightmap.png beside it
   std::string checkpoint;           // written every checkpointEvery shots, at the end and on SIGINT/SIGTERM
   unsigned checkpointEvery = 0;     // 0: only at the end and on a signal
   std::string resume;               // a checkpoint to continue from

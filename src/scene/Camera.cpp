@@ -1,5 +1,6 @@
 #include "src/scene/Camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,11 @@
 #include "src/base/Error.h"
 
 namespace hemirad {
+
+double nearPlane(const Camera& camera, const glm::dvec3& boundsMin, const glm::dvec3& boundsMax) {
+  const glm::dvec3 outside = glm::max(glm::max(boundsMin - camera.eye, camera.eye - boundsMax), glm::dvec3(0.0));
+  return std::max(0.5 * glm::length(outside), 1e-6 * glm::length(boundsMax - boundsMin));
+}
 
 glm::mat4 Camera::viewProjection(double aspect, double near) const {
   glm::dmat4 view = glm::lookAt(eye, target, up);

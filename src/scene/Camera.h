@@ -18,6 +18,11 @@ struct Camera {
   glm::mat4 viewProjection(double aspect, double near) const;
 };
 
+// A near plane in front of everything within the bounds: half the eye's distance to them (any
+// point in view is at least its distance x cos(half the diagonal field of view) away, so fields of
+// view up to 120 degrees), or a millionth of their size when the eye is inside them.
+double nearPlane(const Camera& camera, const glm::dvec3& boundsMin, const glm::dvec3& boundsMax);
+
 // Parses `text` over `base` (keys not given keep base's values); throws InputError naming `what`.
 Camera parseCamera(const std::string& text, const Camera& base, const std::string& what);
 // Frames the scene's bounds from the front (+z side), looking down -z.

@@ -44,11 +44,7 @@ void CameraMesh::draw() const {
 }
 
 glm::mat4 CameraMesh::viewProjection(const Camera& camera, double aspect) const {
-  // Any point in view is at least (its distance) x cos(half the diagonal field of view) in front
-  // of the eye; half the distance to the bounds allows fields of view up to 120 degrees.
-  const glm::dvec3 outside = glm::max(glm::max(boundsMin_ - camera.eye, camera.eye - boundsMax_), glm::dvec3(0.0));
-  const double near = std::max(0.5 * glm::length(outside), 1e-6 * glm::length(boundsMax_ - boundsMin_));
-  return camera.viewProjection(aspect, near);
+  return camera.viewProjection(aspect, nearPlane(camera, boundsMin_, boundsMax_));
 }
 
 }  // namespace hemirad

@@ -22,7 +22,7 @@ TEST_CASE("Bad input: an output path in a missing folder or naming a folder is o
   fs::create_directories(folder);
   for (auto [flag, path] : {std::pair<std::string, std::string>{"--out", "/no/such/folder/x.exr"},
                             {"--image", file + "/x.png"}, {"--report", folder}, {"--atlas", "/no/such/a.exr"},
-                            {"--ply", folder}}) {
+                            {"--ply", folder}, {"--gltf", "/no/such/folder/x.glb"}}) {
     test::Run run = test::hemirad(solve(obj) + " " + flag + " " + path);
     INFO(run.output);
     CHECK(run.exitCode == 2);
@@ -50,4 +50,17 @@ TEST_CASE("Bad input: figures without python3 or without matplotlib are one erro
     CHECK(!fs::exists(figures));
     CHECK(!fs::exists(report));
   }
+}
+
+TEST_CASE("Bad input: --gltf whose lightmap beside it cannot be written is one error naming it, and nothing is written",
+          "[cli][bad-input]") {
+  std::string obj = writeScene("gltf-sidecar", kQuad + "f 1 2 3 4\n");
+  std::string dir = test::tempPath("gltf-sidecar-out");
+  fs::create_directories(dir + "/x.lightmap.png");  // a folder where the PNG must go
+  test::Run run = test::hemirad(solve(obj) + " --gltf " + dir + "/x.glb");
+  INFO(run.output);
+  CHECK(run.exitCode == 2);
+  CHECK(count(run.output, "hemirad: error:") == 1);
+  CHECK_THAT(run.output, Contains("--gltf " + dir + "/x.lightmap.png"));
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);  // the folder only
 }

@@ -1,0 +1,208 @@
+#include "src/output/GltfWriter.h"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "src/base/AtomicFile.h"
+#include "src/base/Error.h"
+#include "src/output/ImageFile.h"
+
+namespace hemirad {
+
+namespace {
+
+constexpr int kFloat = TINYGLTF_COMPONENT_TYPE_FLOAT, kUint = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+
+// One primitive's vertex streams (a material's polygons, fanned).
+struct Streams {
+  std::vector<float> position, normal, uv0, uv1;
+  std::vector<std::uint32_t> indices;
+};
+
+// Appends `bytes` as a buffer view of buffer 0 and an accessor over it; returns the accessor.
+int addAccessor(tinygltf::Model& m, const void* data, std::size_t bytes, int componentType, int type, std::size_t count,
+                int target) {
+  auto& buffer = m.buffers[0].data;
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = buffer.size();
+  view.byteLength = bytes;
+  view.target = target;
+  buffer.insert(buffer.end(), static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + bytes);
+  m.bufferViews.push_back(view);
+  tinygltf::Accessor a;
+  a.bufferView = int(m.bufferViews.size()) - 1;
+  a.componentType = componentType;
+  a.type = type;
+  a.count = count;
+  m.accessors.push_back(a);
+  return int(m.accessors.size()) - 1;
+}
+
+int addFloats(tinygltf::Model& m, const std::vector<float>& v, int components, int type) {
+  return addAccessor(m, v.data(), v.size() * sizeof(float), kFloat, type, v.size() / std::size_t(components),
+                     TINYGLTF_TARGET_ARRAY_BUFFER);
+}
+
+// Polygon `id` fanned (a b c, a c d, ...) into `s`: its own vertices, flat normal, TEXCOORD_0
+// its plane coordinates in scene units (for material textures), TEXCOORD_1 the lightmap's.
+void addPolygon(Streams& s, const Scene& scene, const Atlas& atlas, const Lightmap& map, int id) {
+  const ScenePolygon& p = scene.polygons()[std::size_t(id)];
+  const Chart& chart = atlas.charts[std::size_t(id)];
+  const auto first = std::uint32_t(s.position.size() / 3);
+  for (const glm::dvec3& v : p.vertices) {
+    const glm::dvec2 plane = chart.frame.project(v), uv = map.uv(atlas, id, atlas.atlasCoord(id, v));
+    s.position.insert(s.position.end(), {float(v.x), float(v.y), float(v.z)});
+    s.normal.insert(s.normal.end(), {float(p.normal.x), float(p.normal.y), float(p.normal.z)});
+    s.uv0.insert(s.uv0.end(), {float(plane.x), float(plane.y)});
+    s.uv1.insert(s.uv1.end(), {float(uv.x), float(uv.y)});
+  }
+  for (std::uint32_t k = 1; k + 1 < p.vertices.size(); ++k) s.indices.insert(s.indices.end(), {first, first + k, first + k + 1});
+}
+
+tinygltf::Primitive primitive(tinygltf::Model& m, const Streams& s, int material) {
+  tinygltf::Primitive prim;
+  prim.mode = TINYGLTF_MODE_TRIANGLES;
+  prim.material = material;
+  const int position = addFloats(m, s.position, 3, TINYGLTF_TYPE_VEC3);
+  for (int c = 0; c < 3; ++c) {  // POSITION needs its bounds
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t i = std::size_t(c); i < s.position.size(); i += 3) lo = std::min(lo, double(s.position[i])), hi = std::max(hi, double(s.position[i]));
+    m.accessors[std::size_t(position)].minValues.push_back(lo);
+    m.accessors[std::size_t(position)].maxValues.push_back(hi);
+  }
+  prim.attributes["POSITION"] = position;
+  prim.attributes["NORMAL"] = addFloats(m, s.normal, 3, TINYGLTF_TYPE_VEC3);
+  prim.attributes["TEXCOORD_0"] = addFloats(m, s.uv0, 2, TINYGLTF_TYPE_VEC2);
+  prim.attributes["TEXCOORD_1"] = addFloats(m, s.uv1, 2, TINYGLTF_TYPE_VEC2);
+  prim.indices = addAccessor(m, s.indices.data(), s.indices.size() * sizeof(std::uint32_t), kUint, TINYGLTF_TYPE_SCALAR,
+                             s.indices.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  return prim;
+}
+
+tinygltf::Value rgb(const glm::dvec3& c) { return tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(c.x), tinygltf::Value(c.y), tinygltf::Value(c.z)}); }
+
+// Black base colour, the lightmap as emission through TEXCOORD_1; the physical material in extras.
+tinygltf::Material material(const Material& mat, const GltfPaths& paths, double exposureScale) {
+  tinygltf::Material out;
+  out.name = mat.name;
+  out.pbrMetallicRoughness.baseColorFactor = {0, 0, 0, 1};
+  out.pbrMetallicRoughness.metallicFactor = 0;
+  out.pbrMetallicRoughness.roughnessFactor = 1;
+  out.emissiveFactor = {1, 1, 1};
+  out.emissiveTexture.index = 0;
+  out.emissiveTexture.texCoord = 1;
+  out.doubleSided = true;  // hemirad's faces are seen, and lit, from both sides
+  tinygltf::Value::Object hemirad{{"reflectance", rgb(mat.reflectance)},
+                                  {"emission", rgb(mat.emission)},
+                                  {"lightmap_hdr", tinygltf::Value(std::filesystem::path(paths.exr).filename().string())},
+                                  {"lightmap_texcoord", tinygltf::Value(1)},
+                                  {"png_exposure_scale", tinygltf::Value(exposureScale)}};
+  out.extras = tinygltf::Value(tinygltf::Value::Object{{"hemirad", tinygltf::Value(hemirad)}});
+  return out;
+}
+
+// The solve's camera as a node looking down its -z (glTF's convention, as glm::lookAt's).
+void addCamera(tinygltf::Model& m, const Scene& scene, const Camera& camera, double aspect) {
+  tinygltf::Camera cam;
+  cam.type = "perspective";
+  cam.perspective.yfov = glm::radians(camera.fovY);
+  cam.perspective.aspectRatio = aspect;
+  cam.perspective.znear = nearPlane(camera, scene.boundsMin(), scene.boundsMax());
+  // tinygltf always writes zfar, and 0 (infinite) is not a valid one: twice the farthest corner.
+  double farthest = 0;
+  for (int k = 0; k < 8; ++k)
+    farthest = std::max(farthest, glm::length(glm::dvec3(k & 1 ? scene.boundsMax().x : scene.boundsMin().x,
+                                                          k & 2 ? scene.boundsMax().y : scene.boundsMin().y,
+                                                          k & 4 ? scene.boundsMax().z : scene.boundsMin().z) - camera.eye));
+  cam.perspective.zfar = std::max(2 * farthest, 2 * cam.perspective.znear);
+  m.cameras.push_back(cam);
+  const glm::dmat4 world = glm::inverse(glm::lookAt(camera.eye, camera.target, camera.up));
+  const glm::dquat q = glm::normalize(glm::quat_cast(glm::dmat3(world)));
+  tinygltf::Node node;
+  node.name = "camera";
+  node.camera = 0;
+  node.translation = {camera.eye.x, camera.eye.y, camera.eye.z};
+  node.rotation = {q.x, q.y, q.z, q.w};
+  m.nodes.push_back(node);
+}
+
+// Keep each image's uri as given: the images are written by hemirad, not by tinygltf.
+bool keepUri(const std::string*, const std::string*, const tinygltf::Image*, bool, std::string*, void*) { return false; }
+
+tinygltf::Model model(const GltfPaths& paths, const Scene& scene, const Atlas& atlas, const Lightmap& map,
+                      const Camera& camera, double aspect, double exposureScale) {
+  tinygltf::Model m;
+  m.asset.version = "2.0";
+  m.asset.generator = "hemirad";
+  m.buffers.resize(1);
+  tinygltf::Mesh mesh;
+  mesh.name = "scene";
+  for (std::size_t mat = 0; mat < scene.materials.size(); ++mat) {
+    Streams s;
+    for (std::size_t id = 0; id < scene.polygons().size(); ++id)
+      if (scene.polygons()[id].material == int(mat)) addPolygon(s, scene, atlas, map, int(id));
+    if (s.indices.empty()) continue;
+    m.materials.push_back(material(scene.materials[mat], paths, exposureScale));
+    mesh.primitives.push_back(primitive(m, s, int(m.materials.size()) - 1));
+  }
+  m.meshes.push_back(mesh);
+  tinygltf::Image image;
+  image.uri = std::filesystem::path(paths.png).filename().string();
+  image.mimeType = "image/png";
+  m.images.push_back(image);
+  tinygltf::Sampler sampler;  // bilinear, no mipmaps: a 2-texel gutter guards level 0 only
+  sampler.magFilter = sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+  sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+  m.samplers.push_back(sampler);
+  tinygltf::Texture texture;
+  texture.source = 0;
+  texture.sampler = 0;
+  m.textures.push_back(texture);
+  tinygltf::Node node;
+  node.name = "scene";
+  node.mesh = 0;
+  m.nodes.push_back(node);
+  addCamera(m, scene, camera, aspect);
+  tinygltf::Scene root;
+  root.nodes = {0, 1};
+  m.scenes.push_back(root);
+  m.defaultScene = 0;
+  return m;
+}
+
+}  // namespace
+
+GltfPaths gltfPaths(const std::string& glb) {
+  std::string base = glb;
+  std::string ext = std::filesystem::path(glb).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext == ".glb") base.resize(glb.size() - 4);
+  return {glb, base + ".lightmap.exr", base + ".lightmap.png"};
+}
+
+Lightmap writeGltf(const GltfPaths& paths, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
+                   const Camera& camera, double aspect, double exposureScale) {
+  Lightmap map = buildLightmap(atlas, B);
+  Image image{map.width, map.height, std::vector<float>(map.rgb.size() * 3)};
+  std::memcpy(image.rgb.data(), map.rgb.data(), image.rgb.size() * sizeof(float));
+  writeExr(paths.exr, image);
+  writePng(paths.png, image, exposureScale);
+  const tinygltf::Model m = model(paths, scene, atlas, map, camera, aspect, exposureScale);
+  writeAtomically(paths.glb, [&](const std::string& tmp) {
+    tinygltf::TinyGLTF writer;
+    writer.SetImageWriter(keepUri, nullptr);
+    std::ofstream out(tmp, std::ios::binary);
+    if (!writer.WriteGltfSceneToStream(&m, out, false, true) || !out.flush()) fail("{}: cannot write the glTF", paths.glb);
+  });
+  return map;
+}
+
+}  // namespace hemirad

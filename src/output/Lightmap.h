@@ -1,0 +1,41 @@
+// The solution as a lightmap an engine can sample: the atlas's charts repacked tightly with
+// stb_rect_pack, each inside a gutter of dilated texels (the nearest element's B copied
+// outward), so plain bilinear sampling (GL_LINEAR) at a polygon's edge reads its own values,
+// never black nor another chart. One lightmap texel per element, as in the atlas; rows run
+// from the image's top, as glTF's v does.
+#pragma once
+#include <cstddef>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "src/scene/Atlas.h"
+
+namespace hemirad {
+
+struct LightmapOptions {
+  int gutter = 2;       // texels around every chart
+  bool dilate = true;   // false: gutters and empty cells stay black (the old atlas; for comparisons)
+};
+
+struct Lightmap {
+  int width = 0, height = 0, gutter = 0;
+  std::vector<glm::ivec2> origins;  // per polygon: the lightmap texel of its chart's cell (0, 0)
+  std::vector<glm::vec3> rgb;       // per texel, row-major from row 0
+  std::size_t elements = 0;
+  std::size_t chartTexels = 0;  // the charts with their gutters
+  // Elements over texels: what of the lightmap holds radiosity. Gutters bound it: a w x h chart
+  // fills at most w h / ((w + 4) (h + 4)) of its place.
+  double texelUse() const { return width && height ? double(elements) / (double(width) * height) : 0; }
+  // The packer's part: charts with gutters over texels.
+  double packing() const { return width && height ? double(chartTexels) / (double(width) * height) : 0; }
+  // Continuous lightmap coordinates (texels) of atlas coordinate `atlasCoord` on polygon `polygon`.
+  glm::dvec2 coord(const Atlas& atlas, int polygon, glm::dvec2 atlasCoord) const;
+  // The same as TEXCOORD_1: divided by the size.
+  glm::dvec2 uv(const Atlas& atlas, int polygon, glm::dvec2 atlasCoord) const;
+};
+
+// Lays the atlas's charts out anew (deterministically: the same atlas gives the same layout)
+// and fills it from the per-atlas-texel radiosity B.
+Lightmap buildLightmap(const Atlas& atlas, const std::vector<glm::vec4>& B, const LightmapOptions& options = {});
+
+}  // namespace hemirad
