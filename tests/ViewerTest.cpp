@@ -69,6 +69,27 @@ TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-cou
   }
 }
 
+TEST_CASE("The viewer shows instant radiosity as solve --method instant renders it, interleaved", "[viewer][instant]") {
+  const std::string shown = test::tempPath("viewer-instant.png"), solved = test::tempPath("solved-instant.png");
+  const std::string common = kScene + " --method instant --vpls 64 --shadow-res 32 --interleave 2 --width 64 --height 48";
+  test::Run view = viewUnderXvfb(common + " --frame-count 3 --screenshot " + shown);
+  INFO(view.output);
+  REQUIRE(view.exitCode == 0);
+  CHECK_THAT(view.output, Contains("hemirad view: instant, 64 VPLs, deferred shading, interleave 2, 3 frames"));
+  test::Run solve = test::hemirad("solve " + common + " --supersample 1 --quiet --image " + solved);
+  INFO(solve.output);
+  REQUIRE(solve.exitCode == 0);
+  const Image a = readImage(shown), b = readImage(solved);
+  REQUIRE(a.rgb.size() == b.rgb.size());
+  CHECK(test::meanPixel(a) > 0.2);
+  float maxDiff = 0;
+  for (size_t i = 0; i < a.rgb.size(); ++i) maxDiff = std::max(maxDiff, std::abs(a.rgb[i] - b.rgb[i]));
+  CHECK(maxDiff <= 1.0f / 255 + 1e-6f);  // as the progressive view: the same render and tone map
+  test::Run refused = viewUnderXvfb(kScene + " --interleave 2 --frame-count 1");
+  CHECK(refused.exitCode == 2);
+  CHECK_THAT(refused.output, Contains("--interleave is for --method instant"));
+}
+
 TEST_CASE("Without a display the viewer fails with one error line", "[viewer]") {
   const std::string shot = test::tempPath("never.png");
   test::Run run = test::shell("env -u DISPLAY -u WAYLAND_DISPLAY \"$HEMIRAD\" view " + kScene +
