@@ -10,5 +10,5 @@ OUT=${OUT:-.}
 # The exact path is slow: fewer frames a row.
 $B --method instant --vpls 128,256,384,512 --interleave 1 --width 1024 --height 1024 --shots 16 \
   --json "$OUT/instant-h200-exact.json" --markdown "$OUT/instant-h200-exact.md"
-$B --method instant --vpls 128,256,384,512 --interleave 4,8 --width 1024 --height 1024 --shots 256 \
+$B --method instant --vpls 128,256,384,512 --interleave 4,8 --width 1024 --height 1024 --shots 128 \
   --json "$OUT/instant-h200-interleaved.json" --markdown "$OUT/instant-h200-interleaved.md"
