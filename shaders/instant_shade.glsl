@@ -3,6 +3,9 @@
 // Lambertian point emitter of flux Phi: irradiance Phi cos_v cos_x / (pi r^2). The geometry term
 // cos_v cos_x / r^2 is clamped at maxGeometry (the 1/r^2 singularity); what the clamp removes goes
 // to alpha, so the image itself carries the clamp's bias.
+// Interleaved sampling (Keller & Heidrich 2001): with interleaveM = n^2 > 1 a pixel sums only
+// its subset of the VPLs (index = subset mod M), times M; instant_filter.comp then averages the
+// n x n tile, which holds every subset once. M = 1 is the exact sum over every VPL.
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "vpl.glsl"
@@ -10,6 +13,7 @@
 
 layout(binding = 4) uniform usampler2DArray shadowId;
 uniform uint vplFirst, vplCount;
+uniform uint interleaveM;  // n^2 VPL subsets
 uniform float maxGeometry;
 uniform float farDistance;
 uniform bool addEmission;  // the first batch adds E
@@ -27,11 +31,14 @@ float vplVisibility(int i, uint v, vec3 x, vec3 local, uint polygon) {
   return blocksSegment(q, vpl[v].position.xyz, x, 4e-7 * farDistance) ? 0.0 : 1.0;
 }
 
-vec4 shadeBatch(vec3 x, uint polygon) {
+// The VPL subset of pixel p under n x n interleaving: its place in the tile.
+uint pixelSubset(uvec2 p, uint n) { return p.x % n + n * (p.y % n); }
+
+vec4 shadeBatch(vec3 x, uint polygon, uint subset) {
   vec3 n = polygons[polygon].normal.xyz, rho = polygons[polygon].reflectance.rgb;
   vec3 sum = vec3(0.0);
   float removed = 0.0;
-  for (uint k = 0u; k < vplCount; ++k) {
+  for (uint k = (subset + interleaveM - vplFirst % interleaveM) % interleaveM; k < vplCount; k += interleaveM) {
     uint v = vplFirst + k;
     vec3 flux = vpl[v].flux.rgb;
     vec3 d = vpl[v].position.xyz - x;
@@ -45,7 +52,8 @@ vec4 shadeBatch(vec3 x, uint polygon) {
     sum += flux * clamped;
     removed += luminance(rho * flux) * (g - clamped);
   }
-  vec3 b = rho * sum / PI;
+  float m = float(interleaveM);
+  vec3 b = rho * (sum * m) / PI;
   if (addEmission) b += polygons[polygon].emission.rgb;
-  return vec4(b, removed / PI);
+  return vec4(b, removed * m / PI);
 }

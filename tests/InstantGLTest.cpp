@@ -119,11 +119,16 @@ TEST_CASE("Instant radiosity in a closed box of emitters reaches E (1 + rho + ..
   CHECK(std::abs(mean - expected) < 4 * standardError);
 }
 
-TEST_CASE("Forward and deferred instant radiosity shading give the same image", "[gl][instant]") {
+TEST_CASE("Forward and deferred instant radiosity shading give the same image, interleaved or not", "[gl][instant]") {
   test::backend();
   const Scene& scene = cornell();
   const Camera camera = resolveCamera(scene, std::nullopt);
-  InstantSettings s = small(300);  // two batches: the second adds onto the first
+  // Two batches: the second adds onto the first. Interleave 3: 40 is no multiple of 3 (padded
+  // blocks) and 9 subsets do not divide the 256-VPL batch (a subset continues across batches).
+  const int interleave = GENERATE(1, 3);
+  INFO("interleave " << interleave);
+  InstantSettings s = small(300);
+  s.interleave = interleave;
   VplTracer tracer(scene, s);
   tracer.trace();
   InstantRenderer renderer(scene, tracer, s);
@@ -161,15 +166,18 @@ TEST_CASE("Instant radiosity: one seed gives bitwise the same image, another see
   test::backend();
   const Scene& scene = cornell();
   const Camera camera = resolveCamera(scene, std::nullopt);
-  auto hash = [&](unsigned seed) {
+  auto hash = [&](unsigned seed, int interleave) {
     InstantSettings s = small(64, seed);
+    s.interleave = interleave;
     VplTracer tracer(scene, s);
     tracer.trace();
     return imageHash(InstantRenderer(scene, tracer, s).render(camera, 24, 24, 1, Shading::Forward).image);
   };
-  const std::uint64_t first = hash(9);
-  CHECK(hash(9) == first);
-  CHECK(hash(10) != first);
+  const std::uint64_t first = hash(9, 1), interleaved = hash(9, 4);
+  CHECK(hash(9, 1) == first);
+  CHECK(hash(10, 1) != first);
+  CHECK(hash(9, 4) == interleaved);
+  CHECK(interleaved != first);
 }
 
 TEST_CASE("solve --method instant writes the camera images and a report, and refuses atlas outputs", "[instant][cli]") {
@@ -189,12 +197,99 @@ TEST_CASE("solve --method instant writes the camera images and a report, and ref
   CHECK(r["escaped_fraction"].get<double>() >= 0);
   CHECK(r["clamp_bias"].get<double>() >= 0);
   for (const std::string& bad :
-       std::vector<std::string>{"--atlas " + test::tempPath("a.exr"), "--vpls 0", "--shots 4", "--shading sideways"}) {
+       std::vector<std::string>{"--atlas " + test::tempPath("a.exr"), "--vpls 0", "--shots 4", "--shading sideways", "--interleave 0"}) {
     const test::Run refused = test::hemirad("solve " + scene + " --method instant --quiet " + bad);
     INFO(bad << ": " << refused.output);
     CHECK(refused.exitCode == 2);
     CHECK(refused.output.rfind("hemirad: error:", 0) == 0);
   }
-  const test::Run notInstant = test::hemirad("solve " + scene + " --vpls 64 --quiet");
-  CHECK(notInstant.exitCode == 2);
+  for (const std::string flag : {"--vpls 64", "--interleave 2"}) {
+    const test::Run notInstant = test::hemirad("solve " + scene + " " + flag + " --quiet");
+    CHECK(notInstant.exitCode == 2);
+  }
+}
+
+TEST_CASE("Interleaved instant radiosity under a smooth light stays within the analytic bound of the exact image, and never mixes polygons", "[gl][instant]") {
+  test::backend();
+  // A floor of two polygons (rho 0.3 | 0.7, seam at x = 0) lit by a 1 x 1 emitter facing down
+  // at height h = 1, direct light only (every VPL on the emitter), no clamp: each VPL's term
+  // h^2 / r^4 has |grad log| <= 2 / h, so over the filter's window (pixels at most D apart) a
+  // subset's sum changes by at most a factor e^(2D/h), and the interleaved pixel (each subset
+  // from one pixel of the window) lies within e^(2D/h) - 1 of the exact one.
+  const int interleave = GENERATE(2, 4);
+  Scene scene;
+  const int dark = test::material(scene, 0.3, 0), light = test::material(scene, 0.7, 0),
+            lamp = test::material(scene, 0, 1), o = scene.addObject("floor");
+  const glm::dvec3 X(1, 0, 0), Y(0, 1, 0);
+  scene.addPolygon(test::rectangle({-2, -2, 0}, X, Y, 2, 4), dark, o);
+  scene.addPolygon(test::rectangle({0, -2, 0}, X, Y, 2, 4), light, o);
+  scene.addPolygon(test::rectangle({-0.5, -0.5, 1}, Y, X, 1, 1), lamp, o);
+  const double height = 0.9, fov = 60;  // the camera below the lamp, looking down: floor only
+  const Camera camera = parseCamera("eye=0.1,0,0.9 target=0.1,0,0 up=0,1,0 fov=60", Camera{}, "test");
+  const int size = 48;
+  auto render = [&](int n, std::vector<std::uint32_t>* ids = nullptr) {
+    InstantSettings s = small(64);
+    s.bounces = 0, s.clamp = 0, s.interleave = n;
+    VplTracer tracer(scene, s);
+    tracer.trace();
+    InstantRenderer renderer(scene, tracer, s);
+    Image image = renderer.render(camera, size, size, 1, Shading::Deferred).image;
+    if (ids) *ids = renderer.visiblePolygons();
+    return image;
+  };
+  std::vector<std::uint32_t> ids;
+  const Image exact = render(1, &ids), interleaved = render(interleave);
+  const double pixel = 2 * height * std::tan(glm::radians(fov / 2)) / size;  // on the floor
+  const int lo = -(interleave / 2), hi = lo + interleave - 1;                 // the filter's window
+  const double D = pixel * std::sqrt(2.0) * std::max(-lo, hi), bound = std::exp(2 * D / 1.0) - 1;
+  const double rho[2] = {0.3, 0.7};
+  double worst = 0, seamError = 0, mixingError = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const std::size_t i = std::size_t(y) * size + x;
+      REQUIRE(ids[i] < 2);  // the floor fills the view
+      bool whole = true;  // the window lies on the pixel's own polygon
+      double window = 0, mixed = 0;  // its pixels, and their reflectance summed
+      for (int dy = lo; dy <= hi; ++dy)
+        for (int dx = lo; dx <= hi; ++dx) {
+          const int u = x + dx, v = y - dy;  // the window is in GL rows (bottom-up), ids top-down
+          const bool inside = u >= 0 && v >= 0 && u < size && v < size;
+          whole = whole && inside && ids[std::size_t(v) * size + u] == ids[i];
+          if (inside) window += 1, mixed += rho[ids[std::size_t(v) * size + u]];
+        }
+      const double e = luminance(glm::dvec3(exact.rgb[3 * i], exact.rgb[3 * i + 1], exact.rgb[3 * i + 2]));
+      const double f = luminance(glm::dvec3(interleaved.rgb[3 * i], interleaved.rgb[3 * i + 1], interleaved.rgb[3 * i + 2]));
+      const double relative = std::abs(f - e) / e;
+      if (whole) {
+        worst = std::max(worst, relative);
+      } else if (mixed / window != rho[ids[i]]) {  // at the seam: a filter blind to polygons errs by this
+        seamError += relative, mixingError += std::abs(mixed / window / rho[ids[i]] - 1);
+      }
+    }
+  INFO("interleave " << interleave << ": worst " << worst << ", bound " << bound << ", seam " << seamError
+                     << " against mixing's " << mixingError);
+  CHECK(worst > 0);  // interleaving did change the image
+  CHECK(worst <= bound + 1e-5);
+  // At the seam the filter averages fewer subsets (noisier) but never the other polygon: its
+  // error stays under half of what averaging the window's reflectances would make.
+  REQUIRE(mixingError > 0);
+  CHECK(seamError < 0.5 * mixingError);
+}
+
+TEST_CASE("A camera move reuses the shadow maps: the image equals a fresh renderer's", "[gl][instant]") {
+  test::backend();
+  const Scene& scene = cornell();
+  const Camera first = resolveCamera(scene, std::nullopt);
+  Camera second = first;
+  second.eye += 0.2 * (first.target - first.eye);
+  second.target.x += 0.05 * glm::length(first.target - first.eye);
+  InstantSettings s = small(64);
+  s.interleave = 2;
+  VplTracer tracer(scene, s);
+  tracer.trace();
+  InstantRenderer moving(scene, tracer, s), fresh(scene, tracer, s);
+  const std::uint64_t before = imageHash(moving.render(first, 40, 30, 1, Shading::Deferred).image);
+  const Image moved = moving.render(second, 32, 24, 1, Shading::Deferred).image;
+  CHECK(imageHash(moved) != before);
+  CHECK(imageHash(moved) == imageHash(fresh.render(second, 32, 24, 1, Shading::Deferred).image));
 }

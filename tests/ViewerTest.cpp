@@ -25,28 +25,41 @@ test::Run viewUnderXvfb(const std::string& args) {
                      "xvfb-run -a -s '-screen 0 1024x768x24' \"$HEMIRAD\" view " + args);
 }
 
+// The viewer's last frame after `view ARGS` and solve's --image after `solve ARGS`; the viewer's
+// summary line must contain `summary`.
+std::pair<Image, Image> viewAndSolve(const std::string& viewArgs, const std::string& solveArgs, const std::string& summary,
+                                     const std::string& name) {
+  const std::string shown = test::tempPath(name + "-view.png"), solved = test::tempPath(name + "-solve.png");
+  test::Run view = viewUnderXvfb(viewArgs + " --screenshot " + shown);
+  INFO(view.output);
+  REQUIRE(view.exitCode == 0);
+  CHECK_THAT(view.output, Contains(summary));
+  test::Run solve = test::hemirad("solve " + solveArgs + " --supersample 1 --quiet --image " + solved);
+  INFO(solve.output);
+  REQUIRE(solve.exitCode == 0);
+  return {readImage(shown), readImage(solved)};
+}
+
+float maxDifference(const Image& a, const Image& b) {
+  REQUIRE(a.rgb.size() == b.rgb.size());
+  float maxDiff = 0;
+  for (size_t i = 0; i < a.rgb.size(); ++i) maxDiff = std::max(maxDiff, std::abs(a.rgb[i] - b.rgb[i]));
+  return maxDiff;
+}
+
 }  // namespace
 
 TEST_CASE("The viewer under Xvfb shows the same picture as solve after the same shots", "[viewer]") {
-  const std::string shown = test::tempPath("viewer.png"), solved = test::tempPath("solved.png");
   const std::string common = kScene + " --elements 1500 --width 160 --height 120";
-  test::Run view = viewUnderXvfb(common + " --frame-shots 8 --frame-count 5 --screenshot " + shown);
-  INFO(view.output);
-  REQUIRE(view.exitCode == 0);
-  CHECK_THAT(view.output, Contains("hemirad view: progressive, 40 shots"));
-  test::Run solve = test::hemirad("solve " + common + " --shots 40 --supersample 1 --quiet --image " + solved);
-  INFO(solve.output);
-  REQUIRE(solve.exitCode == 0);
-
-  const Image a = readImage(shown), b = readImage(solved);
+  const auto [a, b] = viewAndSolve(common + " --frame-shots 8 --frame-count 5", common + " --shots 40",
+                                   "hemirad view: progressive, 40 shots", "progressive");
   REQUIRE(a.width == 160);
   REQUIRE(a.height == 120);
   REQUIRE(b.width == a.width);
   REQUIRE(b.height == a.height);
   // Exposure maps the 95th-percentile lit luminance to 1: a lit box averages far above black.
   CHECK(test::meanPixel(a) > 0.2);
-  float maxDiff = 0;
-  for (size_t i = 0; i < a.rgb.size(); ++i) maxDiff = std::max(maxDiff, std::abs(a.rgb[i] - b.rgb[i]));
+  const float maxDiff = maxDifference(a, b);
   // The same passes, renderer and tone map; glDrawPixels then glReadPixels of 8-bit values on an
   // 8-bit window change nothing (measured: 0). One LSB is left for a GLX path that dithers.
   CHECK(maxDiff <= 1.0f / 255 + 1e-6f);
@@ -67,6 +80,18 @@ TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-cou
     CHECK(m[4] == "3");
     CHECK(test::meanPixel(readImage(shot)) > 0.2);
   }
+}
+
+TEST_CASE("The viewer shows instant radiosity as solve --method instant renders it, interleaved", "[viewer][instant]") {
+  const std::string common = kScene + " --method instant --vpls 64 --shadow-res 32 --interleave 2 --width 64 --height 48";
+  const auto [a, b] = viewAndSolve(common + " --frame-count 3", common,
+                                   "hemirad view: instant, 64 VPLs, deferred shading, interleave 2, 3 frames", "instant");
+  CHECK(test::meanPixel(a) > 0.2);
+  CHECK(maxDifference(a, b) <= 1.0f / 255 + 1e-6f);  // as the progressive view: the same render and tone map
+  // Refused before any window opens: no display needed.
+  test::Run refused = test::shell("env -u DISPLAY \"$HEMIRAD\" view " + kScene + " --interleave 2");
+  CHECK(refused.exitCode == 2);
+  CHECK_THAT(refused.output, Contains("--interleave is for --method instant"));
 }
 
 TEST_CASE("Without a display the viewer fails with one error line", "[viewer]") {

@@ -173,6 +173,7 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   add(cmd, "--vpl-clamp", o.instant.clamp);
   add(cmd, "--shadow-res", o.instant.shadowResolution);
   add(cmd, "--seed", o.instant.seed);
+  add(cmd, "--interleave", o.interleave, "1,4 (--method instant: a row each)");
   add(cmd, "--width", o.width, "1024 (--method instant: frame size)");
   add(cmd, "--height", o.height, "1024 (--method instant: frame size)");
 }

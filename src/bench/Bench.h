@@ -35,6 +35,7 @@ struct BenchOptions {
   std::vector<unsigned> vpls{128, 256, 512};  // instant: a row per VPL count
   InstantSettings instant;                    // instant: seed, bounces, clamp, shadow maps
   int width = 1024, height = 1024;            // instant: the frame's size
+  std::vector<int> interleave{1, 4};          // instant: a row per interleaving tile side
 };
 
 // The bench flags, shared by `hemirad bench` and the lean `hemirad-bench`.

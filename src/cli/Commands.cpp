@@ -66,7 +66,8 @@ void Commands::addSolve() {
   stochasticOnly = {seed, add(s, "--transport", transport)};
   InstantSettings& i = solve.instant;
   instantOnly = {add(s, "--vpls", i.vpls), add(s, "--vpl-bounces", i.bounces), add(s, "--vpl-clamp", i.clamp),
-                 add(s, "--shadow-res", i.shadowResolution), add(s, "--shading", shading)};
+                 add(s, "--shadow-res", i.shadowResolution), add(s, "--shading", shading),
+                 add(s, "--interleave", i.interleave)};
   addSwitch(s, "--sync-timings", syncTimings);
   add(s, "--backend", solveBackend);
   add(s, "--gpu", solve.backend.gpu);
@@ -141,6 +142,24 @@ void Commands::addView() {
   add(w, "--shooters-per-pass", p.shootersPerPass);
   add(w, "--converge", p.stop.targetConvergence);
   add(w, "--shots", p.stop.maxShots);
+  add(w, "--method", view.method);
+  InstantSettings& i = view.instant;
+  i.seed = StochasticSettings{}.seed;  // as solve's
+  viewInstantOnly = {add(w, "--vpls", i.vpls), add(w, "--vpl-bounces", i.bounces), add(w, "--vpl-clamp", i.clamp),
+                     add(w, "--shadow-res", i.shadowResolution), add(w, "--shading", viewShading),
+                     add(w, "--interleave", i.interleave), add(w, "--seed", i.seed)};
+}
+
+// view runs progressive refinement (and its algorithms) or instant radiosity, whose flags it
+// refuses with the other.
+int Commands::runView() {
+  if (view.method == Method::Stochastic) throw InputError("view runs --method progressive or instant, not stochastic");
+  if (view.method != Method::Instant)
+    for (const CLI::Option* o : viewInstantOnly)
+      if (*o) throw InputError(o->get_name() + " is for --method instant");
+  view.instant.itemSubdivision = view.progressive.itemSubdivision;
+  view.shading = viewShading == "forward" ? Shading::Forward : Shading::Deferred;
+  return hemirad::runView(view);
 }
 
 void Commands::addExperiment() {
@@ -318,7 +337,7 @@ int Commands::run() {
   if (*solveCmd) return runSolve();
   if (*infoCmd) return runInfo(info);
   if (*benchCmd) return runBench(bench);
-  if (*viewCmd) return runView(view);
+  if (*viewCmd) return runView();
   if (*experimentCmd) return runExperiment();
   if (*comparisonCmd) return runMethodComparison(comparison);
   if (*vplErrorCmd) return runVplError(vplError);

@@ -44,6 +44,7 @@ struct Commands {
   void addWalkthrough(CLI::App* s);
   void addValidate();
   void addView();
+  int runView();
   void addExperiment();
   void addSweep(CLI::App* x);
   int runExperiment();
@@ -55,7 +56,7 @@ struct Commands {
   void settleInstant();
 
   // Flags read into text, turned into the options after parsing.
-  std::string shading = "deferred", solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa", transport = "iterate",
+  std::string shading = "deferred", viewShading = "deferred", solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa", transport = "iterate",
               shooters = "16";
   std::vector<std::string> validateProjections{"stereographic"};
   bool quiet = false, syncTimings = false;
@@ -68,6 +69,7 @@ struct Commands {
   std::vector<CLI::Option*> stochasticOnly;   // flags that mean nothing to --method progressive
   std::vector<CLI::Option*> progressiveOnly;  // flags that mean nothing to --method stochastic
   std::vector<CLI::Option*> instantOnly;      // flags only --method instant takes
+  std::vector<CLI::Option*> viewInstantOnly;  // the same for view
   std::vector<CLI::Option*> seed004Only;      // experiment's flags that mean nothing to a SPEC sweep
 };
 

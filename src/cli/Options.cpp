@@ -147,6 +147,10 @@ std::vector<Flag> sceneAndSolverFlags() {
        CLI::Range(8, 2048)},
       {"--shading", "PATH", "Instant radiosity: forward (a scene pass per VPL batch) or deferred (G-buffer)",
        names({"forward", "deferred"})},
+      {"--interleave", "N",
+       "Instant radiosity: interleaved sampling, each pixel of an N x N tile shades with 1/N^2 of the VPLs, then a "
+       "filter over the tile's pixels of the same polygon (1: every VPL at every pixel, exact)",
+       CLI::Range(1, 16)},
       {"--sync-timings", "", "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)",
        none},
   };

@@ -16,48 +16,40 @@ const char* shadingName(Shading s) { return s == Shading::Forward ? "forward" : 
 
 InstantRenderer::InstantRenderer(const Scene& scene, const VplTracer& tracer, const InstantSettings& settings)
     : tracer_(tracer),
+      shadows_(scene, tracer, settings),
       vpls_(settings.vpls),
-      shadowSize_(settings.shadowResolution),
-      far_(float(2.0 * tracer.sceneDiagonal() + 1e-6)),
-      maxGeometry_(float(1.0 / std::pow(settings.clamp * tracer.sceneDiagonal(), 2.0))),
+      interleave_(std::max(1, settings.interleave)),
       boundsMin_(scene.boundsMin()),
       boundsMax_(scene.boundsMax()),
-      shadow_(gl::renderProgram("vpl_shadow.vert", "vpl_shadow.frag")),
       forward_(gl::renderProgram("instant.vert", "instant_forward.frag")),
       gbuffer_(gl::renderProgram("instant.vert", "instant_gbuffer.frag")),
-      deferred_(gl::renderProgram("instant_deferred.vert", "instant_deferred.frag")),
-      shadowId_(GL_R32UI, shadowSize_, shadowSize_, kBatch),
-      shadowDepth_(GL_DEPTH_COMPONENT32F, shadowSize_, shadowSize_, kBatch) {
-  if (settings.clamp <= 0) maxGeometry_ = 3.4e38f;  // no clamp
-  const IndexedItemMesh item = indexItemMesh(buildItemMesh(scene, settings.itemSubdivision));
-  itemIndexCount_ = item.indices.size();
-  itemVertices_ = gl::Buffer(std::span<const ItemVertex>(item.vertices));
-  itemIndices_ = gl::Buffer(std::span<const std::uint32_t>(item.indices));
-  itemVao_.vertexBuffer(itemVertices_, sizeof(ItemVertex));
-  itemVao_.floatAttribute(0, 3, offsetof(ItemVertex, x));
-  itemVao_.uintAttribute(1, offsetof(ItemVertex, polygon));
-  itemVao_.indexBuffer(itemIndices_);
+      deferred_(gl::computeProgram("instant_deferred.comp")),
+      filter_(gl::computeProgram("instant_filter.comp")) {
+  const float far = float(2.0 * tracer.sceneDiagonal() + 1e-6);
+  float maxGeometry = float(1.0 / std::pow(settings.clamp * tracer.sceneDiagonal(), 2.0));
+  if (settings.clamp <= 0) maxGeometry = 3.4e38f;  // no clamp
   const std::vector<ItemVertex> triangles = buildItemMesh(scene, 0);  // the polygons, fanned
   sceneVertexCount_ = triangles.size();
   sceneVertices_ = gl::Buffer(std::span<const ItemVertex>(triangles));
   sceneVao_.vertexBuffer(sceneVertices_, sizeof(ItemVertex));
   sceneVao_.floatAttribute(0, 3, offsetof(ItemVertex, x));
   sceneVao_.uintAttribute(1, offsetof(ItemVertex, polygon));
-  shadowTarget_.attach(GL_COLOR_ATTACHMENT0, shadowId_);
-  shadowTarget_.attach(GL_DEPTH_ATTACHMENT, shadowDepth_);
-  shadowTarget_.checkComplete("VPL shadow maps");
-  shadow_.set("farDistance", far_);
-  shadow_.set("faceSize", float(shadowSize_));
+  const unsigned n = unsigned(interleave_);
   for (const gl::Program* p : {&forward_, &deferred_}) {
-    p->set("maxGeometry", maxGeometry_);
-    p->set("farDistance", far_);
+    p->set("maxGeometry", maxGeometry);
+    p->set("farDistance", far);
+    p->set("interleaveM", n * n);
   }
+  for (const gl::Program* p : {&forward_, &deferred_, &filter_}) p->set("interleave", n);
 }
 
 void InstantRenderer::resize(int width, int height) {
   if (width == width_ && height == height_) return;
   width_ = width, height_ = height;
+  sub_ = (glm::ivec2(width, height) + interleave_ - 1) / interleave_;
   color_ = gl::Texture(GL_RGBA32F, width, height);
+  shaded_ = gl::Texture(GL_RGBA32F, sub_.x * interleave_, sub_.y * interleave_);
+  if (interleave_ > 1) filtered_ = gl::Texture(GL_RGBA32F, width, height);
   position_ = gl::Texture(GL_RGBA32F, width, height);
   depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
   colorTarget_ = gl::Framebuffer();
@@ -68,85 +60,85 @@ void InstantRenderer::resize(int width, int height) {
   gTarget_.attach(GL_COLOR_ATTACHMENT0, position_);
   gTarget_.attach(GL_DEPTH_ATTACHMENT, depth_);
   gTarget_.checkComplete("G-buffer");
+  for (const gl::Program* p : {&deferred_, &filter_}) p->set("sub", sub_.x, sub_.y);
 }
 
-// Shadow maps of VPLs [first, first + count) into layers [0, count).
-void InstantRenderer::shadowBatch(unsigned first, unsigned count) {
-  gl::RasterState{.width = shadowSize_, .height = shadowSize_, .clipDistance0 = true}.apply();
-  tracer_.bind();
-  shadow_.set("vplFirst", first);
-  shadow_.use();
-  itemVao_.bind();
-  shadowTarget_.clearColor(0xFFFFFFFFu);
-  shadowTarget_.clearDepth(1.0f);
-  shadowTarget_.bind();
-  gl::drawIndexedTriangles(itemIndexCount_, int(count));
+// The visible point and polygon per pixel; forward shading's depth pre-pass too (the same
+// vertex shader, invariant: its later passes meet these depths exactly).
+void InstantRenderer::gBuffer(const glm::mat4& vp) {
+  gTarget_.clearColor(0, 0, 0, 0);
+  gTarget_.clearDepth(0.0f);
+  gTarget_.bind();
+  gl::cameraView(width_, height_).apply();
+  gbuffer_.set("viewProjection", &vp[0][0]);
+  gbuffer_.use();
+  sceneVao_.bind();
+  gl::drawTriangles(sceneVertexCount_);
+  gl::barrier(gl::Barrier::TextureFetch);
 }
 
-void InstantRenderer::setBatch(const gl::Program& program, unsigned first, unsigned count) const {
+void InstantRenderer::setBatch(const gl::Program& program, unsigned batch) const {
+  const unsigned first = batch * kBatch;
   program.set("vplFirst", first);
-  program.set("vplCount", count);
-  program.set("addEmission", int(first == 0));
+  program.set("vplCount", std::min<unsigned>(kBatch, vpls_ - first));
+  program.set("addEmission", int(batch == 0));
   tracer_.bind();
-  shadowId_.bindUnit(4);
+  shadows_.bind(batch, 4);
 }
 
-void InstantRenderer::shadeForward(const glm::mat4& vp, unsigned first, unsigned count) {
+void InstantRenderer::shadeForward(const glm::mat4& vp, unsigned batch) {
   colorTarget_.bind();
   auto state = gl::cameraView(width_, height_);
-  if (first == 0) {  // depth pre-pass: the same program adding nothing (no VPLs, no emission)
-    state.apply();
-    setBatch(forward_, 1, 0);
-    forward_.set("viewProjection", &vp[0][0]);
-    forward_.use();
-    sceneVao_.bind();
-    gl::drawTriangles(sceneVertexCount_);
-  }
   state.depthFunc = gl::DepthFunc::Equal, state.depthWrite = false, state.additiveBlend = true;
   state.apply();
-  setBatch(forward_, first, count);
+  setBatch(forward_, batch);
+  forward_.set("viewProjection", &vp[0][0]);
   forward_.use();
   sceneVao_.bind();
   gl::drawTriangles(sceneVertexCount_);
 }
 
-void InstantRenderer::shadeDeferred(unsigned first, unsigned count) {
-  colorTarget_.bind();
-  gl::RasterState{.width = width_, .height = height_, .depthTest = false, .depthWrite = false, .additiveBlend = true}
-      .apply();
-  setBatch(deferred_, first, count);
+void InstantRenderer::shadeDeferred(unsigned batch) {
+  setBatch(deferred_, batch);
   position_.bindUnit(6);
+  shaded_.bindImage(0, GL_READ_WRITE);
   deferred_.use();
-  emptyVao_.bind();
-  gl::drawTriangles(3);
+  gl::Program::dispatch(gl::groupsFor(unsigned(shaded_.width()), 8), gl::groupsFor(unsigned(shaded_.height()), 8));
+  gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
+}
+
+void InstantRenderer::filter(Shading shading) {
+  if (shading == Shading::Forward) gl::barrier(gl::Barrier::Image | gl::Barrier::Framebuffer);
+  position_.bindUnit(6);
+  (shading == Shading::Forward ? color_ : shaded_).bindImage(0, GL_READ_ONLY);
+  filtered_.bindImage(1, GL_WRITE_ONLY);
+  filter_.set("deinterleaved", int(shading == Shading::Deferred));
+  filter_.use();
+  gl::Program::dispatch(gl::groupsFor(unsigned(width_), 8), gl::groupsFor(unsigned(height_), 8));
+  gl::barrier(gl::Barrier::Image | gl::Barrier::TextureUpdate);
+}
+
+const gl::Texture& InstantRenderer::result(Shading shading) const {
+  if (interleave_ > 1) return filtered_;
+  return shading == Shading::Forward ? color_ : shaded_;
 }
 
 void InstantRenderer::draw(const Camera& camera, int width, int height, Shading shading) {
+  if (shadowsStale_ || !shadows_.rendered()) shadows_.render(), shadowsStale_ = false;
   resize(width, height);
   // The camera's reversed-Z projection, its near plane in front of the whole scene (CameraMesh).
   const glm::dvec3 outside = glm::max(glm::max(boundsMin_ - camera.eye, camera.eye - boundsMax_), glm::dvec3(0.0));
   const double near = std::max(0.5 * glm::length(outside), 1e-6 * glm::length(boundsMax_ - boundsMin_));
   const glm::mat4 vp = camera.viewProjection(double(width) / height, near);
-  colorTarget_.clearColor(0, 0, 0, 0);
-  colorTarget_.clearDepth(0.0f);
-  if (shading == Shading::Deferred) {
-    gTarget_.clearColor(0, 0, 0, 0);
-    gTarget_.bind();
-    gl::cameraView(width, height).apply();
-    gbuffer_.set("viewProjection", &vp[0][0]);
-    gbuffer_.use();
-    sceneVao_.bind();
-    gl::drawTriangles(sceneVertexCount_);
-    gl::barrier(gl::Barrier::TextureFetch);
-  }
-  for (unsigned first = 0; first < vpls_; first += kBatch) {
-    const unsigned count = std::min<unsigned>(kBatch, vpls_ - first);
-    shadowBatch(first, count);
+  gBuffer(vp);
+  if (shading == Shading::Forward) colorTarget_.clearColor(0, 0, 0, 0);
+  for (unsigned b = 0; b < shadows_.batches(); ++b) {
     if (shading == Shading::Forward)
-      shadeForward(vp, first, count);
+      shadeForward(vp, b);
     else
-      shadeDeferred(first, count);
+      shadeDeferred(b);
   }
+  if (interleave_ > 1) filter(shading);
   gl::checkErrors("instant radiosity render");
 }
 
@@ -165,8 +157,11 @@ std::vector<std::uint32_t> InstantRenderer::visiblePolygons() const {
 InstantImage InstantRenderer::render(const Camera& camera, int width, int height, int supersample, Shading shading) {
   const int s = std::max(1, supersample), w = width * s, h = height * s;
   draw(camera, w, h, shading);
-  std::vector<float> rgba(std::size_t(w) * h * 4);
-  color_.read(GL_RGBA, GL_FLOAT, rgba.size() * sizeof(float), rgba.data());
+  // The deferred image without interleaving is stored in blocks of one: image order, padded to w x h.
+  const gl::Texture& shaded = result(shading);
+  std::vector<float> rgba(std::size_t(shaded.width()) * shaded.height() * 4);
+  shaded.read(GL_RGBA, GL_FLOAT, rgba.size() * sizeof(float), rgba.data());
+  const int stride = shaded.width();
   InstantImage out{{width, height, std::vector<float>(std::size_t(width) * height * 3, 0.0f)}};
   const float norm = 1.0f / float(s * s);
   for (int y = 0; y < height; ++y)
@@ -174,7 +169,7 @@ InstantImage InstantRenderer::render(const Camera& camera, int width, int height
       for (int c = 0; c < 4; ++c) {
         double sum = 0;
         for (int j = 0; j < s; ++j)
-          for (int i = 0; i < s; ++i) sum += rgba[(std::size_t(y * s + j) * w + (x * s + i)) * 4 + c];
+          for (int i = 0; i < s; ++i) sum += rgba[(std::size_t(y * s + j) * stride + (x * s + i)) * 4 + c];
         if (c == 3) {
           out.clampRemoved += sum * norm;
           continue;

@@ -1,11 +1,13 @@
-// Instant radiosity's camera images (seed 002): hemispherical shadow maps for every VPL (one
-// layered draw per batch of VPLs), then forward or deferred shading summing the batches. Like
-// Renderer it shades camera pixels; unlike it there is no atlas: B is computed per pixel.
+// Instant radiosity's camera images (seed 002): every VPL's hemispherical shadow map
+// (VplShadowMaps, rendered again only when the VPLs change), then forward or deferred shading
+// summing the VPL batches, optionally interleaved (n x n VPL subsets, then a geometry-aware
+// filter). Like Renderer it shades camera pixels; unlike it there is no atlas: B is per pixel.
 #pragma once
 #include <glm/glm.hpp>
 
 #include "gl/Objects.h"
 #include "src/output/Image.h"
+#include "src/output/VplShadowMaps.h"
 #include "src/scene/Camera.h"
 #include "src/scene/Scene.h"
 #include "src/solver/VplTracer.h"
@@ -25,36 +27,41 @@ struct InstantImage {
 
 class InstantRenderer {
  public:
-  static constexpr int kBatch = 256;  // VPLs per shadow-map draw (layers) and shading pass
+  static constexpr int kBatch = VplShadowMaps::kBatch;  // VPLs per shadow-map draw and shading pass
 
   InstantRenderer(const Scene& scene, const VplTracer& tracer, const InstantSettings& settings);
   // Renders at supersample x the size and box-filters down, as Renderer does.
   InstantImage render(const Camera& camera, int width, int height, int supersample, Shading shading);
-  // One frame into the internal target (the bench's unit of work): shadow maps, then shading.
+  // One frame into the internal target: the shadow maps if the VPLs changed, then the shading
+  // (G-buffer, the VPL batches, the interleaving filter). A camera move costs the shading only.
   void draw(const Camera& camera, int width, int height, Shading shading);
-  // After a deferred draw: each pixel's polygon (kNoPolygon: background), rows top-down.
+  // The tracer traced again (new VPLs): the next draw renders every shadow map first.
+  void vplsChanged() { shadowsStale_ = true; }
+  // After a draw: each pixel's polygon (kNoPolygon: background), rows top-down.
   std::vector<std::uint32_t> visiblePolygons() const;
 
  private:
   void resize(int width, int height);
-  void shadowBatch(unsigned first, unsigned count);
-  void shadeForward(const glm::mat4& vp, unsigned first, unsigned count);
-  void shadeDeferred(unsigned first, unsigned count);
-  void setBatch(const gl::Program& program, unsigned first, unsigned count) const;
+  void gBuffer(const glm::mat4& vp);
+  void shadeForward(const glm::mat4& vp, unsigned batch);
+  void shadeDeferred(unsigned batch);
+  void filter(Shading shading);
+  void setBatch(const gl::Program& program, unsigned batch) const;
+  const gl::Texture& result(Shading shading) const;
 
   const VplTracer& tracer_;
+  VplShadowMaps shadows_;
+  bool shadowsStale_ = true;
   unsigned vpls_;
-  int shadowSize_;
-  float far_, maxGeometry_;
+  int interleave_;
   glm::dvec3 boundsMin_, boundsMax_;
-  gl::Program shadow_, forward_, gbuffer_, deferred_;
-  gl::Buffer itemVertices_, itemIndices_, sceneVertices_;
-  gl::VertexArray itemVao_, sceneVao_, emptyVao_;
-  std::size_t itemIndexCount_ = 0, sceneVertexCount_ = 0;
-  gl::Texture shadowId_, shadowDepth_;
-  gl::Framebuffer shadowTarget_;
+  gl::Program forward_, gbuffer_, deferred_, filter_;
+  gl::Buffer sceneVertices_;
+  gl::VertexArray sceneVao_;
+  std::size_t sceneVertexCount_ = 0;
   int width_ = 0, height_ = 0;
-  gl::Texture color_, position_, depth_;
+  glm::ivec2 sub_{0};  // a de-interleaved block: ceil(size / n)
+  gl::Texture color_, shaded_, filtered_, position_, depth_;
   gl::Framebuffer colorTarget_, gTarget_;
 };
 

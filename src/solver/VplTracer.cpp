@@ -123,7 +123,7 @@ void VplTracer::bind() const {
   vpls_.bindBase(GL_SHADER_STORAGE_BUFFER, 23);
 }
 
-VplStats VplTracer::trace() {
+void VplTracer::dispatch() {
   vpls_.clear(0u);  // slots of paths that ended early keep zero flux
   bind();
   nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, 20);
@@ -134,7 +134,10 @@ VplStats VplTracer::trace() {
   program_.use();
   gl::Program::dispatch(gl::groupsFor(levels_.count[0], 64));
   gl::barrier(gl::Barrier::Storage | gl::Barrier::BufferUpdate);
+}
 
+VplStats VplTracer::trace() {
+  dispatch();
   std::vector<GpuPathEnd> ends(levels_.count[0]);
   pathEnds_.read(0, ends.size() * sizeof(GpuPathEnd), ends.data());
   VplStats s;

@@ -39,6 +39,7 @@ struct InstantSettings {
   int shadowResolution = 128;  // each VPL's hemispherical shadow map, pixels a side
   int itemSubdivision = 2;    // the shadow maps' mesh: 1-to-4 splits (curved projection)
   double clamp = 0.05;        // cos cos / r^2 is clamped at 1 / (clamp x scene diagonal)^2
+  int interleave = 1;         // n: each pixel of an n x n tile shades with 1 / n^2 of the VPLs (1: all)
 };
 
 // Keller's quasi-random walk: n[j] paths reach level j, n[j] ~ rhoAvg^j n[0], sum n[j] = vpls.
@@ -62,6 +63,8 @@ class VplTracer {
   VplTracer(const Scene& scene, const InstantSettings& settings);
   // Traces the paths into the VPL buffer (SSBO 23) and reads the path ends back.
   VplStats trace();
+  // The same trace without reading anything back (no wait for the GPU: the bench's full frame).
+  void dispatch();
   // Binds the polygon table (SSBO 0), its vertices (SSBO 10) and the VPLs (SSBO 23).
   void bind() const;
   std::vector<GpuVpl> readVpls() const;

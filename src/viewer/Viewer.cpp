@@ -83,6 +83,7 @@ void apply(ViewerControls& c, ViewerWindow::Action a) {
 }
 
 std::string title(const ViewerFrame& f, double fps, bool paused) {
+  if (f.algorithm == "instant") return fmt::format("hemirad — instant radiosity — {:.0f} fps", fps);
   return fmt::format("hemirad — {} — {} shots — convergence {:.4f} — {:.0f} fps{}", f.algorithm, f.status.shots,
                      f.status.convergence, fps, paused ? " — paused" : "");
 }
@@ -236,6 +237,11 @@ int runView(ViewerOptions o) {
   }  // the worker has stopped
   if (link.error) std::rethrow_exception(link.error);
   if (!o.screenshot.empty()) screenshot(o.screenshot);
+  if (o.method == Method::Instant) {
+    fmt::print(stderr, "hemirad view: instant, {} VPLs, {} shading, interleave {}, {} frames\n", o.instant.vpls,
+               shadingName(o.shading), o.instant.interleave, presented);
+    return 0;
+  }
   fmt::print(stderr, "hemirad view: {}, {} shots, convergence {:.4f}, {} frames\n",
              shown ? shown->algorithm : algorithmName(controls.algorithm), shown ? shown->status.shots : 0,
              shown ? shown->status.convergence : 0.0, presented);

@@ -5,6 +5,8 @@
 #include <string>
 
 #include "gl/Backend.h"
+#include "src/output/InstantRenderer.h"
+#include "src/solver/Methods.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/scene/SceneLoader.h"
 #include "src/scene/Atlas.h"
@@ -20,6 +22,9 @@ struct ViewerOptions {
     p.stop.targetConvergence = 0.999;  // the viewer stops only when there is little left to see
     return p;
   }();
+  Method method = Method::Progressive;  // or Instant: VPLs traced once, each frame shaded from them
+  InstantSettings instant;
+  Shading shading = Shading::Deferred;
   gl::BackendOptions backend;
   std::string backendName = "osmesa";
   std::optional<std::string> camera;

@@ -10,6 +10,7 @@
 #include "src/base/Clock.h"
 #include "src/scene/Atlas.h"
 #include "src/output/Image.h"
+#include "src/output/InstantRenderer.h"
 #include "src/output/Renderer.h"
 
 namespace hemirad {
@@ -57,7 +58,40 @@ bool publish(ViewerLink& link, ViewerFrame&& frame) {
   return true;
 }
 
+// Instant radiosity: the VPLs and their shadow maps once, then each frame is a camera move
+// (G-buffer and shading only). With --frame-count every frame is made; else only on a change.
+void workInstant(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
+  auto backend = gl::createBackend(o.backend);
+  if (o.backend.kind == gl::BackendKind::Auto)
+    fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
+  VplTracer tracer(scene, o.instant);
+  tracer.trace();
+  InstantRenderer renderer(scene, tracer, o.instant);  // after the backend: destroyed while it is current
+  ViewerControls shown;
+  unsigned frames = 0;
+  for (;;) {
+    ViewerControls c;
+    {
+      std::unique_lock lock(link.mutex);
+      link.changed.wait(lock, [&] {
+        const bool idle = frames && (o.frames ? frames >= o.frames : link.controls.version == shown.version);
+        return link.stop || !idle;
+      });
+      if (link.stop) return;
+      c = link.controls;
+    }
+    const auto t0 = Clock::now();
+    const Image image = renderer.render(c.camera, c.width, c.height, 1, o.shading).image;
+    ViewerFrame frame{c.width, c.height, bottomUpRgba(toneMap(image, exposureScale(image, o.exposure)), c.width, c.height),
+                      "instant", SolveStatus{}, msSince(t0)};
+    shown = c;
+    ++frames;
+    if (!publish(link, std::move(frame))) return;
+  }
+}
+
 void work(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
+  if (o.method == Method::Instant) return workInstant(o, scene, link);
   auto backend = gl::createBackend(o.backend);
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());

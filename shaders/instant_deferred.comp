@@ -1,0 +1,23 @@
+// Deferred shading (seed 002's faster path) in a compute shader, one dispatch per VPL batch over
+// the G-buffer, added into the image. Compute, not a full-screen fragment pass: a compute GPU
+// (H200) runs fragments on few of its SMs. Interleaved (n > 1) the image is shaded de-interleaved
+// (Segovia et al. 2006): invocation q of block b = q / sub (b.x + n b.y: the subset) shades
+// pixel (q mod sub) n + b, so a workgroup's invocations share their VPLs (coherent fetches);
+// instant_filter.comp reads the blocks back in image order.
+#include "instant_shade.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 6) uniform sampler2D gPosition;  // xyz, w: polygon id + 1 (0: background)
+layout(rgba32f, binding = 0) uniform image2D shaded;  // de-interleaved: n x n blocks of sub
+uniform uint interleave;
+uniform ivec2 sub;  // a block's size: ceil(image / n)
+
+void main() {
+  ivec2 q = ivec2(gl_GlobalInvocationID.xy), n = ivec2(int(interleave));
+  if (any(greaterThanEqual(q, sub * n))) return;
+  ivec2 b = q / sub, p = (q % sub) * n + b;
+  if (any(greaterThanEqual(p, textureSize(gPosition, 0)))) return;  // padding of the last blocks
+  vec4 g = texelFetch(gPosition, p, 0);
+  vec4 c = addEmission ? vec4(0.0) : imageLoad(shaded, q);
+  if (g.w != 0.0) c += shadeBatch(g.xyz, uint(g.w) - 1u, uint(b.x + n.x * b.y));
+  imageStore(shaded, q, c);
+}
