@@ -79,7 +79,7 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
   auto hashOf = [](const std::string& flags, const std::string& env) {
     std::string report = test::tempPath("det" + std::to_string(std::hash<std::string>{}(flags + env)) + ".json");
     test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
-                                      " --elements 1500 --shots 96 --quiet " + flags + " --report " + report,
+                                      " --elements 1500 --shots 64 --item-res 256 --quiet " + flags + " --report " + report,
                                   env);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);

@@ -179,7 +179,7 @@ TEST_CASE("The Cornell box's .glb reloads with every element in its own texel an
   // Every element's centre, through TEXCOORD_1 over its triangle, lands in a texel of its own
   // holding its B, at the same place within the texel as in hemirad's atlas.
   const Scene scene = loadScene(obj);
-  const Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, {.elements = 600}));
+  const Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, {.texelSize = std::nullopt, .elements = 600}));
   REQUIRE((atlas.width == atlasImage.width && atlas.height == atlasImage.height));
   const glm::dvec2 size(lightmap.width, lightmap.height);
   std::set<std::pair<int, int>> texels;
