@@ -3,9 +3,9 @@
 # each algorithm, the camera image compared with a converged solve (0.999). RMS of the tone-mapped
 # PNG (--image, each image auto-exposed, as the issue did) and of the linear render (--out .exr,
 # the same quantity for all), each with the ambient term on (the default) and off.
-# Usage: docs/experiments/views/reproduce.sh [SCENE] [SHOTS]   (B=hemirad binary, default build/src/hemirad)
+# Usage: docs/experiments/views/reproduce.sh [SCENE] [SHOTS]   (B=hemirad binary, default build/hemirad)
 set -eu
-B=${B:-build/src/hemirad}
+B=${B:-build/hemirad}
 S=${1:-scenes/four_boxes/four_boxes.obj}
 N=${2:-200}
 T=$(mktemp -d)
