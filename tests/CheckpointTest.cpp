@@ -144,11 +144,10 @@ TEST_CASE("A perspective-driven solve resumed mid-solve gives the bitwise result
   // shots (--fov-decay 16, 8 steps): by 20 shots surfaces have left the view, entries are held
   // in the table and deliveries are due, so the checkpoint holds all of the view's state.
   const std::string args = "solve " + test::sourcePath("scenes/building/building_4.obj") +
-                           " --elements 400 --quiet --algorithm perspective --fov-decay 16 --shooters-per-pass 4"
-                           " --item-res 64 --item-subdiv 1";
+                           " --elements 400 --quiet --algorithm perspective --shooters-per-pass 4 --item-res 64 --item-subdiv 1";
   auto report = [&](const std::string& flags, const std::string& name) {
     const std::string path = test::tempPath(name);
-    test::Run run = test::hemirad(args + " " + flags + " --report " + path);
+    test::Run run = test::hemirad(args + " --fov-decay 16 " + flags + " --report " + path);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
     return test::readJson(path);
