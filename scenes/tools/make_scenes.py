@@ -129,6 +129,17 @@ def cornell_subdivided(folder, n):
     with open(os.path.join(folder, f"cornell_x{n}.camera"), "w") as fh:
         fh.write("eye=278,273,-800 target=278,273,0 up=0,1,0 fov=39.3\n")
 
+def room_shell(o, k, ox, oz, X, Y, Z, lx0, lx1, lz0, lz1):
+    """Room k's floor, its ceiling split around the light panel [lx0, lx1] x [lz0, lz1] (relative
+    to the room's corner (ox, oz)), and the panel, all facing the room's centre."""
+    mid = [ox + X / 2, Y / 2, oz + Z / 2]
+    o.group(f"room{k}_floor", "white", [orient(rect(ox, ox + X, oz, oz + Z, 0), towards=mid)])
+    ceiling = [rect(ox, ox + X, oz, oz + lz0, Y), rect(ox, ox + X, oz + lz1, oz + Z, Y),
+               rect(ox, ox + lx0, oz + lz0, oz + lz1, Y), rect(ox + lx1, ox + X, oz + lz0, oz + lz1, Y)]
+    o.group(f"room{k}_ceiling", "white", [orient(f, towards=mid) for f in ceiling])
+    o.group(f"room{k}_light", "light", [orient(rect(ox + lx0, ox + lx1, oz + lz0, oz + lz1, Y), towards=mid)])
+    return mid
+
 FOUR_BOXES_CAMERA = "eye=150,450,40 target=278,150,559.2 up=0,1,0 fov=60"
 
 def four_boxes(folder):
@@ -169,12 +180,7 @@ def four_boxes(folder):
     for j in range(2):
         for i in range(2):
             k, ox, oz = 2 * j + i, i * (X + T), j * (Z + T)
-            mid = [ox + X / 2, Y / 2, oz + Z / 2]
-            o.group(f"room{k}_floor", "white", [orient(rect(ox, ox + X, oz, oz + Z, 0), towards=mid)])
-            ceiling = [rect(ox, ox + X, oz, oz + lz0, Y), rect(ox, ox + X, oz + lz1, oz + Z, Y),
-                       rect(ox, ox + lx0, oz + lz0, oz + lz1, Y), rect(ox + lx1, ox + X, oz + lz0, oz + lz1, Y)]
-            o.group(f"room{k}_ceiling", "white", [orient(f, towards=mid) for f in ceiling])
-            o.group(f"room{k}_light", "light", [orient(rect(ox + lx0, ox + lx1, oz + lz0, oz + lz1, Y), towards=mid)])
+            mid = room_shell(o, k, ox, oz, X, Y, Z, lx0, lx1, lz0, lz1)
             o.group(f"room{k}_red_wall", "red", wall_x(ox + X, oz, oz + Z, i == 0, mid))
             o.group(f"room{k}_green_wall", "green", wall_x(ox, oz, oz + Z, i == 1, mid))
             o.group(f"room{k}_back_wall", "white", wall_z(oz + Z, ox, ox + X, j == 0, mid))
@@ -234,12 +240,7 @@ def building(folder, n):
     for j in range(n):
         for i in range(n):
             k, ox, oz = n * j + i, i * P, j * P
-            mid = [ox + ROOM / 2, Y / 2, oz + ROOM / 2]
-            o.group(f"room{k}_floor", "white", [orient(rect(ox, ox + ROOM, oz, oz + ROOM, 0), towards=mid)])
-            ceiling = [rect(ox, ox + ROOM, oz, oz + l0, Y), rect(ox, ox + ROOM, oz + l1, oz + ROOM, Y),
-                       rect(ox, ox + l0, oz + l0, oz + l1, Y), rect(ox + l1, ox + ROOM, oz + l0, oz + l1, Y)]
-            o.group(f"room{k}_ceiling", "white", [orient(f, towards=mid) for f in ceiling])
-            o.group(f"room{k}_light", "light", [orient(rect(ox + l0, ox + l1, oz + l0, oz + l1, Y), towards=mid)])
+            mid = room_shell(o, k, ox, oz, ROOM, Y, ROOM, l0, l1, l0, l1)
             o.group(f"room{k}_east_wall", "red", wall("x", ox + ROOM, oz, oz + ROOM, i < n - 1, mid))
             o.group(f"room{k}_west_wall", "green", wall("x", ox, oz, oz + ROOM, i > 0, mid))
             o.group(f"room{k}_north_wall", "white", wall("z", oz + ROOM, ox, ox + ROOM, j < n - 1, mid))
