@@ -2,8 +2,9 @@
 // visibility from its item buffer, the exact form factor to its shape (formfactor.glsl), and
 // B += rho dB_s F, dB += rho dB_s F (by reciprocity the right quantity for shooting).
 // A shooter block's own dB is reset here (its texels are coplanar with it and receive nothing
-// from it, but do receive from the pass's other shooters). Importance (alpha: I in B, dI in
-// dB) travels the same way from importance shooters, reflected by luminance(rho) (seed 004).
+// from it, but do receive from the pass's other shooters). Importance (alpha: received I - R in
+// B, dI in dB) travels the same way from importance shooters, as light's adjoint: reflected by the
+// importance shooter's luminance(rho), not the receiver's (shooter_block.glsl; seed 004).
 // Perspective-driven solves (seed 004 §5) restrict who receives radiosity: viewMode 1 only
 // surfaces in view; viewMode 2 (deferred passes) only surfaces becoming visible, each receiving
 // its stored table entry from the pass's blocks instead of their unshot radiosity.
@@ -57,7 +58,7 @@ void main() {
   }
   if (keep == vec4(1.0) && received == vec4(0.0)) return;
   vec3 rho = polygons[polygon].reflectance.rgb;
-  vec4 delta = vec4(rho, luminance(rho)) * received;
+  vec4 delta = vec4(rho, 1.0) * received;  // importance arrives already reflected (shooter_block.glsl)
   imageStore(radiosity, t, imageLoad(radiosity, t) + delta);
   imageStore(deltaB, t, imageLoad(deltaB, t) * keep + delta);
 }

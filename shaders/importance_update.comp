@@ -1,7 +1,9 @@
 // Direct importance from the user's view (seed 004 §4.2.3, §4.2.6): R' = the fraction of the
 // view's pixels showing the element, per unit of its area, and the change dR = R' - R added to
-// the importance I (alpha of B) and the unshot importance dI (alpha of dB), so a camera move
-// re-shoots only the difference.
+// the unshot importance dI (alpha of dB), so a camera move re-shoots only the difference. The
+// alpha of B holds the importance received from other surfaces, I - R (what the element's
+// light is worth to the view: the importance-driven key and the ambient's weight), so a move
+// leaves it as it is.
 #include "scene.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -21,6 +23,5 @@ void main() {
   float dR = r - imageLoad(direct, t).r;
   if (dR == 0.0) return;
   imageStore(direct, t, vec4(r));
-  imageStore(radiosity, t, imageLoad(radiosity, t) + vec4(0.0, 0.0, 0.0, dR));
   imageStore(deltaB, t, imageLoad(deltaB, t) + vec4(0.0, 0.0, 0.0, dR));
 }

@@ -9,7 +9,7 @@
 #include "shooter_tree.glsl"
 
 layout(local_size_x = BLOCK_THREADS) in;
-layout(binding = 0, rgba32f) uniform readonly image2D radiosity;  // a: importance I
+layout(binding = 0, rgba32f) uniform readonly image2D radiosity;  // a: received importance I - R
 layout(binding = 1, rgba32f) uniform readonly image2D deltaB;     // a: unshot importance dI
 
 const float NONE = 3.4e38;
@@ -38,6 +38,9 @@ NodeStats leafPart(ivec4 r, uint sub, uint threads) {
 #ifdef IMPORTANCE_DRIVEN  // only importance-driven solves rank by importance or shoot it
     float view = abs(d.a) * pa.w;
     s.viewCentre += vec4(pa.xyz * view, view);
+    // The key's importance is what the element's light is worth where it lands: I - R, not R
+    // (light on a visible element is shown already; seed 004 ranked by I, which sends the shots
+    // to whatever is nearest the camera).
     s.range.z = max(s.range.z, imageLoad(radiosity, t).a);
 #endif
   }

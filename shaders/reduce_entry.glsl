@@ -16,7 +16,7 @@ layout(std430, binding = 2) readonly buffer In { Entry src[]; };
 uniform uint count;       // entries (or blocks) to fold
 uniform bool fromBlocks;  // first level: compute the entries from the blocks
 uniform uint keep;        // entries kept per group: the shooters a pass takes
-// What blocks are ranked by: 0 unshot power; 1 unshot power x (the block's largest importance +
+// What blocks are ranked by: 0 unshot power; 1 unshot power x (the block's largest received importance I - R +
 // importanceFloor), the importance-driven choice (seed 004 §4.2.4, a max-map over the block);
 // 2 |unshot importance| x area, for the importance shooters.
 uniform uint rankBy;

@@ -17,10 +17,15 @@ void describeNode(uint slot, uint node, uint block) {
 // The node shoots its area-weighted unshot radiosity (or importance) and sees from where that
 // sits (node_stats.comp's weighted centre): a block half under a box would otherwise look out
 // from inside the box and lose the lit half's light.
+// Importance is the adjoint of light (W_t = R_t + sum_s F_ts rho_s W_s): light leaving t is
+// worth what it is worth where it lands and is reflected, so importance shot from s carries
+// s's reflectance (luminance), and receivers take it unscaled (gather.comp). Then W - R is
+// what a unit of unshot radiosity at t is worth to the view: the importance-driven key.
 void describeUnshot(uint slot, uint node, bool importance) {
   NodeStats s = stats[node];
   vec4 centre = importance ? s.viewCentre : s.lightCentre;
   float area = nodes[node].centreArea.w;
   if (centre.w > 0.0) control.shooter[slot].positionArea.xyz = centre.xyz / centre.w;
-  control.shooter[slot].shot = importance ? vec4(0.0, 0.0, 0.0, s.unshot.a / area) : vec4(s.unshot.rgb / area, 0.0);
+  float reflects = dot(polygons[nodes[node].polygon].reflectance.rgb, vec3(0.2126, 0.7152, 0.0722));  // luminance
+  control.shooter[slot].shot = importance ? vec4(0.0, 0.0, 0.0, reflects * s.unshot.a / area) : vec4(s.unshot.rgb / area, 0.0);
 }

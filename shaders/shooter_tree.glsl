@@ -16,7 +16,7 @@ struct NodeStats {
   vec4 unshot;       // sum of dB A (rgb) and dI A (a)
   vec4 lightCentre;  // sum of w x, sum of w, w = luminance(dB) A: where its unshot light sits
   vec4 viewCentre;   // the same with w = |dI| A
-  vec4 range;        // least and largest luminance(dB) of its elements, largest importance I, 0
+  vec4 range;        // least and largest luminance(dB) of its elements, largest received importance I - R (alpha of B), 0
 };
 
 layout(std430, binding = 13) readonly buffer Nodes { Node nodes[]; };

@@ -137,3 +137,35 @@ TEST_CASE("A stochastic solve resumed from a checkpoint gives the bitwise result
   CHECK(other.exitCode == 2);
   CHECK_THAT(other.output, Contains("seed"));
 }
+
+TEST_CASE("A perspective-driven solve resumed mid-solve gives the bitwise result of an uninterrupted one",
+          "[cli][checkpoint][perspective]") {
+  // The camera in room 0 of the 4-room building, the simulated field of view growing every 2
+  // shots (--fov-decay 16, 8 steps): by 20 shots surfaces have left the view, entries are held
+  // in the table and deliveries are due, so the checkpoint holds all of the view's state.
+  const std::string args = "solve " + test::sourcePath("scenes/building/building_4.obj") +
+                           " --elements 400 --quiet --algorithm perspective --shooters-per-pass 4 --item-res 64 --item-subdiv 1";
+  auto report = [&](const std::string& flags, const std::string& name) {
+    const std::string path = test::tempPath(name);
+    test::Run run = test::hemirad(args + " --fov-decay 16 " + flags + " --report " + path);
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    return test::readJson(path);
+  };
+  const std::string ck = test::tempPath("perspective.ckpt");
+  const nlohmann::json whole = report("--shots 48", "perspective-whole.json");
+  const nlohmann::json first = report("--shots 20 --checkpoint " + ck, "perspective-first.json");
+  const nlohmann::json resumed = report("--shots 48 --resume " + ck, "perspective-resumed.json");
+  CHECK(first["shots"] == 20);
+  CHECK(first["radiosity_hash"] != whole["radiosity_hash"]);
+  CHECK(whole["delivery_shots"].get<unsigned>() > 0);
+  CHECK(resumed["shots"] == 48);
+  CHECK(resumed["algorithm"] == "perspective");
+  CHECK(resumed["delivery_shots"] == whole["delivery_shots"]);
+  CHECK(resumed["radiosity_hash"] == whole["radiosity_hash"]);
+  CHECK(resumed["convergence_history"] == whole["convergence_history"]);
+  test::Run other = test::hemirad(args + " --shots 48 --fov-decay 32 --resume " + ck);
+  INFO(other.output);
+  CHECK(other.exitCode == 2);
+  CHECK_THAT(other.output, Contains("fov_decay"));
+}

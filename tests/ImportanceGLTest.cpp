@@ -52,7 +52,8 @@ TEST_CASE("Importance propagates as radiosity does: in a closed grey box it sums
           "[gl][importance]") {
   // The furnace cube (rho 0.5) seen from inside. Importance is shot like radiosity and reflected
   // by rho, so once it is all shot sum I A = sum R A / (1 - rho sigma), sigma the share of a shot
-  // that the exact form factors hand on (computed on the CPU; 1 up to the centroid rule).
+  // that the exact form factors hand on (computed on the CPU; 1 up to the centroid rule). B's
+  // alpha holds the received part, I - R.
   Scene s = load("scenes/analytic/furnace.obj");
   Camera c = parseCamera("eye=0.5,0.5,0.05 target=0.5,0.5,1 fov=70", Camera{}, "camera");
   ProgressiveSettings settings = importanceDriven(0, 0.999);
@@ -60,7 +61,7 @@ TEST_CASE("Importance propagates as radiosity does: in a closed grey box it sums
   test::Solved r = test::solve(s, 1.0 / 8, settings, &c);
   const double sigma = test::meanExactRowSum(s, r.atlas);
   double direct = areaSum(r.atlas, [&](std::size_t t) { return double(r.direct[t]); });
-  double total = areaSum(r.atlas, [&](std::size_t t) { return double(r.B[t].a); });
+  double total = direct + areaSum(r.atlas, [&](std::size_t t) { return double(r.B[t].a); });
   double unshot = areaSum(r.atlas, [&](std::size_t t) { return std::abs(double(r.dB[t].a)); });
   INFO("direct " << direct << ", total " << total << ", unshot " << unshot << ", sigma " << sigma << " after "
                  << r.status.shots << " shots");
@@ -69,8 +70,10 @@ TEST_CASE("Importance propagates as radiosity does: in a closed grey box it sums
   CHECK(total == Approx(direct / (1 - 0.5 * sigma)).epsilon(0.01));
 }
 
-TEST_CASE("A camera move changes I and dI by exactly the change in direct importance", "[gl][importance]") {
-  // Seed 004 §4.2.6: dR = R' - R; I += dR; dI += dR; R = R'.
+TEST_CASE("A camera move changes dI by exactly the change in direct importance, and received importance not at all",
+          "[gl][importance]") {
+  // Seed 004 §4.2.6: dR = R' - R; I += dR; dI += dR; R = R'. B's alpha is the received
+  // importance I - R, which the move leaves as it was.
   Scene s = load("scenes/cornell/cornell.obj");
   Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2000));
   test::backend();
@@ -90,38 +93,45 @@ TEST_CASE("A camera move changes I and dI by exactly the change in direct import
     float dR = R1[t] - R0[t];
     changed += dR != 0;
     float tol = 1e-6f * (std::abs(B0[t].a) + std::abs(R1[t]) + std::abs(R0[t]));
-    wrong += std::abs((B1[t].a - B0[t].a) - dR) > tol || std::abs((dB1[t].a - dB0[t].a) - dR) > tol;
+    wrong += B1[t].a != B0[t].a || std::abs((dB1[t].a - dB0[t].a) - dR) > tol;
     wrong += B1[t].r != B0[t].r || dB1[t].g != dB0[t].g;  // radiosity untouched
   }
   CHECK(changed > 100);
   CHECK(wrong == 0);
 }
 
-TEST_CASE("With the same shots, importance- and perspective-driven shooting get the four-box view closer to converged",
+TEST_CASE("Camera in one room of a 16-room building: view-driven shooting reaches progressive refinement's view error "
+          "in a quarter of the shots",
           "[gl][importance][perspective]") {
-  // Seed 004 §6.2, §6.4: plain progressive refinement lights all four rooms alike; importance-
-  // driven shooting spends the shots where the camera (in room 0) looks, and perspective-driven
-  // shooting also gives light only to what is in view until the view has had its share.
-  Scene s = load("scenes/four_boxes/four_boxes.obj");
-  Camera c = sceneCamera("scenes/four_boxes/four_boxes.obj");
+  // Issue 19 (seed 004 §6.2): the camera in room 0 of scenes/building/building_16 sees mostly
+  // that room. Plain progressive refinement lights all rooms alike; importance-driven shooting
+  // spends its shots on the light that reaches the view, so N / 4 of them leave the view at
+  // most as far from converged as N plain ones; perspective-driven shooting too (its area of
+  // interest holds what the view's light passes through). Four rooms are too few for a factor
+  // 4: the view needs room 0 and what comes through its doorways, half the building.
+  Scene s = load("scenes/building/building_16.obj");
+  Camera c = sceneCamera("scenes/building/building_16.obj");
   const double texel = texelSizeForElements(s, 800);
-  ProgressiveSettings converged, progressive, perspective = importanceDriven(192);
+  constexpr unsigned N = 256;
+  ProgressiveSettings converged, progressive, importance = importanceDriven(N / 4), perspective = importanceDriven(N / 4);
+  for (ProgressiveSettings* p : {&converged, &progressive, &importance, &perspective})
+    p->itemSubdivision = 1, p->itemResolution = 128;  // cheap: the same for all four
   converged.stop = {0, 0.95};
-  progressive.stop = {192, 0};
-  perspective.algorithm = Algorithm::Perspective;  // decay: a quarter of the blocks
+  progressive.stop = {N, 0};
+  perspective.algorithm = Algorithm::Perspective;
   test::Solved reference = test::solve(s, texel, converged, &c);
   test::Solved plain = test::solve(s, texel, progressive, &c);
-  test::Solved driven = test::solve(s, texel, importanceDriven(192), &c);
+  test::Solved driven = test::solve(s, texel, importance, &c);
   test::Solved local = test::solve(s, texel, perspective, &c);
   const double plainError = imageError(plain.view, reference.view), drivenError = imageError(driven.view, reference.view),
                localError = imageError(local.view, reference.view);
-  INFO("view error after 192 shots: progressive " << plainError << ", importance-driven " << drivenError
-                                                  << ", perspective-driven " << localError
-                                                  << " (reference: " << reference.status.shots << " shots)");
-  // Measured: 0.106, 0.048, 0.054. Perspective-driven shots give light only to what is in view,
-  // so per shot it trails importance-driven while the view grows.
-  CHECK(drivenError < 0.7 * plainError);
-  CHECK(localError < 0.7 * plainError);
+  INFO("view error: progressive " << plainError << " after " << plain.status.shots << " shots; importance-driven "
+                                  << drivenError << " and perspective-driven " << localError << " after "
+                                  << driven.status.shots << " (reference: " << reference.status.shots << " shots)");
+  // Measured (800 elements): progressive 0.218 after 256 shots; importance 0.197 and perspective 0.197 after 64.
+  CHECK(driven.status.shots == N / 4);
+  CHECK(drivenError <= plainError);
+  CHECK(localError <= plainError);
 }
 
 TEST_CASE("Importance-driven and plain progressive refinement converge to the same solution", "[gl][importance]") {

@@ -23,6 +23,7 @@ ProgressiveSettings perspective(unsigned decayShots) {
   s.shootLevel = 0;  // element by element: sigma is per element
   s.shootersPerPass = 8;
   s.fovDecayShots = decayShots;
+  s.viewInterest = 0;  // the simulated field of view alone: the walls are out of the area of interest
   s.stop = {0, 0.9999};
   return s;
 }

@@ -129,6 +129,17 @@ def cornell_subdivided(folder, n):
     with open(os.path.join(folder, f"cornell_x{n}.camera"), "w") as fh:
         fh.write("eye=278,273,-800 target=278,273,0 up=0,1,0 fov=39.3\n")
 
+def room_shell(o, k, ox, oz, X, Y, Z, lx0, lx1, lz0, lz1):
+    """Room k's floor, its ceiling split around the light panel [lx0, lx1] x [lz0, lz1] (relative
+    to the room's corner (ox, oz)), and the panel, all facing the room's centre."""
+    mid = [ox + X / 2, Y / 2, oz + Z / 2]
+    o.group(f"room{k}_floor", "white", [orient(rect(ox, ox + X, oz, oz + Z, 0), towards=mid)])
+    ceiling = [rect(ox, ox + X, oz, oz + lz0, Y), rect(ox, ox + X, oz + lz1, oz + Z, Y),
+               rect(ox, ox + lx0, oz + lz0, oz + lz1, Y), rect(ox + lx1, ox + X, oz + lz0, oz + lz1, Y)]
+    o.group(f"room{k}_ceiling", "white", [orient(f, towards=mid) for f in ceiling])
+    o.group(f"room{k}_light", "light", [orient(rect(ox + lx0, ox + lx1, oz + lz0, oz + lz1, Y), towards=mid)])
+    return mid
+
 FOUR_BOXES_CAMERA = "eye=150,450,40 target=278,150,559.2 up=0,1,0 fov=60"
 
 def four_boxes(folder):
@@ -169,12 +180,7 @@ def four_boxes(folder):
     for j in range(2):
         for i in range(2):
             k, ox, oz = 2 * j + i, i * (X + T), j * (Z + T)
-            mid = [ox + X / 2, Y / 2, oz + Z / 2]
-            o.group(f"room{k}_floor", "white", [orient(rect(ox, ox + X, oz, oz + Z, 0), towards=mid)])
-            ceiling = [rect(ox, ox + X, oz, oz + lz0, Y), rect(ox, ox + X, oz + lz1, oz + Z, Y),
-                       rect(ox, ox + lx0, oz + lz0, oz + lz1, Y), rect(ox + lx1, ox + X, oz + lz0, oz + lz1, Y)]
-            o.group(f"room{k}_ceiling", "white", [orient(f, towards=mid) for f in ceiling])
-            o.group(f"room{k}_light", "light", [orient(rect(ox + lx0, ox + lx1, oz + lz0, oz + lz1, Y), towards=mid)])
+            mid = room_shell(o, k, ox, oz, X, Y, Z, lx0, lx1, lz0, lz1)
             o.group(f"room{k}_red_wall", "red", wall_x(ox + X, oz, oz + Z, i == 0, mid))
             o.group(f"room{k}_green_wall", "green", wall_x(ox, oz, oz + Z, i == 1, mid))
             o.group(f"room{k}_back_wall", "white", wall_z(oz + Z, ox, ox + X, j == 0, mid))
@@ -200,6 +206,74 @@ def four_boxes(folder):
         "Written by scenes/tools/make_scenes.py."])
     with open(os.path.join(folder, "four_boxes_x2.camera"), "w") as fh:
         fh.write(FOUR_BOXES_CAMERA + "\n")
+
+# The many-room building (issue 19): rooms of ROOM x ROOM_H x ROOM in an n x n grid, walls WALL
+# thick, a doorway through every wall two rooms share, one ceiling light per room, one block per
+# room. The camera stands in room 0 and sees mostly that room: the case view-driven shooting is for.
+ROOM, ROOM_H, WALL, DOOR_W, DOOR_H, LIGHT = 400.0, 300.0, 10.0, 100.0, 210.0, 80.0
+BUILDING_CAMERA = "eye=40,170,30 target=330,60,330 up=0,1,0 fov=60"
+
+def building(folder, n):
+    """n x n rooms (room k = n j + i at x = i (ROOM + WALL), z = j (ROOM + WALL)), every pair of
+    neighbours joined by a doorway tunnel through their shared wall."""
+    P, Y = ROOM + WALL, ROOM_H
+    o = Obj("building.mtl")
+    jambs = []
+    def wall(axis, w, t0, t1, door, towards):
+        # The wall in the plane `axis` = w spanning t0..t1 along it, with a centred doorway if door.
+        def p(t, y): return [w, y, t] if axis == "x" else [t, y, w]
+        def quad(a, b, y0, y1): return orient([p(a, y0), p(b, y0), p(b, y1), p(a, y1)], towards=towards)
+        if not door:
+            return [quad(t0, t1, 0, Y)]
+        d0, d1 = (t0 + t1 - DOOR_W) / 2, (t0 + t1 + DOOR_W) / 2
+        return [quad(t0, d0, 0, Y), quad(d1, t1, 0, Y), quad(d0, d1, DOOR_H, Y)]
+    def doorway(axis, w, c):
+        d0, d1 = c - DOOR_W / 2, c + DOOR_W / 2
+        mid = [w + WALL / 2, DOOR_H / 2, c] if axis == "x" else [c, DOOR_H / 2, w + WALL / 2]
+        def p(m, t, y): return [m, y, t] if axis == "x" else [t, y, m]
+        for f in ([p(w, d0, 0), p(w + WALL, d0, 0), p(w + WALL, d0, DOOR_H), p(w, d0, DOOR_H)],
+                  [p(w, d1, 0), p(w + WALL, d1, 0), p(w + WALL, d1, DOOR_H), p(w, d1, DOOR_H)],
+                  [p(w, d0, DOOR_H), p(w + WALL, d0, DOOR_H), p(w + WALL, d1, DOOR_H), p(w, d1, DOOR_H)],
+                  [p(w, d0, 0), p(w + WALL, d0, 0), p(w + WALL, d1, 0), p(w, d1, 0)]):
+            jambs.append(orient(f, towards=mid))
+    l0, l1 = (ROOM - LIGHT) / 2, (ROOM + LIGHT) / 2
+    for j in range(n):
+        for i in range(n):
+            k, ox, oz = n * j + i, i * P, j * P
+            mid = room_shell(o, k, ox, oz, ROOM, Y, ROOM, l0, l1, l0, l1)
+            o.group(f"room{k}_east_wall", "red", wall("x", ox + ROOM, oz, oz + ROOM, i < n - 1, mid))
+            o.group(f"room{k}_west_wall", "green", wall("x", ox, oz, oz + ROOM, i > 0, mid))
+            o.group(f"room{k}_north_wall", "white", wall("z", oz + ROOM, ox, ox + ROOM, j < n - 1, mid))
+            o.group(f"room{k}_south_wall", "white", wall("z", oz, ox, ox + ROOM, j > 0, mid))
+            b = [[ox + 230, 0, oz + 250], [ox + 310, 0, oz + 250], [ox + 310, 0, oz + 330], [ox + 230, 0, oz + 330]]
+            o.group(f"room{k}_block", "white", block_faces([[x, 120, z] for x, _, z in b[::-1]], 120.0))
+            if i < n - 1:
+                doorway("x", ox + ROOM, oz + ROOM / 2)
+            if j < n - 1:
+                doorway("z", oz + ROOM, ox + ROOM / 2)
+    o.group("doorways", "white", jambs)
+    name = f"building_{n * n}"
+    o.write(os.path.join(folder, f"{name}.obj"), [
+        f"{n * n} rooms ({n} x {n}, room k = {n} j + i at x = i {P:g}, z = j {P:g}), each {ROOM:g} x {ROOM_H:g} x {ROOM:g}",
+        f"with a ceiling light and a block, every two neighbours joined by a {DOOR_W:g} x {DOOR_H:g} doorway through",
+        f"their {WALL:g}-unit wall (issue 19). Written by scenes/tools/make_scenes.py."])
+    with open(os.path.join(folder, "building.mtl"), "w") as fh:
+        fh.write(open("scenes/cornell/cornell.mtl").read())
+    with open(os.path.join(folder, f"{name}.camera"), "w") as fh:
+        fh.write("# Inside room 0, from its south-west corner across the room.\n" + BUILDING_CAMERA + "\n")
+    # Through the doors: room 0 -> room 1 (east) -> room 1 + n (north), looking ahead, 2 s a leg.
+    c, d = ROOM / 2, P + ROOM / 2
+    with open(os.path.join(folder, f"{name}.path"), "w") as fh:
+        fh.write("# Walkthrough through doors: still in room 0, to its east doorway, through it into room 1,\n"
+                 "# across to room 1's north doorway and through it into the room beyond (issue 19).\n"
+                 "# TIME(s)  camera (keys left out keep the previous keyframe's)\n"
+                 f"0   {BUILDING_CAMERA}\n"
+                 f"2   eye=40,170,30 target=330,60,330\n"
+                 f"4   eye={c:g},160,{c:g} target={ROOM:g},120,{c:g}\n"
+                 f"6   eye={ROOM - 20:g},160,{c:g} target={d:g},120,{c:g}\n"
+                 f"8   eye={d:g},160,{c:g} target={d:g},120,{ROOM:g}\n"
+                 f"10  eye={d:g},160,{ROOM - 20:g} target={d:g},120,{d:g}\n"
+                 f"12  eye={d:g},160,{d - 60:g} target={d:g},60,{d + 150:g}\n")
 
 def analytic(folder):
     mtl = ("newmtl emitter\nKd 0 0 0\nKe 1 1 1\n\n"
@@ -227,6 +301,10 @@ def analytic(folder):
     o.write(os.path.join(folder, "furnace.obj"), ["Closed box, all faces E = 1, rho = 0.5: B = 2 everywhere"])
 
 if __name__ == "__main__":
+    import sys
+    if sys.argv[1:2] == ["building"]:  # one building: make_scenes.py building N [FOLDER]
+        building(sys.argv[3] if len(sys.argv) > 3 else "scenes/building", int(sys.argv[2]))
+        sys.exit(0)
     os.makedirs("scenes/cornell", exist_ok=True)
     os.makedirs("scenes/analytic", exist_ok=True)
     cornell("scenes/cornell")
@@ -236,3 +314,6 @@ if __name__ == "__main__":
     os.makedirs("scenes/four_boxes", exist_ok=True)
     four_boxes("scenes/four_boxes")
     analytic("scenes/analytic")
+    os.makedirs("scenes/building", exist_ok=True)
+    for n in (2, 4):  # 4 and 16 rooms; 64 (n = 8) on demand: make_scenes.py building 8
+        building("scenes/building", n)

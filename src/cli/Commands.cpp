@@ -169,10 +169,12 @@ void Commands::addExperiment() {
   ExperimentOptions& e = experiment;
   seed004Only = {add(x, "--scenes", e.scenes), add(x, "--algorithms", e.algorithms), add(x, "--elements", e.elements),
                  add(x, "--fps", e.walkthrough.fps), add(x, "--frame-ms", e.walkthrough.frameMs),
+                 add(x, "--camera-path", e.cameraPath, "SCENE.path beside each scene"),
                  add(x, "--width", e.walkthrough.width), add(x, "--height", e.walkthrough.height),
                  add(x, "--ambient", e.walkthrough.ambient), add(x, "--reference-convergence", e.referenceConvergence),
                  add(x, "--fov-decay", e.progressive.fovDecayShots)};
   add(x, "--out-dir", e.out);
+  seed004Only.push_back(add(x, "--frame-shots", e.walkthrough.frameShots)->excludes(experimentCmd->get_option("--frame-ms")));
   seed004Only.push_back(addSwitch(x, "--keep-frames", e.frames));
   seed004Only.push_back(add(x, "--backend", e.backendName));
   seed004Only.push_back(add(x, "--gpu", e.backend.gpu));

@@ -171,8 +171,9 @@ std::vector<Flag> deviceAndOutputFlags() {
       {"--supersample", "N", "Samples per pixel side", CLI::Range(1, 8)},
       {"--exposure", "STOPS", "Exposure in stops over the automatic one", any},
       {"--ambient", "on|off",
-       "Seed 004's ambient term R x (area-averaged unshot radiosity) x rho on camera images; never in B, the "
-       "report, the atlas or the PLY, nor with --method stochastic (nothing is unshot)",
+       "Seed 004's ambient term R x (area-averaged unshot radiosity; weighted by received importance in importance- "
+       "and perspective-driven solves) x rho on camera images; never in B, the report, the atlas or the PLY, nor "
+       "with --method stochastic (nothing is unshot)",
        oneOf(std::map<std::string, bool>{{"on", true}, {"off", false}}, "on|off"), "on"},
       // Outputs.
       {"--out", "FILE", "Camera render: linear (.exr), or tone-mapped like --image (.png)", none},

@@ -50,6 +50,7 @@ nlohmann::json checkpointIdentity(const Scene& scene, const Atlas& atlas, const 
           {"projection", projectionName(p.projection)},
           {"shoot_level", p.shootLevel},
           {"shooters_per_pass", p.shootersPerPass}};
+  if (o.progressive.algorithm == Algorithm::Perspective) identity["fov_decay"] = p.fovDecayShots;  // 0: the default
   if (o.method == Method::Stochastic) {
     identity["seed"] = o.stochastic.seed;
     identity["transport"] = sourceName(o.stochastic.source);
@@ -104,9 +105,6 @@ void checkSolveInputs(const SolveOptions& o) {
       o.checkpoint.empty() && o.cameraPath.empty())
     warn("no output flag (--out, --image, --atlas, --ply, --gltf, --report, --checkpoint): only the summary line will "
          "show the result");
-  if ((!o.checkpoint.empty() || !o.resume.empty()) && o.progressive.algorithm == Algorithm::Perspective)
-    throw InputError("--checkpoint and --resume do not support --algorithm perspective (its stored radiosity table is "
-                     "not saved)");
 }
 
 // Shots run in batches between status readbacks; a signal or a due checkpoint is handled

@@ -45,6 +45,18 @@ double imageError(const Image& image, const Image& reference) {
   return sum > 0 ? diff / sum : 0.0;
 }
 
+double imageRmsError(const Image& image, const Image& reference) {
+  if (image.rgb.size() != reference.rgb.size()) throw std::invalid_argument("imageRmsError: image sizes differ");
+  double squares = 0, sum = 0;
+  for (std::size_t p = 0; p + 2 < image.rgb.size(); p += 3) {
+    const double d = pixelLuminance(image.rgb, p) - pixelLuminance(reference.rgb, p);
+    squares += d * d;
+    sum += pixelLuminance(reference.rgb, p);
+  }
+  const double pixels = double(image.rgb.size() / 3);
+  return sum > 0 ? std::sqrt(squares / pixels) / (sum / pixels) : 0.0;
+}
+
 std::vector<unsigned char> toneMap(const Image& image, double scale) {
   std::vector<unsigned char> out(image.rgb.size());
   for (size_t i = 0; i < out.size(); ++i) {

@@ -18,6 +18,8 @@ double meanLuminance(const Image& image);
 // Mean |luminance difference| to `reference` over the pixels, relative to the reference's mean
 // luminance: the view error of camera paths and experiments. Same sizes required.
 double imageError(const Image& image, const Image& reference);
+// RMS of the per-pixel luminance difference over the reference's mean luminance (issue 19's measure).
+double imageRmsError(const Image& image, const Image& reference);
 // 8-bit sRGB of the linear image times `scale`.
 std::vector<unsigned char> toneMap(const Image& image, double scale);
 

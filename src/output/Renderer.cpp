@@ -31,6 +31,7 @@ Renderer::Renderer(const SolverState& state)
 void Renderer::updateAmbient() {
   gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch);
   state_.bindScene();
+  state_.radiosity.bindImage(0, GL_READ_ONLY);  // importance I in alpha: view-driven weighting
   state_.deltaB.bindImage(1, GL_READ_ONLY);
   ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
   ambientProgram_.use();

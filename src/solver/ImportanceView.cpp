@@ -21,7 +21,9 @@ ImportanceView::ImportanceView(SolverState& state, int resolution)
   update_.set("atlasSize", state.atlas.width, state.atlas.height);
 }
 
-void ImportanceView::look(const Camera& camera, double aspect) {
+bool ImportanceView::look(const Camera& camera, double aspect) {
+  if (looked_ && looked_->first == camera && looked_->second == aspect) return false;
+  looked_ = {camera, aspect};
   const int w = aspect >= 1 ? resolution_ : std::max(1, int(std::lround(resolution_ * aspect)));
   const int h = aspect >= 1 ? std::max(1, int(std::lround(resolution_ / aspect))) : resolution_;
   gl::Texture depth(GL_DEPTH_COMPONENT32F, w, h);
@@ -59,6 +61,7 @@ void ImportanceView::look(const Camera& camera, double aspect) {
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16), gl::groupsFor(unsigned(state_.atlas.height), 16));
   gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch | gl::Barrier::Storage);
   gl::checkErrors("importance view");
+  return true;
 }
 
 std::vector<float> ImportanceView::readDirect() const {

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fmt/format.h>
 
 #include "gl/Debug.h"
 #include "gl/Shader.h"
 #include "gl/State.h"
+#include "src/base/Error.h"
 
 namespace hemirad {
 
@@ -15,15 +17,18 @@ constexpr std::size_t kVec4 = 4 * sizeof(float);
 constexpr unsigned kFirstEpochs = 4;
 }  // namespace
 
-PerspectiveView::PerspectiveView(const SolverState& state, std::size_t blockCount, unsigned decayShots, int resolution)
+PerspectiveView::PerspectiveView(const SolverState& state, std::size_t blockCount, unsigned decayShots, double interest,
+                                 int resolution)
     : state_(state),
       blocks_(blockCount),
       surfaces_(state.scene.polygons().size()),
       decayShots_(std::max(1u, decayShots)),
+      byImportance_(interest > 0),
       resolution_(resolution),
       mesh_(state.scene, state.atlas),
       ids_(gl::renderProgram("camera.vert", "view_id.frag")),
       seenPass_(gl::computeProgram("view_surfaces.comp")),
+      importantPass_(gl::computeProgram("important_surfaces.comp")),
       pendingPass_(gl::computeProgram("pending_blocks.comp")),
       deferredPass_(gl::computeProgram("deferred_shooters.comp")),
       surfaceView_(surfaces_ * 2 * sizeof(std::uint32_t)),
@@ -35,6 +40,9 @@ PerspectiveView::PerspectiveView(const SolverState& state, std::size_t blockCoun
       epoch_(surfaces_, -1) {
   shotSoFar_.clear(0.0f);
   pendingPass_.set("blockCount", unsigned(blocks_));
+  double area = 0;
+  for (const auto& pa : state.atlas.positionArea) area += pa.w;
+  importantPass_.set("threshold", float(interest / area));
   uploadSurfaces(false);
 }
 
@@ -45,6 +53,8 @@ double PerspectiveView::simulatedFov() const {
 std::size_t PerspectiveView::surfacesInView() const { return std::size_t(std::count(visible_.begin(), visible_.end(), 1)); }
 
 void PerspectiveView::look(const Camera& camera, double aspect, unsigned shots) {
+  if (looked_ && camera == camera_ && aspect == aspect_) return;
+  looked_ = true;
   camera_ = camera;
   aspect_ = aspect;
   lookShots_ = shots;
@@ -82,7 +92,8 @@ bool PerspectiveView::update() {
   return true;
 }
 
-// Seed 004 §5.3: the surfaces with a pixel in a view of the simulated field of view.
+// Seed 004 §5.3: the surfaces with a pixel in a view of the simulated field of view, and those
+// whose light the view needs (importance above the interest threshold, important_surfaces.comp).
 std::vector<std::uint8_t> PerspectiveView::renderSeen() {
   const int w = aspect_ >= 1 ? resolution_ : std::max(1, int(std::lround(resolution_ * aspect_)));
   const int h = aspect_ >= 1 ? std::max(1, int(std::lround(resolution_ / aspect_))) : resolution_;
@@ -109,6 +120,13 @@ std::vector<std::uint8_t> PerspectiveView::renderSeen() {
   seen_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
   seenPass_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(w), 16), gl::groupsFor(unsigned(h), 16));
+  gl::barrier(gl::Barrier::Storage);
+  if (byImportance_) {
+    state_.bindScene();
+    state_.radiosity.bindImage(0, GL_READ_ONLY);
+    importantPass_.use();
+    gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16), gl::groupsFor(unsigned(state_.atlas.height), 16));
+  }
   gl::barrier(gl::Barrier::BufferUpdate);
   std::vector<std::uint32_t> seen(surfaces_);
   seen_.read(0, seen.size() * sizeof(std::uint32_t), seen.data());
@@ -219,6 +237,90 @@ void PerspectiveView::bind() const {
   shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
   if (snapshots_) snapshots_.bindBase(GL_SHADER_STORAGE_BUFFER, 8);
   else shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, 8);  // no epoch yet: never read, but bound
+}
+
+}  // namespace hemirad
+
+namespace hemirad {
+
+namespace {
+
+// Plain little-endian-as-in-memory fields, in a fixed order (checkpoints stay on one machine kind).
+struct Writer {
+  std::vector<std::uint8_t> bytes;
+  template <class T> void put(const T& v) { putBytes(&v, sizeof v); }
+  template <class T> void putVector(const std::vector<T>& v) {
+    put(std::uint64_t(v.size()));
+    putBytes(v.data(), v.size() * sizeof(T));
+  }
+  void putBytes(const void* p, std::size_t n) {
+    if (n) bytes.insert(bytes.end(), static_cast<const std::uint8_t*>(p), static_cast<const std::uint8_t*>(p) + n);
+  }
+};
+
+struct Reader {
+  std::span<const std::uint8_t> bytes;
+  std::size_t at = 0;
+  void getBytes(void* p, std::size_t n) {
+    if (n > bytes.size() - at) throw InputError("checkpoint: perspective view state is corrupt");
+    if (n) std::memcpy(p, bytes.data() + at, n);
+    at += n;
+  }
+  template <class T> T get() {
+    T v;
+    getBytes(&v, sizeof v);
+    return v;
+  }
+  template <class T> std::vector<T> getVector(std::size_t most) {
+    const auto n = get<std::uint64_t>();
+    if (n > most) throw InputError("checkpoint: perspective view state is corrupt");
+    std::vector<T> v(n);
+    getBytes(v.data(), n * sizeof(T));
+    return v;
+  }
+};
+
+}  // namespace
+
+std::vector<std::uint8_t> PerspectiveView::save() const {
+  Writer w;
+  w.put(std::uint64_t(blocks_)), w.put(std::uint64_t(surfaces_));
+  w.put(camera_), w.put(aspect_), w.put(lookShots_), w.put(looked_), w.put(step_);
+  w.put(pending_view_), w.put(delivering_), w.put(newEpoch_), w.put(std::uint64_t(deferred_)), w.put(std::uint64_t(next_));
+  w.put(births_), w.put(capacity_);
+  w.putVector(visible_), w.putVector(epoch_), w.putVector(epochBirth_), w.putVector(entering_), w.putVector(staysOut_);
+  std::vector<glm::vec4> table(blocks_ * (1 + std::size_t(capacity_)));
+  shotSoFar_.read(0, blocks_ * kVec4, table.data());
+  if (capacity_) snapshots_.read(0, std::size_t(capacity_) * blocks_ * kVec4, table.data() + blocks_);
+  w.putVector(table);
+  std::vector<std::uint32_t> deferred(deferred_);
+  if (deferred_) deferredBlocks_.read(0, deferred_ * sizeof(std::uint32_t), deferred.data());
+  w.putVector(deferred);
+  return std::move(w.bytes);
+}
+
+void PerspectiveView::restore(std::span<const std::uint8_t> bytes) {
+  Reader r{bytes};
+  if (r.get<std::uint64_t>() != blocks_ || r.get<std::uint64_t>() != surfaces_)
+    throw InputError("checkpoint: perspective view state is of another scene");
+  camera_ = r.get<Camera>(), aspect_ = r.get<double>(), lookShots_ = r.get<unsigned>(), looked_ = r.get<bool>();
+  step_ = r.get<int>(), pending_view_ = r.get<bool>(), delivering_ = r.get<bool>(), newEpoch_ = r.get<int>();
+  deferred_ = std::size_t(r.get<std::uint64_t>()), next_ = std::size_t(r.get<std::uint64_t>());
+  births_ = r.get<std::uint64_t>(), capacity_ = r.get<unsigned>();
+  visible_ = r.getVector<std::uint8_t>(surfaces_), epoch_ = r.getVector<int>(surfaces_);
+  epochBirth_ = r.getVector<std::uint64_t>(kMaxEpochs);
+  entering_ = r.getVector<std::uint32_t>(surfaces_), staysOut_ = r.getVector<std::uint8_t>(surfaces_);
+  const std::vector<glm::vec4> table = r.getVector<glm::vec4>(blocks_ * (1 + kMaxEpochs));
+  const std::vector<std::uint32_t> deferred = r.getVector<std::uint32_t>(blocks_);
+  if (r.at != bytes.size() || visible_.size() != surfaces_ || epoch_.size() != surfaces_ ||
+      epochBirth_.size() != capacity_ || table.size() != blocks_ * (1 + std::size_t(capacity_)) ||
+      deferred.size() != deferred_ || next_ > deferred_ || staysOut_.size() != entering_.size())
+    throw InputError("checkpoint: perspective view state is corrupt");
+  shotSoFar_.upload(0, blocks_ * kVec4, table.data());
+  snapshots_ = capacity_ ? gl::Buffer(std::size_t(capacity_) * blocks_ * kVec4) : gl::Buffer();
+  if (capacity_) snapshots_.upload(0, std::size_t(capacity_) * blocks_ * kVec4, table.data() + blocks_);
+  if (deferred_) deferredBlocks_.upload(0, deferred_ * sizeof(std::uint32_t), deferred.data());
+  uploadSurfaces(delivering_);
 }
 
 }  // namespace hemirad

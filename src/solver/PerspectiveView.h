@@ -15,6 +15,7 @@
 #pragma once
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "gl/Objects.h"
@@ -30,10 +31,15 @@ class PerspectiveView {
   static constexpr unsigned kMaxEpochs = 64;  // live snapshots; the oldest is delivered beyond that
   static constexpr unsigned kNoStep = std::numeric_limits<unsigned>::max();
 
-  // `resolution`: pixels of the visibility view's longer side.
-  PerspectiveView(const SolverState& state, std::size_t blockCount, unsigned decayShots, int resolution = 256);
+
+  // `resolution`: pixels of the visibility view's longer side. `interest`: a surface with
+  // received importance I - R above interest / (total area) somewhere (1: the view's importance
+  // spread evenly) is in the area of interest wherever it is; 0: only the simulated field of view.
+  PerspectiveView(const SolverState& state, std::size_t blockCount, unsigned decayShots, double interest = 0,
+                  int resolution = 256);
 
   // A camera move at `shots` shots: the simulated field of view restarts at the camera's.
+  // The view it already has is no move (a resumed solve looks again): nothing changes.
   void look(const Camera& camera, double aspect, unsigned shots);
   // Shots left until the simulated field of view next grows; kNoStep once it holds everything.
   unsigned shotsToNextStep(unsigned shots) const;
@@ -61,6 +67,11 @@ class PerspectiveView {
   // Binds the surface view (6), shots so far (7) and snapshots (8) for select.comp and gather.comp.
   void bind() const;
 
+  // Checkpoints: the whole state (view, epochs, table, deliveries under way), so a resumed
+  // solve goes on bitwise. restore() throws InputError for bytes of another scene.
+  std::vector<std::uint8_t> save() const;
+  void restore(std::span<const std::uint8_t> bytes);
+
  private:
   void applyView();
   std::vector<std::uint8_t> renderSeen();
@@ -70,15 +81,17 @@ class PerspectiveView {
   const SolverState& state_;
   std::size_t blocks_, surfaces_;
   unsigned decayShots_;
+  bool byImportance_;
   int resolution_;
   CameraMesh mesh_;
-  gl::Program ids_, seenPass_, pendingPass_, deferredPass_;
+  gl::Program ids_, seenPass_, importantPass_, pendingPass_, deferredPass_;
   gl::Buffer surfaceView_, shotSoFar_, snapshots_, seen_, pending_, deferredBlocks_;
   unsigned capacity_ = 0;  // snapshot slots allocated
 
   Camera camera_;
   double aspect_ = 1;
   unsigned lookShots_ = 0;
+  bool looked_ = false;
   int step_ = kSteps;  // until the first look() everything is in view
   std::vector<std::uint8_t> visible_;
   std::vector<int> epoch_;                // per surface: the epoch its entries started, -1 none

@@ -56,7 +56,8 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   gather_ = gl::computeProgram("gather.comp", gatherDefines);
   if (perspective) {
     perspective_ = std::make_unique<PerspectiveView>(
-        state, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep));
+        state, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep),
+        settings.viewInterest);
     gather_.set("blockCount", unsigned(blockCount_));
   }
   setUpControl(settings.stop, keep);
@@ -122,7 +123,7 @@ void ProgressiveSolver::setUpControl(const StopRule& stop, unsigned keep) {
 
 ProgressiveSolver::~ProgressiveSolver() = default;
 
-void ProgressiveSolver::selectPass() {
+void ProgressiveSolver::selectPass(bool importanceOnly) {
   state_.bindScene();
   state_.radiosity.bindImage(0, GL_READ_ONLY);
   state_.deltaB.bindImage(1, GL_READ_ONLY);
@@ -133,13 +134,26 @@ void ProgressiveSolver::selectPass() {
   stats_.use();
   gl::Program::dispatch(unsigned(blockCount_));
   gl::barrier(gl::Barrier::Storage);
-  rankPass(settings_.importanceDriven() ? Rank::PowerByImportance : Rank::Power, false);
+  if (!importanceOnly) rankPass(settings_.importanceDriven() ? Rank::PowerByImportance : Rank::Power, false);
   if (settings_.importanceDriven()) rankPass(Rank::Importance, true);
+}
+
+// Importance shooters only, no radiosity shot (the pass's radiosity count is 0).
+void ProgressiveSolver::importancePass() {
+  const std::uint32_t none = 0;
+  control_.upload(offsetof(ControlBlock, count), sizeof none, &none);
+  selectPass(true);
+  itemBuffer_->render(control_);
+  gatherPass(Receivers::InView);  // no radiosity shooter: only importance moves
+  readStatus();
 }
 
 void ProgressiveSolver::look(const Camera& camera, double aspect) {
   if (!view_) throw std::logic_error("look() needs an importance-driven solver");
-  view_->look(camera, aspect);
+  // A fresh solve shoots the view's importance once before any light, so that its first
+  // radiosity ranking already knows which lights the view needs (seed 004 §4.2.5 shoots
+  // importance, then ranks radiosity by it); later passes propagate both together.
+  if (view_->look(camera, aspect) && status_.shots == 0 && importanceShots_ == 0) importancePass();
   if (perspective_) {
     perspective_->look(camera, aspect, status_.shots);
     // The new view's deliveries may bring light: a finished solve has work again.
@@ -148,14 +162,16 @@ void ProgressiveSolver::look(const Camera& camera, double aspect) {
 }
 
 // Seed 004 §5.5.3: one item buffer per block with entries for the surfaces entering the view,
-// up to K a pass, each entering surface receiving its own entry (Receivers::Entering).
-// Applies a waiting view first; uses at most `budget` item buffers and returns how many.
+// K a pass (fewer in the last), each entering surface receiving its own entry (Receivers::Entering).
+// Applies a waiting view first; delivers while fewer than `budget` item buffers are used and
+// returns how many were (whole passes, like shots: the grouping, and so the result, never
+// depends on the batch sizes, which a resumed solve does not repeat).
 unsigned ProgressiveSolver::deliverStored(unsigned budget) {
   const unsigned K = unsigned(settings_.shootersPerPass);
   unsigned used = 0;
   perspective_->update();
   while (used < budget && perspective_->delivering()) {
-    const unsigned n = unsigned(std::min<std::size_t>({K, budget - used, perspective_->deliveriesLeft()}));
+    const unsigned n = unsigned(std::min<std::size_t>(K, perspective_->deliveriesLeft()));
     perspective_->describeDeliveries(n, nodes_, control_);
     itemBuffer_->render(control_);
     gatherPass(Receivers::Entering);
@@ -233,7 +249,7 @@ SolveStatus ProgressiveSolver::advance(unsigned shots) {
 // the batch sizes asked for.
 void ProgressiveSolver::advancePerspective(unsigned budget) {
   while (budget > 0) {
-    budget -= deliverStored(budget);
+    budget -= std::min(budget, deliverStored(budget));
     if (budget == 0 || perspective_->delivering()) return;
     if (status_.done) {
       if (!openWholeView()) return;
@@ -280,7 +296,8 @@ void ProgressiveSolver::runPasses(unsigned passes) {
 }
 
 // State bytes: the control block's header, the convergence history, then (importance-driven)
-// the direct importance R per atlas texel.
+// the direct importance R per atlas texel, then (perspective-driven) the view's state
+// (PerspectiveView::save()), the delivery shots so far and the size of those two.
 std::vector<std::uint8_t> ProgressiveSolver::saveState() const {
   constexpr std::size_t header = offsetof(ControlBlock, shooter);
   const std::size_t history = std::min(status_.shots + 1, historyCapacity_) * sizeof(float);
@@ -290,11 +307,30 @@ std::vector<std::uint8_t> ProgressiveSolver::saveState() const {
   control_.read(sizeof(ControlBlock), history, bytes.data() + header);
   if (!direct.empty())  // memcpy from an empty vector's null data() is UB (UBSan, ci/sanitize)
     std::memcpy(bytes.data() + header + history, direct.data(), direct.size() * sizeof(float));
+  if (perspective_) {
+    std::vector<std::uint8_t> view = perspective_->save();
+    const auto* delivered = reinterpret_cast<const std::uint8_t*>(&deliveryShots_);
+    view.insert(view.end(), delivered, delivered + sizeof deliveryShots_);
+    const std::uint64_t size = view.size();
+    bytes.insert(bytes.end(), view.begin(), view.end());
+    bytes.insert(bytes.end(), reinterpret_cast<const std::uint8_t*>(&size), reinterpret_cast<const std::uint8_t*>(&size + 1));
+  }
   return bytes;
 }
 
 SolveStatus ProgressiveSolver::restoreState(std::span<const std::uint8_t> bytes) {
   constexpr std::size_t header = offsetof(ControlBlock, shooter);
+  if (perspective_) {  // its state sits at the end, followed by its size
+    std::uint64_t size = 0;
+    if (bytes.size() < sizeof size) throw InputError("checkpoint: progressive solver state is corrupt");
+    std::memcpy(&size, bytes.data() + bytes.size() - sizeof size, sizeof size);
+    if (size < sizeof deliveryShots_ || size > bytes.size() - sizeof size)
+      throw InputError("checkpoint: progressive solver state is corrupt");
+    const std::size_t at = bytes.size() - sizeof size - std::size_t(size), view = std::size_t(size) - sizeof deliveryShots_;
+    perspective_->restore(bytes.subspan(at, view));
+    std::memcpy(&deliveryShots_, bytes.data() + at + view, sizeof deliveryShots_);
+    bytes = bytes.first(at);
+  }
   const std::size_t direct = view_ ? state_.atlas.positionArea.size() * sizeof(float) : 0;
   ControlBlock c{};
   if (bytes.size() < header + direct || (bytes.size() - header - direct) % sizeof(float) != 0)

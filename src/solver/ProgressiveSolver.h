@@ -37,8 +37,8 @@ struct ProgressiveSettings {
   int shootersPerPass = 16;
   // Importance-driven shooting (seed 004 §4.2, `--algorithm importance`): each pass also
   // shoots importance from as many blocks, and radiosity shooters are ranked by unshot power x
-  // (largest importance in the block + importanceFloor / total area). The floor lets power
-  // nobody looks at be shot in the end, so the solve still converges everywhere.
+  // (largest received importance I - R in the block + importanceFloor / total area). The floor
+  // lets power nobody looks at be shot in the end, so the solve still converges everywhere.
   Algorithm algorithm = Algorithm::Progressive;
   double importanceFloor = 0.01;
   bool importanceDriven() const { return algorithm != Algorithm::Progressive; }
@@ -46,6 +46,11 @@ struct ProgressiveSettings {
   // view grows to the whole scene over this many shots (0: a quarter of the scene's shooter
   // blocks, at least 8 passes). The thesis counted seconds; shots keep runs reproducible.
   unsigned fovDecayShots = 0;
+  // Perspective-driven: surfaces whose received importance I - R exceeds viewInterest / (total area) (1: the
+  // view's importance spread evenly) are in the area of interest too, in view or not, so the
+  // light that reaches the view through surfaces out of it is not held back (issue 19: without
+  // it the ceiling over the camera lit nothing). 0: the simulated field of view only (the thesis).
+  double viewInterest = 1.0;
   // Per-pass times: GPU stamps on a sample of the passes, every shot synchronised, or none.
   gl::TimerMode timings = gl::TimerMode::Gpu;
   StopRule stop;
@@ -82,7 +87,7 @@ class ProgressiveSolver final : public Solver {
   // What a ranking orders the blocks by (reduce_entry.glsl's rankBy).
   enum class Rank : unsigned {
     Power = 0,                // unshot power: plain progressive refinement
-    PowerByImportance = 1,    // unshot power x (largest importance + floor), seed 004 §4.2.4
+    PowerByImportance = 1,    // unshot power x (largest I - R + floor), seed 004 §4.2.4
     Importance = 2,           // |unshot importance| x area: the importance shooters
   };
   // Who receives a gather (gather.comp's viewMode; perspective-driven solves only).
@@ -94,9 +99,10 @@ class ProgressiveSolver final : public Solver {
   void setUpTree(const std::vector<ShooterBlock>& blocks, const gl::Defines& defines);
   void setUpReduction(unsigned keep, const gl::Defines& defines);
   void setUpControl(const StopRule& stop, unsigned keep);
-  void selectPass();
+  void selectPass(bool importanceOnly = false);  // the stats, then the rankings and choices
   void rankPass(Rank rank, bool importanceShooters);
   void gatherPass(Receivers receivers);
+  void importancePass();  // importance shooters only: the view's importance one shot further
   void runPasses(unsigned passes);
   // Perspective-driven: item buffers for deliveries and for shots share `budget`.
   void advancePerspective(unsigned budget);

@@ -1,5 +1,6 @@
 #include "src/walk/Experiment.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -33,6 +34,7 @@ struct Run {
   std::string scene, algorithm;
   std::size_t elements = 0;
   unsigned referenceShots = 0;
+  bool still = false;  // the camera never moves: error against shots is the measure
   std::vector<FrameRecord> frames;
 };
 
@@ -51,14 +53,17 @@ double meanOf(const Run& run, double FrameRecord::*field) {
 std::string summaryMarkdown(const std::vector<Run>& runs, const ExperimentOptions& o, const std::string& renderer) {
   std::string md = fmt::format(
       "# Seed 004's experiments, measured by hemirad\n\n"
-      "`hemirad experiment` on {}: each algorithm walks the scene's camera path (SCENE.path) at {} frames per "
-      "path second with {} ms of solver time per frame; every frame is compared with progressive refinement "
+      "`hemirad experiment` on {}: each algorithm walks the camera path ({}) at {} frames per "
+      "path second with {} per frame; every frame is compared with progressive refinement "
       "converged to {}. Times are solver milliseconds (with the frame's `look()`), shots are radiosity shots.\n\n"
       "Lighting events: the first frame at which the visible convergence (light in the frame / light in the "
       "converged frame) or the image error (mean |luminance difference| / mean luminance, of B without the ambient "
       "term) reaches a threshold; `-` never on the path. The error with ambient is that of the frames as shown "
       "with seed 004's ambient term.\n\n",
-      renderer, o.walkthrough.fps, o.walkthrough.frameMs, o.referenceConvergence);
+      renderer, o.cameraPath.empty() ? "SCENE.path" : o.cameraPath, o.walkthrough.fps,
+      o.walkthrough.frameShots ? fmt::format("{} shots", o.walkthrough.frameShots)
+                               : fmt::format("{} ms of solver time", o.walkthrough.frameMs),
+      o.referenceConvergence);
   md += "| scene | elements | algorithm | shots | deliveries | mean image error | mean error with ambient | mean visible convergence |";
   for (const LightingEvent& e : kEvents) md += fmt::format(" {} (ms / shots) |", e.name);
   md += "\n|---|---|---|---|---|---|---|---|";
@@ -78,21 +83,77 @@ std::string summaryMarkdown(const std::vector<Run>& runs, const ExperimentOption
   return md;
 }
 
+// Issue 19's measures. A still camera: the shots each view-driven algorithm needs to reach the
+// image error progressive refinement has after N shots (N = 64, 128, ...), the first frame
+// whose error is as low. A moving one: frame by frame, how often one algorithm's frame is at
+// least as good as another's, and the mean ratio of their errors.
+std::string winsMarkdown(const std::vector<Run>& runs) {
+  std::string still, moving;
+  for (const Run& p : runs) {
+    if (p.algorithm != "progressive") continue;
+    for (const Run& a : runs) {
+      if (a.scene != p.scene || a.algorithm == "progressive") continue;
+      if (p.still) {
+        for (unsigned n = 64; n <= p.frames.back().shots; n *= 2) {
+          const FrameRecord& at = *std::find_if(p.frames.begin(), p.frames.end(), [n](const FrameRecord& r) { return r.shots >= n; });
+          const FrameRecord* reach = nullptr;
+          for (const FrameRecord& r : a.frames)
+            if (!reach && r.imageError <= at.imageError) reach = &r;
+          still += reach ? fmt::format("| {} | {} | {} | {:.4f} | {} | {:.1f} |\n", p.scene, a.algorithm, at.shots,
+                                       at.imageError, reach->shots, double(at.shots) / reach->shots)
+                         : fmt::format("| {} | {} | {} | {:.4f} | - | - |\n", p.scene, a.algorithm, at.shots, at.imageError);
+        }
+        continue;
+      }
+      for (const Run& b : runs) {
+        if (b.scene != a.scene || b.algorithm == a.algorithm || (a.algorithm == "importance" && b.algorithm != "progressive"))
+          continue;
+        std::size_t asGood = 0;
+        double ratio = 0;
+        for (std::size_t f = 0; f < a.frames.size() && f < b.frames.size(); ++f) {
+          asGood += a.frames[f].imageError <= b.frames[f].imageError;
+          ratio += a.frames[f].imageError / std::max(b.frames[f].imageError, 1e-12);
+        }
+        moving += fmt::format("| {} | {} vs {} | {} of {} | {:.3f} |\n", a.scene, a.algorithm, b.algorithm, asGood,
+                              a.frames.size(), ratio / double(a.frames.size()));
+      }
+    }
+  }
+  std::string md;
+  if (!still.empty())
+    md += "\n## Shots to progressive refinement's error (still camera)\n\n"
+          "| scene | algorithm | progressive shots N | its image error | shots to reach it | N / shots |\n"
+          "|---|---|---|---|---|---|\n" + still;
+  if (!moving.empty())
+    md += "\n## Frame by frame (moving camera)\n\n"
+          "| scene | algorithms | frames with error at most the other's | mean error ratio |\n|---|---|---|---|\n" + moving;
+  return md;
+}
+
 void plotScene(Figures& figures, const std::string& out, const std::string& scene, const std::vector<Run>& runs) {
+  const std::string yLabel = "image error vs converged (mean |dL| / mean L)";
   LinePlot error{scene + ": image error along the path", "solver time (s)", "image error vs converged", false, true, {}};
   LinePlot visible{scene + ": visible convergence along the path", "solver time (s)", "light in frame / converged", false, false, {}};
+  LinePlot byShots{scene + ": image error against shots", "radiosity shots", yLabel, true, true, {}};
+  LinePlot byTime{scene + ": image error against solver time", "solver time (ms)", yLabel, true, true, {}};
   for (const Run& run : runs) {
     if (run.scene != scene) continue;
-    PlotSeries e{run.algorithm, {}, {}}, v{run.algorithm, {}, {}};
+    PlotSeries e{run.algorithm, {}, {}}, v{run.algorithm, {}, {}}, s{run.algorithm, {}, {}}, t{run.algorithm, {}, {}};
     for (const FrameRecord& r : run.frames) {
       e.x.push_back(r.solveMs / 1e3), e.y.push_back(std::max(r.imageError, 1e-4));
       v.x.push_back(r.solveMs / 1e3), v.y.push_back(r.visibleConvergence);
+      s.x.push_back(r.shots), s.y.push_back(r.imageError);
+      t.x.push_back(r.solveMs), t.y.push_back(r.imageError);
     }
     error.series.push_back(e);
     visible.series.push_back(v);
+    byShots.series.push_back(s);
+    byTime.series.push_back(t);
   }
   figures.add(out + "/" + scene + "_image_error", error);
   figures.add(out + "/" + scene + "_visible_convergence", visible);
+  figures.add(out + "/" + scene + "_error_vs_shots", byShots);
+  figures.add(out + "/" + scene + "_error_vs_time", byTime);
 }
 
 }  // namespace
@@ -110,7 +171,8 @@ int runExperiment(ExperimentOptions o) {
     const Scene scene = loadScene(path);
     validateSolvable(scene);
     const std::string name = std::filesystem::path(path).stem().string();
-    const std::string pathFile = std::filesystem::path(path).replace_extension(".path").string();
+    const std::string pathFile =
+        o.cameraPath.empty() ? std::filesystem::path(path).replace_extension(".path").string() : o.cameraPath;
     if (!std::filesystem::exists(pathFile)) throw InputError(fmt::format("{}: no camera path {} beside it", path, pathFile));
     const CameraPath cameraPath = readCameraPath(pathFile, resolveCamera(scene, std::nullopt));
     const Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, o.elements), backend->maxTextureSize());
@@ -124,7 +186,9 @@ int runExperiment(ExperimentOptions o) {
       ProgressiveSolver solver(state, settings);
       WalkthroughOptions w = o.walkthrough;
       w.framesDir = o.frames ? fmt::format("{}/{}_{}", o.out, name, algorithm) : "";
-      Run run{name, algorithm, atlas.elements, converged.shots(), walk(solver, state, cameraPath, converged, w)};
+      const bool still = std::all_of(cameraPath.keys.begin(), cameraPath.keys.end(),
+                                     [&](const auto& k) { return k.camera == cameraPath.keys.front().camera; });
+      Run run{name, algorithm, atlas.elements, converged.shots(), still, walk(solver, state, cameraPath, converged, w)};
       writeFramesCsv(fmt::format("{}/{}_{}.csv", o.out, name, algorithm), run.frames);
       const FrameRecord& last = run.frames.back();
       fmt::print(stderr, "hemirad: {} {}: {} frames, {} shots, mean image error {:.4f}\n", name, algorithm,
@@ -143,7 +207,7 @@ int runExperiment(ExperimentOptions o) {
   Figures figures(provenance(backend->name(), backend->renderer()));
   for (const std::string& name : names) plotScene(figures, o.out, name, runs);
   figures.write();
-  const std::string md = summaryMarkdown(runs, o, fmt::format("{} ({})", backend->name(), backend->renderer()));
+  const std::string md = summaryMarkdown(runs, o, fmt::format("{} ({})", backend->name(), backend->renderer())) + winsMarkdown(runs);
   writeTextFile(o.out + "/summary.md", md);
   fmt::print("{}", md);
   return 0;

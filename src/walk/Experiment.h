@@ -21,6 +21,7 @@ struct ExperimentOptions {
   double referenceConvergence = 0.99;
   ProgressiveSettings progressive;
   WalkthroughOptions walkthrough;  // fps, frame budget, frame size
+  std::string cameraPath;          // instead of SCENE.path beside each scene (e.g. a still camera)
   std::string out = "docs/experiments";  // --out-dir
   bool frames = false;             // also keep every frame's PNG
   gl::BackendOptions backend;

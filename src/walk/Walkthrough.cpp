@@ -67,6 +67,8 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
     r.visibleConvergence = seen > 0 ? meanLuminance(plain) / seen : 1.0;
     r.imageError = imageError(plain, reference);
     r.shownError = imageError(shown, reference);
+    r.imageRms = imageRmsError(plain, reference);
+    r.shownRms = imageRmsError(shown, reference);
     if (!o.framesDir.empty()) {
       if (f == 0) scale = exposureScale(reference, o.exposure);  // one exposure: frames compare
       writePng(fmt::format("{}/frame_{:04d}.png", o.framesDir, f), shown, scale);
@@ -77,11 +79,11 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
 }
 
 void writeFramesCsv(const std::string& path, const std::vector<FrameRecord>& frames) {
-  std::string out = "frame,time_s,solve_ms,shots,importance_shots,delivery_shots,convergence,visible_convergence,image_error,shown_error\n";
+  std::string out = "frame,time_s,solve_ms,shots,importance_shots,delivery_shots,convergence,visible_convergence,image_error,shown_error,image_rms,shown_rms\n";
   for (const FrameRecord& r : frames)
-    out += fmt::format("{},{:.4f},{:.2f},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f}\n", r.frame, r.time, r.solveMs, r.shots,
-                       r.importanceShots, r.deliveryShots, r.convergence, r.visibleConvergence, r.imageError,
-                       r.shownError);
+    out += fmt::format("{},{:.4f},{:.2f},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", r.frame, r.time, r.solveMs,
+                       r.shots, r.importanceShots, r.deliveryShots, r.convergence, r.visibleConvergence, r.imageError,
+                       r.shownError, r.imageRms, r.shownRms);
   writeTextFile(path, out);
 }
 

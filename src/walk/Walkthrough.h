@@ -34,6 +34,7 @@ struct FrameRecord {
   double visibleConvergence = 0;
   double imageError = 0;       // of the frame's B (no ambient term) vs the converged frame (Image.h)
   double shownError = 0;       // of the frame as shown (with the ambient term if on)
+  double imageRms = 0, shownRms = 0;  // the same two as relative RMS (imageRmsError)
 };
 
 // The converged solution (progressive refinement), rendered from any camera: the reference.

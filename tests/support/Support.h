@@ -23,7 +23,7 @@ Scene cube(double rho, double E, int lampFace = -1);
 
 struct Solved {
   Atlas atlas;
-  std::vector<glm::vec4> B, dB;  // alpha: importance I and unshot importance dI
+  std::vector<glm::vec4> B, dB;  // alpha: received importance I - R and unshot importance dI
   std::vector<float> direct;     // importance-driven: R per atlas texel
   Image view;                    // with a camera: the solution seen from it, 128 x 128
   SolveStatus status;
