@@ -245,6 +245,71 @@ void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const
 
 }  // namespace
 
+// Frames per second of instant radiosity per VPL count and interleave (seed 002's Figure 5 beside).
+template <class Say>
+void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
+  say(fmt::format("hemirad bench, {}, {} ({}), instant radiosity (seed 002)\n\n", date, backend.name(),
+                  backend.renderer()));
+  const nlohmann::json rows = benchInstant(backend, o, say);
+  if (!o.json.empty())
+    writeTextFile(o.json, nlohmann::json{{"date", date}, {"backend", backend.name()}, {"renderer", backend.renderer()},
+                                         {"method", "instant"}, {"width", o.width}, {"height", o.height},
+                                         {"frames_per_row", o.iterations}, {"shadow_resolution", o.instant.shadowResolution},
+                                         {"rows", rows},
+                                         {"provenance", provenanceJson(provenance(backend.name(), backend.renderer()))}}
+                                 .dump(2) + "\n");
+}
+
+// Time to convergence per scene, element count and shooters a pass, against the measured ceilings.
+template <class Say>
+void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
+  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, {} item buffer {}\n\n",
+                  date, backend.name(), backend.renderer(), algorithmName(o.progressive.algorithm), o.converge,
+                  printedSetting(o.progressive.shootLevel, kAutoShootLevel), o.progressive.itemSubdivision, o.projection,
+                  printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
+  Ceilings ceiling;
+  if (o.ceiling) {
+    ceiling = measureCeilings(backend, o.scenes.front());
+    say(fmt::format("ceilings: {:.3g} load-store invocations/s, {:.3g} item-buffer triangles/s (first scene, item "
+                    "mesh L6), {:.3g} item-buffer fragments/s (fill)\n\n",
+                    ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.fragmentsPerSecond));
+  }
+  say(tableHeader(o));
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& path : o.scenes) {
+    Scene scene = loadScene(path);
+    validateSolvable(scene);
+    for (std::size_t n : o.elements) {
+      Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, n), backend.maxTextureSize());
+      for (int k : o.shootersPerPass) {
+        BenchRow r = benchOne(backend, scene, atlas, k, o);
+        r.scene = path;
+        say(rowMarkdown(r, o.ceiling ? &ceiling : nullptr));
+        rows.push_back(rowJson(r));
+      }
+    }
+  }
+  if (!o.compare.empty()) say(comparisonTable(rows, o.compare));
+  if (!o.json.empty()) {
+    nlohmann::json out = {{"date", date},
+                          {"backend", backend.name()},
+                          {"renderer", backend.renderer()},
+                          {"algorithm", algorithmName(o.progressive.algorithm)},
+                          {"converge", o.converge},
+                          {"shoot_level", o.progressive.shootLevel},
+                          {"item_subdivision", o.progressive.itemSubdivision},
+                          {"item_resolution", o.progressive.itemResolution},
+                          {"projection", projectionName(o.progressive.projection)},
+                          {"rows", rows},
+                          {"provenance", provenanceJson(provenance(backend.name(), backend.renderer()))}};
+    if (o.ceiling)
+      out["ceilings"] = {{"load_store_invocations_per_s", ceiling.invocationsPerSecond},
+                         {"item_buffer_triangles_per_s", ceiling.trianglesPerSecond},
+                         {"item_buffer_fragments_per_s", ceiling.fragmentsPerSecond}};
+    writeTextFile(o.json, out.dump(2) + "\n");
+  }
+}
+
 int runBench(BenchOptions o) {
   if (!o.json.empty()) checkWritable(o.json, "--json");
   if (!o.markdown.empty()) checkWritable(o.markdown, "--markdown");
@@ -261,70 +326,12 @@ int runBench(BenchOptions o) {
     std::fflush(stdout);
     text += s;
   };
-  if (o.method == Method::Instant) {
-    say(fmt::format("hemirad bench, {}, {} ({}), instant radiosity (seed 002)\n\n", date, backend->name(),
-                    backend->renderer()));
-    const nlohmann::json rows = benchInstant(*backend, o, say);
-    if (!o.json.empty())
-      writeTextFile(o.json, nlohmann::json{{"date", date}, {"backend", backend->name()}, {"renderer", backend->renderer()},
-                                           {"method", "instant"}, {"width", o.width}, {"height", o.height},
-                                           {"frames_per_row", o.iterations}, {"shadow_resolution", o.instant.shadowResolution},
-                                           {"rows", rows},
-                                           {"provenance", provenanceJson(provenance(backend->name(), backend->renderer()))}}
-                                   .dump(2) + "\n");
-    if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
-    return 0;
-  }
-  if (o.method == Method::Stochastic) {
+  if (o.method == Method::Instant)
+    runInstantBench(o, *backend, date, say);
+  else if (o.method == Method::Stochastic)
     runStochasticBench(o, *backend, date, say);
-    if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
-    return 0;
-  }
-  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, {} item buffer {}\n\n",
-                  date, backend->name(), backend->renderer(), algorithmName(o.progressive.algorithm), o.converge,
-                  printedSetting(o.progressive.shootLevel, kAutoShootLevel), o.progressive.itemSubdivision, o.projection,
-                  printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
-  Ceilings ceiling;
-  if (o.ceiling) {
-    ceiling = measureCeilings(*backend, o.scenes.front());
-    say(fmt::format("ceilings: {:.3g} load-store invocations/s, {:.3g} item-buffer triangles/s (first scene, item "
-                    "mesh L6), {:.3g} item-buffer fragments/s (fill)\n\n",
-                    ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.fragmentsPerSecond));
-  }
-  say(tableHeader(o));
-  nlohmann::json rows = nlohmann::json::array();
-  for (const auto& path : o.scenes) {
-    Scene scene = loadScene(path);
-    validateSolvable(scene);
-    for (std::size_t n : o.elements) {
-      Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, n), backend->maxTextureSize());
-      for (int k : o.shootersPerPass) {
-        BenchRow r = benchOne(*backend, scene, atlas, k, o);
-        r.scene = path;
-        say(rowMarkdown(r, o.ceiling ? &ceiling : nullptr));
-        rows.push_back(rowJson(r));
-      }
-    }
-  }
-  if (!o.compare.empty()) say(comparisonTable(rows, o.compare));
-  if (!o.json.empty()) {
-    nlohmann::json out = {{"date", date},
-                          {"backend", backend->name()},
-                          {"renderer", backend->renderer()},
-                          {"algorithm", algorithmName(o.progressive.algorithm)},
-                          {"converge", o.converge},
-                          {"shoot_level", o.progressive.shootLevel},
-                          {"item_subdivision", o.progressive.itemSubdivision},
-                          {"item_resolution", o.progressive.itemResolution},
-                          {"projection", projectionName(o.progressive.projection)},
-                          {"rows", rows},
-                          {"provenance", provenanceJson(provenance(backend->name(), backend->renderer()))}};
-    if (o.ceiling)
-      out["ceilings"] = {{"load_store_invocations_per_s", ceiling.invocationsPerSecond},
-                         {"item_buffer_triangles_per_s", ceiling.trianglesPerSecond},
-                         {"item_buffer_fragments_per_s", ceiling.fragmentsPerSecond}};
-    writeTextFile(o.json, out.dump(2) + "\n");
-  }
+  else
+    runProgressiveBench(o, *backend, date, say);
   if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
   return 0;
 }
