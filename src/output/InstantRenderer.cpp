@@ -126,10 +126,8 @@ const gl::Texture& InstantRenderer::result(Shading shading) const {
 void InstantRenderer::draw(const Camera& camera, int width, int height, Shading shading) {
   if (shadowsStale_ || !shadows_.rendered()) shadows_.render(), shadowsStale_ = false;
   resize(width, height);
-  // The camera's reversed-Z projection, its near plane in front of the whole scene (CameraMesh).
-  const glm::dvec3 outside = glm::max(glm::max(boundsMin_ - camera.eye, camera.eye - boundsMax_), glm::dvec3(0.0));
-  const double near = std::max(0.5 * glm::length(outside), 1e-6 * glm::length(boundsMax_ - boundsMin_));
-  const glm::mat4 vp = camera.viewProjection(double(width) / height, near);
+  // The camera's reversed-Z projection, its near plane in front of the whole scene.
+  const glm::mat4 vp = camera.viewProjection(double(width) / height, nearPlane(camera, boundsMin_, boundsMax_));
   gBuffer(vp);
   if (shading == Shading::Forward) colorTarget_.clearColor(0, 0, 0, 0);
   for (unsigned b = 0; b < shadows_.batches(); ++b) {
