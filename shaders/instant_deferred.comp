@@ -6,7 +6,7 @@
 // instant_filter.comp reads the blocks back in image order.
 #include "instant_shade.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 6) uniform sampler2D gPosition;  // xyz, w: polygon id + 1 (0: background)
+layout(binding = 6) uniform usampler2D gPolygon;  // polygon id + 1 (0: background)
 layout(rgba32f, binding = 0) uniform image2D shaded;  // de-interleaved: n x n blocks of sub
 uniform uint interleave;
 uniform ivec2 sub;  // a block's size: ceil(image / n)
@@ -15,9 +15,9 @@ void main() {
   ivec2 q = ivec2(gl_GlobalInvocationID.xy), n = ivec2(int(interleave));
   if (any(greaterThanEqual(q, sub * n))) return;
   ivec2 b = q / sub, p = (q % sub) * n + b;
-  if (any(greaterThanEqual(p, textureSize(gPosition, 0)))) return;  // padding of the last blocks
-  vec4 g = texelFetch(gPosition, p, 0);
+  if (any(greaterThanEqual(p, textureSize(gPolygon, 0)))) return;  // padding of the last blocks
+  uint id = texelFetch(gPolygon, p, 0).r;
   vec4 c = addEmission ? vec4(0.0) : imageLoad(shaded, q);
-  if (g.w != 0.0) c += shadeBatch(g.xyz, uint(g.w) - 1u, uint(b.x + n.x * b.y));
+  if (id != 0u) c += shadeBatch(surfacePoint(vec2(p) + 0.5, id - 1u), id - 1u, uint(b.x + n.x * b.y));
   imageStore(shaded, q, c);
 }

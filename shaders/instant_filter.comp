@@ -4,7 +4,7 @@
 // is an exact discontinuity test: light never blurs across an edge or onto another surface. A
 // pixel whose window leaves its polygon averages fewer subsets (each unbiased, noisier).
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 6) uniform sampler2D gPosition;  // w: polygon id + 1 (0: background)
+layout(binding = 6) uniform usampler2D gPolygon;  // polygon id + 1 (0: background)
 layout(rgba32f, binding = 0) readonly uniform image2D shaded;
 layout(rgba32f, binding = 1) writeonly uniform image2D filtered;
 uniform uint interleave;
@@ -14,9 +14,9 @@ uniform bool deinterleaved;  // `shaded` is in blocks (deferred) or image order 
 ivec2 stored(ivec2 p, int n) { return deinterleaved ? (p % n) * sub + p / n : p; }
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy), size = textureSize(gPosition, 0);
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy), size = textureSize(gPolygon, 0);
   if (any(greaterThanEqual(p, size))) return;
-  float id = texelFetch(gPosition, p, 0).w;
+  uint id = texelFetch(gPolygon, p, 0).r;
   int n = int(interleave), lo = -(n / 2);
   vec4 sum = vec4(0.0);
   float count = 0.0;
@@ -24,9 +24,9 @@ void main() {
     for (int dx = lo; dx < lo + n; ++dx) {
       ivec2 r = p + ivec2(dx, dy);
       if (any(lessThan(r, ivec2(0))) || any(greaterThanEqual(r, size))) continue;
-      if (texelFetch(gPosition, r, 0).w != id) continue;
+      if (texelFetch(gPolygon, r, 0).r != id) continue;
       sum += imageLoad(shaded, stored(r, n));
       count += 1.0;
     }
-  imageStore(filtered, p, id == 0.0 ? vec4(0.0) : sum / count);
+  imageStore(filtered, p, id == 0u ? vec4(0.0) : sum / count);
 }

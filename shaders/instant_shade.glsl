@@ -17,6 +17,17 @@ uniform uint interleaveM;  // n^2 VPL subsets
 uniform float maxGeometry;
 uniform float farDistance;
 uniform bool addEmission;  // the first batch adds E
+// The camera ray through window point w (pixel centres at .5) is eye + t (rayCorner + w.x rayDx +
+// w.y rayDy), set from the camera on the CPU in double.
+uniform vec3 eye, rayCorner, rayDx, rayDy;
+
+// The point of `polygon` seen through window point w: its plane met by the pixel's ray. Exact to
+// float rounding, where an interpolated position carries the rasterizer's own error too.
+vec3 surfacePoint(vec2 w, uint polygon) {
+  vec3 dir = rayCorner + w.x * rayDx + w.y * rayDy;
+  vec4 plane = polygons[polygon].normal;
+  return eye + dir * ((plane.w - dot(plane.xyz, eye)) / dot(plane.xyz, dir));
+}
 
 // Whether x (on `polygon`) is seen from VPL v (its shadow map: layer i). As the gather's
 // visibility (visibility.glsl), the map only nominates the occluder: the polygon nearest along

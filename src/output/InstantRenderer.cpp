@@ -50,23 +50,29 @@ void InstantRenderer::resize(int width, int height) {
   color_ = gl::Texture(GL_RGBA32F, width, height);
   shaded_ = gl::Texture(GL_RGBA32F, sub_.x * interleave_, sub_.y * interleave_);
   if (interleave_ > 1) filtered_ = gl::Texture(GL_RGBA32F, width, height);
-  position_ = gl::Texture(GL_RGBA32F, width, height);
+  polygon_ = gl::Texture(GL_R32UI, width, height);
   depth_ = gl::Texture(GL_DEPTH_COMPONENT32F, width, height);
   colorTarget_ = gl::Framebuffer();
   colorTarget_.attach(GL_COLOR_ATTACHMENT0, color_);
   colorTarget_.attach(GL_DEPTH_ATTACHMENT, depth_);
   colorTarget_.checkComplete("instant radiosity image");
   gTarget_ = gl::Framebuffer();
-  gTarget_.attach(GL_COLOR_ATTACHMENT0, position_);
+  gTarget_.attach(GL_COLOR_ATTACHMENT0, polygon_);
   gTarget_.attach(GL_DEPTH_ATTACHMENT, depth_);
   gTarget_.checkComplete("G-buffer");
   for (const gl::Program* p : {&deferred_, &filter_}) p->set("sub", sub_.x, sub_.y);
 }
 
-// The visible point and polygon per pixel; forward shading's depth pre-pass too (the same
-// vertex shader, invariant: its later passes meet these depths exactly).
-void InstantRenderer::gBuffer(const glm::mat4& vp) {
-  gTarget_.clearColor(0, 0, 0, 0);
+// The visible polygon per pixel, and the camera's pixel rays the shading passes meet its plane
+// with; forward shading's depth pre-pass too (the same vertex shader, invariant: its later passes
+// meet these depths exactly).
+void InstantRenderer::gBuffer(const Camera& camera, const glm::mat4& vp) {
+  const Camera::PixelRays rays = camera.pixelRays(width_, height_);
+  for (const gl::Program* p : {&forward_, &deferred_}) {
+    for (auto [name, v] : {std::pair{"eye", camera.eye}, {"rayCorner", rays.corner}, {"rayDx", rays.dx}, {"rayDy", rays.dy}})
+      p->set(name, float(v.x), float(v.y), float(v.z));
+  }
+  gTarget_.clearColor(std::uint32_t(0));
   gTarget_.clearDepth(0.0f);
   gTarget_.bind();
   gl::cameraView(width_, height_).apply();
@@ -100,7 +106,7 @@ void InstantRenderer::shadeForward(const glm::mat4& vp, unsigned batch) {
 
 void InstantRenderer::shadeDeferred(unsigned batch) {
   setBatch(deferred_, batch);
-  position_.bindUnit(6);
+  polygon_.bindUnit(6);
   shaded_.bindImage(0, GL_READ_WRITE);
   deferred_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(shaded_.width()), 8), gl::groupsFor(unsigned(shaded_.height()), 8));
@@ -109,7 +115,7 @@ void InstantRenderer::shadeDeferred(unsigned batch) {
 
 void InstantRenderer::filter(Shading shading) {
   if (shading == Shading::Forward) gl::barrier(gl::Barrier::Image | gl::Barrier::Framebuffer);
-  position_.bindUnit(6);
+  polygon_.bindUnit(6);
   (shading == Shading::Forward ? color_ : shaded_).bindImage(0, GL_READ_ONLY);
   filtered_.bindImage(1, GL_WRITE_ONLY);
   filter_.set("deinterleaved", int(shading == Shading::Deferred));
@@ -128,7 +134,7 @@ void InstantRenderer::draw(const Camera& camera, int width, int height, Shading 
   resize(width, height);
   // The camera's reversed-Z projection, its near plane in front of the whole scene.
   const glm::mat4 vp = camera.viewProjection(double(width) / height, nearPlane(camera, boundsMin_, boundsMax_));
-  gBuffer(vp);
+  gBuffer(camera, vp);
   if (shading == Shading::Forward) colorTarget_.clearColor(0, 0, 0, 0);
   for (unsigned b = 0; b < shadows_.batches(); ++b) {
     if (shading == Shading::Forward)
@@ -141,13 +147,13 @@ void InstantRenderer::draw(const Camera& camera, int width, int height, Shading 
 }
 
 std::vector<std::uint32_t> InstantRenderer::visiblePolygons() const {
-  std::vector<float> g(std::size_t(width_) * height_ * 4);
-  position_.read(GL_RGBA, GL_FLOAT, g.size() * sizeof(float), g.data());
-  std::vector<std::uint32_t> ids(std::size_t(width_) * height_);
+  std::vector<std::uint32_t> g(std::size_t(width_) * height_);
+  polygon_.read(GL_RED_INTEGER, GL_UNSIGNED_INT, g.size() * sizeof(std::uint32_t), g.data());
+  std::vector<std::uint32_t> ids(g.size());
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
-      const float w = g[(std::size_t(y) * width_ + x) * 4 + 3];
-      ids[std::size_t(height_ - 1 - y) * width_ + x] = w > 0 ? std::uint32_t(w) - 1 : kNoPolygon;
+      const std::uint32_t id = g[std::size_t(y) * width_ + x];
+      ids[std::size_t(height_ - 1 - y) * width_ + x] = id ? id - 1 : kNoPolygon;
     }
   return ids;
 }

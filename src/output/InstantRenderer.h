@@ -42,7 +42,7 @@ class InstantRenderer {
 
  private:
   void resize(int width, int height);
-  void gBuffer(const glm::mat4& vp);
+  void gBuffer(const Camera& camera, const glm::mat4& vp);
   void shadeForward(const glm::mat4& vp, unsigned batch);
   void shadeDeferred(unsigned batch);
   void filter(Shading shading);
@@ -61,7 +61,7 @@ class InstantRenderer {
   std::size_t sceneVertexCount_ = 0;
   int width_ = 0, height_ = 0;
   glm::ivec2 sub_{0};  // a de-interleaved block: ceil(size / n)
-  gl::Texture color_, shaded_, filtered_, position_, depth_;
+  gl::Texture color_, shaded_, filtered_, polygon_, depth_;  // polygon_: the G-buffer (id + 1)
   gl::Framebuffer colorTarget_, gTarget_;
 };
 

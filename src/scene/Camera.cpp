@@ -30,6 +30,13 @@ glm::mat4 Camera::viewProjection(double aspect, double near) const {
   return glm::mat4(proj * view);
 }
 
+Camera::PixelRays Camera::pixelRays(int width, int height) const {
+  // glm::lookAt's basis: forward f, right s, up u; window x maps to NDC 2 x / width - 1.
+  const glm::dvec3 f = glm::normalize(target - eye), s = glm::normalize(glm::cross(f, up)), u = glm::cross(s, f);
+  const double tanY = std::tan(glm::radians(fovY) / 2), tanX = tanY * double(width) / height;
+  return {f - s * tanX - u * tanY, s * (2 * tanX / width), u * (2 * tanY / height)};
+}
+
 Camera parseCamera(const std::string& text, const Camera& base, const std::string& what) {
   std::string clean;
   for (std::istringstream lines(text); !lines.eof();) {

@@ -16,6 +16,13 @@ struct Camera {
   bool operator==(const Camera&) const = default;
   // Reversed-Z view-projection with the far plane at infinity ([0, 1] clip depth, GL_GREATER).
   glm::mat4 viewProjection(double aspect, double near) const;
+  // The world direction (not normalised) of the ray through window point w of a width x height
+  // image (pixel centres at .5, rows bottom-up as GL's) is corner + w.x dx + w.y dy: the rays of
+  // viewProjection's pixels.
+  struct PixelRays {
+    glm::dvec3 corner, dx, dy;
+  };
+  PixelRays pixelRays(int width, int height) const;
 };
 
 // A near plane in front of everything within the bounds: half the eye's distance to them (any
