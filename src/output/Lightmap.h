@@ -14,8 +14,8 @@
 namespace hemirad {
 
 struct LightmapOptions {
-  int gutter = 2;       // texels around every chart
-  bool dilate = true;   // false: gutters and empty cells stay black (the old atlas; for comparisons)
+  int gutter = 2;        // texels around every chart
+  bool dilate = true;    // false: gutters and empty cells stay black (the old atlas; for comparisons)
   double maxAspect = 8;  // the longer side over the shorter, at most (where the charts allow)
 };
 
