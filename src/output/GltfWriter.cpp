@@ -160,7 +160,7 @@ tinygltf::Model model(const GltfPaths& paths, const Scene& scene, const Atlas& a
   m.images.push_back(image);
   tinygltf::Sampler sampler;  // bilinear, no mipmaps: a 2-texel gutter guards level 0 only
   sampler.magFilter = sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
-  sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;
+  sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;  // the border's gutters are cut away
   m.samplers.push_back(sampler);
   tinygltf::Texture texture;
   texture.source = 0;

@@ -1,55 +1,14 @@
 #include "src/output/Lightmap.h"
 
-#include <stb_rect_pack.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "src/base/Error.h"
+#include "src/output/ChartPacker.h"
 
 namespace hemirad {
 
 namespace {
-
-struct Packed {
-  int width = 0, height = 0;
-  std::vector<glm::ivec2> origins;  // of the padded rectangles
-};
-
-// stb_rect_pack's skyline packer into a strip `width` wide; the height is what it used.
-Packed packStrip(const std::vector<glm::ivec2>& sizes, int width, int heuristic) {
-  std::vector<stbrp_rect> rects(sizes.size());
-  for (std::size_t i = 0; i < sizes.size(); ++i) rects[i] = {int(i), sizes[i].x, sizes[i].y, 0, 0, 0};
-  std::vector<stbrp_node> nodes(std::size_t(width) + 1);
-  stbrp_context context;
-  stbrp_init_target(&context, width, 1 << 30, nodes.data(), int(nodes.size()));
-  stbrp_setup_heuristic(&context, heuristic);
-  if (!stbrp_pack_rects(&context, rects.data(), int(rects.size()))) return {};
-  Packed p{width, 0, std::vector<glm::ivec2>(sizes.size())};
-  for (const stbrp_rect& r : rects) {
-    p.origins[std::size_t(r.id)] = {r.x, r.y};
-    p.height = std::max(p.height, r.y + r.h);
-  }
-  return p;
-}
-
-// The strip width and skyline heuristic with the least area, over widths around the square root
-// of the charts' area; fixed candidates, so the layout is deterministic.
-Packed pack(const std::vector<glm::ivec2>& sizes) {
-  double area = 0;
-  int widest = 1;
-  for (glm::ivec2 s : sizes) area += double(s.x) * s.y, widest = std::max(widest, s.x);
-  const int side = std::max(widest, int(std::ceil(std::sqrt(area))));
-  Packed best;
-  for (int step = 0; step <= 16; ++step)
-    for (int heuristic : {STBRP_HEURISTIC_Skyline_BL_sortHeight, STBRP_HEURISTIC_Skyline_BF_sortHeight}) {
-      const int width = std::max(widest, int(std::ceil(side * (0.8 + 0.05 * step))));
-      Packed p = packStrip(sizes, width, heuristic);
-      if (p.width && (!best.width || double(p.width) * p.height < double(best.width) * best.height)) best = std::move(p);
-    }
-  if (!best.width) fail("the lightmap's charts do not pack");  // stb packs any set into an unbounded strip
-  return best;
-}
 
 // Fills every empty texel of one chart's padded rectangle (size `size`, `value` per texel,
 // `filled` marks) level by level outward from the elements: each takes the mean of its filled
@@ -92,8 +51,9 @@ void dilate(glm::ivec2 size, std::vector<glm::vec3>& value, std::vector<char>& f
   }
 }
 
-// Copies chart `c`'s elements into the lightmap at `origin` and, if asked, dilates them over
-// its cells without element and its gutter.
+// Copies chart `c`'s elements into the lightmap at its origin (transposed if so placed) and, if
+// asked, dilates them over its cells without element and its gutter; what falls outside the
+// image (the gutter on the border) is left out.
 void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, const Chart& c, int gutter, bool dilateGutter,
                Lightmap& map) {
   const glm::ivec2 size = c.size + 2 * gutter;
@@ -110,15 +70,21 @@ void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, const Chart&
     }
   if (dilateGutter) dilate(size, value, filled);
   const glm::ivec2 corner = map.origins[std::size_t(c.polygon)] - gutter;
+  const bool transposed = map.transposed[std::size_t(c.polygon)];
   for (int y = 0; y < size.y; ++y)
-    for (int x = 0; x < size.x; ++x)
-      map.rgb[std::size_t(corner.y + y) * map.width + std::size_t(corner.x + x)] = value[std::size_t(y) * size.x + x];
+    for (int x = 0; x < size.x; ++x) {
+      const glm::ivec2 t = corner + (transposed ? glm::ivec2(y, x) : glm::ivec2(x, y));
+      if (t.x < 0 || t.y < 0 || t.x >= map.width || t.y >= map.height) continue;
+      map.rgb[std::size_t(t.y) * map.width + std::size_t(t.x)] = value[std::size_t(y) * size.x + x];
+      ++map.chartTexels;
+    }
 }
 
 }  // namespace
 
 glm::dvec2 Lightmap::coord(const Atlas& atlas, int polygon, glm::dvec2 atlasCoord) const {
-  return atlasCoord - glm::dvec2(atlas.charts[std::size_t(polygon)].origin) + glm::dvec2(origins[std::size_t(polygon)]);
+  const glm::dvec2 local = atlasCoord - glm::dvec2(atlas.charts[std::size_t(polygon)].origin);
+  return (transposed[std::size_t(polygon)] ? glm::dvec2(local.y, local.x) : local) + glm::dvec2(origins[std::size_t(polygon)]);
 }
 
 glm::dvec2 Lightmap::uv(const Atlas& atlas, int polygon, glm::dvec2 atlasCoord) const {
@@ -129,15 +95,11 @@ Lightmap buildLightmap(const Atlas& atlas, const std::vector<glm::vec4>& B, cons
   if (B.size() != atlas.polygonOf.size()) fail("lightmap: {} radiosity texels for a {} texel atlas", B.size(), atlas.polygonOf.size());
   const int g = std::max(0, options.gutter);
   std::vector<glm::ivec2> padded;
-  std::size_t chartTexels = 0;
-  for (const Chart& c : atlas.charts) {
-    padded.push_back(c.size + 2 * g);
-    chartTexels += std::size_t(padded.back().x) * std::size_t(padded.back().y);
-  }
-  Packed p = pack(padded);
+  for (const Chart& c : atlas.charts) padded.push_back(c.size + 2 * g);
+  const ChartLayout layout = packCharts(padded, g, options.maxAspect);
   Lightmap map;
-  map.width = p.width, map.height = p.height, map.gutter = g, map.chartTexels = chartTexels;
-  for (glm::ivec2 o : p.origins) map.origins.push_back(o + g);
+  map.width = layout.width, map.height = layout.height, map.gutter = g, map.transposed = layout.transposed;
+  for (glm::ivec2 corner : layout.corners) map.origins.push_back(corner + g);
   map.rgb.assign(std::size_t(map.width) * map.height, glm::vec3(0.0f));
   for (const Chart& c : atlas.charts) fillChart(atlas, B, c, g, options.dilate, map);
   return map;

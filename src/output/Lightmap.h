@@ -1,8 +1,9 @@
 // The solution as a lightmap an engine can sample: the atlas's charts repacked tightly with
-// stb_rect_pack, each inside a gutter of dilated texels (the nearest element's B copied
-// outward), so plain bilinear sampling (GL_LINEAR) at a polygon's edge reads its own values,
-// never black nor another chart. One lightmap texel per element, as in the atlas; rows run
-// from the image's top, as glTF's v does.
+// stb_rect_pack (src/output/ChartPacker.h; a chart may be placed transposed), each inside a
+// gutter of dilated texels (the nearest element's B copied outward), so plain bilinear sampling
+// (GL_LINEAR, CLAMP_TO_EDGE) at a polygon's edge reads its own values, never black nor another
+// chart. On the lightmap's border the gutter is cut away: clamping repeats the chart's own edge.
+// One lightmap texel per element, as in the atlas; rows run from the image's top, as glTF's v does.
 #pragma once
 #include <cstddef>
 #include <glm/glm.hpp>
@@ -13,18 +14,20 @@
 namespace hemirad {
 
 struct LightmapOptions {
-  int gutter = 2;       // texels around every chart
-  bool dilate = true;   // false: gutters and empty cells stay black (the old atlas; for comparisons)
+  int gutter = 2;        // texels around every chart
+  bool dilate = true;    // false: gutters and empty cells stay black (the old atlas; for comparisons)
+  double maxAspect = 8;  // the longer side over the shorter, at most (where the charts allow)
 };
 
 struct Lightmap {
   int width = 0, height = 0, gutter = 0;
   std::vector<glm::ivec2> origins;  // per polygon: the lightmap texel of its chart's cell (0, 0)
+  std::vector<char> transposed;     // per polygon: cell (i, j) at origin + (j, i), not (i, j)
   std::vector<glm::vec3> rgb;       // per texel, row-major from row 0
   std::size_t elements = 0;
-  std::size_t chartTexels = 0;  // the charts with their gutters
+  std::size_t chartTexels = 0;  // the charts with their gutters, as far as they lie in the image
   // Elements over texels: what of the lightmap holds radiosity. Gutters bound it: a w x h chart
-  // fills at most w h / ((w + 4) (h + 4)) of its place.
+  // fills at most w h / ((w + 4) (h + 4)) of its place, more on the border.
   double texelUse() const { return width && height ? double(elements) / (double(width) * height) : 0; }
   // The packer's part: charts with gutters over texels.
   double packing() const { return width && height ? double(chartTexels) / (double(width) * height) : 0; }

@@ -85,6 +85,7 @@ ReloadedGltf reloadGltf(const std::string& path) {
   out.imageUri = m.images.at(std::size_t(m.textures[0].source)).uri;
   const tinygltf::Sampler& s = m.samplers.at(std::size_t(m.textures[0].sampler));
   out.samplerFilter = s.minFilter == s.magFilter ? s.magFilter : -1;
+  out.samplerWrap = s.wrapS == s.wrapT ? s.wrapS : -1;
   for (const tinygltf::Material& mat : m.materials) {
     out.emissiveTexCoords.push_back(mat.emissiveTexture.index == 0 ? mat.emissiveTexture.texCoord : -1);
     const auto& c = mat.pbrMetallicRoughness.baseColorFactor;

@@ -17,6 +17,7 @@ struct ReloadedGltf {
   double aspect = 1;
   std::string imageUri;                   // the lightmap texture's image
   int samplerFilter = 0;                  // mag filter, if min agrees (else -1)
+  int samplerWrap = 0;                    // wrapS, if wrapT agrees (else -1)
   std::vector<int> emissiveTexCoords;     // per material
   std::vector<double> baseColorSums;      // per material: R + G + B of baseColorFactor
 };

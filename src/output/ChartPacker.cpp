@@ -1,0 +1,100 @@
+#include "src/output/ChartPacker.h"
+
+#include <stb_rect_pack.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "src/base/Error.h"
+
+namespace hemirad {
+
+namespace {
+
+constexpr int kWidthsPerTurn = 128;  // strip widths tried per way of turning the charts (and heuristic)
+constexpr int kMaxSide = 16384;      // GL 4's least GL_MAX_TEXTURE_SIZE
+
+struct Candidate {
+  int width = 0, heuristic = 0;
+  std::vector<char> transposed;
+};
+
+struct Packed {
+  ChartLayout layout;
+  bool ok = false, withinAspect = false;
+  double texels = 0;
+};
+
+glm::ivec2 placed(glm::ivec2 size, bool transposed) { return transposed ? glm::ivec2(size.y, size.x) : size; }
+
+// One candidate through stb_rect_pack's skyline packer (it sorts by height itself), trimmed.
+Packed packStrip(const std::vector<glm::ivec2>& sizes, const Candidate& c, int trim, double maxAspect) {
+  std::vector<stbrp_rect> rects(sizes.size());
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    const glm::ivec2 s = placed(sizes[i], c.transposed[i]);
+    rects[i] = {int(i), s.x, s.y, 0, 0, 0};
+  }
+  std::vector<stbrp_node> nodes(std::size_t(c.width) + 1);
+  stbrp_context context;
+  stbrp_init_target(&context, c.width, 1 << 30, nodes.data(), int(nodes.size()));
+  stbrp_setup_heuristic(&context, c.heuristic);
+  if (!stbrp_pack_rects(&context, rects.data(), int(rects.size()))) return {};  // a chart wider than the strip
+  Packed p;
+  p.ok = true;
+  int right = 0, top = 0;
+  p.layout.corners.resize(sizes.size());
+  for (const stbrp_rect& r : rects) {
+    p.layout.corners[std::size_t(r.id)] = glm::ivec2(r.x, r.y) - trim;
+    right = std::max(right, r.x + r.w), top = std::max(top, r.y + r.h);
+  }
+  p.layout.width = right - 2 * trim, p.layout.height = top - 2 * trim;  // > 0: every chart has a cell
+  p.layout.transposed = c.transposed;
+  const double w = p.layout.width, h = p.layout.height;
+  p.withinAspect = std::max(w, h) <= std::min(maxAspect * std::min(w, h), double(kMaxSide));
+  p.texels = w * h;
+  return p;
+}
+
+// Within the aspect (and a GPU's texture size) first, then the fewest texels; ties keep the
+// earlier candidate.
+bool better(const Packed& a, const Packed& b) {
+  if (!a.ok || !b.ok) return a.ok;
+  return a.withinAspect != b.withinAspect ? a.withinAspect : a.texels < b.texels;
+}
+
+}  // namespace
+
+ChartLayout packCharts(const std::vector<glm::ivec2>& sizes, int trim, double maxAspect) {
+  double area = 0;
+  for (glm::ivec2 s : sizes) area += double(s.x) * s.y;
+  Packed best;
+  Candidate bestCandidate;
+  for (int turn = 0; turn < 3; ++turn) {  // charts as they are, all lying (w >= h), all standing
+    Candidate c;
+    int widest = 1;
+    for (glm::ivec2 s : sizes) {
+      c.transposed.push_back(turn == 1 ? s.y > s.x : turn == 2 ? s.x > s.y : false);
+      widest = std::max(widest, placed(s, c.transposed.back()).x);
+    }
+    const int first = std::max(widest, int(std::sqrt(area / maxAspect)));
+    const int last = std::max(first, int(std::ceil(std::sqrt(area * maxAspect))) + 2 * trim);
+    const int step = std::max(1, (last - first) / kWidthsPerTurn);
+    for (c.width = first; c.width <= last; c.width += step)
+      for (int heuristic : {STBRP_HEURISTIC_Skyline_BL_sortHeight, STBRP_HEURISTIC_Skyline_BF_sortHeight}) {
+        c.heuristic = heuristic;
+        if (Packed p = packStrip(sizes, c, trim, maxAspect); better(p, best)) best = std::move(p), bestCandidate = c;
+      }
+  }
+  if (!best.ok) fail("the lightmap's charts do not pack");  // stb packs any set into a wide enough strip
+  // Then one chart at a time turned in the best strip, kept where it saves texels (twice over):
+  // a turned chart can fill a gap the others leave.
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+      Candidate c = bestCandidate;
+      c.transposed[i] = !c.transposed[i];
+      if (Packed p = packStrip(sizes, c, trim, maxAspect); better(p, best)) best = std::move(p), bestCandidate = std::move(c);
+    }
+  return best.layout;
+}
+
+}  // namespace hemirad
