@@ -209,10 +209,10 @@ void PerspectiveView::startRound() {
   }
 }
 
-void PerspectiveView::describeDeliveries(unsigned count, const gl::Buffer& nodes, const gl::Buffer& control) {
+void PerspectiveView::describeDeliveries(unsigned count, const gl::Buffer& control) {
   count = unsigned(std::min<std::size_t>(count, deliveriesLeft()));
   state_.bindScene();
-  nodes.bindBase(GL_SHADER_STORAGE_BUFFER, 13);
+  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, 13);
   control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   deferredBlocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
   deferredPass_.set("first", unsigned(next_));

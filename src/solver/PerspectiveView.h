@@ -74,7 +74,7 @@ class PerspectiveView {
   // Blocks whose entries are still to deliver; describes the next `count` of them as the pass's
   // shooters (gather.comp, delivery mode).
   std::size_t deliveriesLeft() const { return deferred_ - next_; }
-  void describeDeliveries(unsigned count, const gl::Buffer& nodes, const gl::Buffer& control);
+  void describeDeliveries(unsigned count, const gl::Buffer& control);
   void finishDeliveries();  // after the pass of the last of a round's
 
   // Binds the surface view (6), shots so far (7) and snapshots (8) for select.comp and gather.comp.

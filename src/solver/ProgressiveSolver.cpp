@@ -166,7 +166,7 @@ void ProgressiveSolver::look(const Camera& camera, double aspect) {
 // One pass; returns its item buffers.
 unsigned ProgressiveSolver::deliverStored() {
   const unsigned n = unsigned(std::min<std::size_t>(settings_.shootersPerPass, perspective_->deliveriesLeft()));
-  perspective_->describeDeliveries(n, nodes_, control_);
+  perspective_->describeDeliveries(n, control_);
   itemBuffer_->render(control_);
   gatherPass(Receivers::Entering);
   deliveryShots_ += n;
