@@ -31,9 +31,10 @@ void main() {
   if (polygon == NO_POLYGON) return;
 #ifdef PERSPECTIVE
   bool deferred = viewMode == 2u;
-  uint entering = surfaceView[polygon].y;
+  uvec4 view = surfaceView[polygon];
+  uint entering = view.y;
   if (deferred && entering == 0u) return;
-  bool receivesRadiosity = viewMode == 0u || deferred || surfaceView[polygon].x != 0u;
+  bool receivesRadiosity = viewMode == 0u || deferred || view.x != 0u;
 #else
   const bool deferred = false, receivesRadiosity = true;
 #endif
@@ -44,7 +45,7 @@ void main() {
     vec4 shot = control.shooter[s].shot;
 #ifdef PERSPECTIVE
     uint b = control.shooter[s].block;
-    if (deferred) shot = vec4(shotSoFar[b].rgb - snapshot[(entering - 1u) * blockCount + b].rgb, 0.0);
+    if (deferred) shot = vec4(snapshot[(view.z - 1u) * blockCount + b].rgb - snapshot[(entering - 1u) * blockCount + b].rgb, 0.0);
 #endif
     if (inShooterBlock(s, t, polygon)) {  // (a deferred pass shoots table entries, not the block's dB)
       if (!deferred) keep *= s < control.shootersPerPass ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(1.0, 1.0, 1.0, 0.0);

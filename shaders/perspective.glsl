@@ -3,10 +3,13 @@
 // The table B_ij (shooter block i, surface j) is kept factored: shotSoFar[i] is all the
 // radiosity block i has shot, and snapshot e holds shotSoFar as it was when epoch e began, so
 // for a surface that left the view at epoch e, B_ij = shotSoFar[i] - snapshot[e][i]. That is
-// O(blocks) per epoch instead of O(blocks x surfaces), with no limit on either.
+// O(blocks) per epoch instead of O(blocks x surfaces), with no limit on either. A surface that
+// came back into view at epoch f receives shots itself from then on and is owed
+// snapshot[f][i] - snapshot[e][i] until a delivery round hands it over.
 
 layout(std430, binding = 6) readonly buffer SurfaceView {
-  uvec2 surfaceView[];  // per polygon: x 1 if in view; y 1 + the epoch of its entries while they are delivered
+  uvec4 surfaceView[];  // per polygon: x 1 if in view; y, z 1 + the epochs its entries start and end at while
+                        // a delivery round hands them over (else 0)
 };
 layout(std430, binding = 7) buffer ShotSoFar { vec4 shotSoFar[]; };        // per shooter block
 layout(std430, binding = 8) readonly buffer Snapshots { vec4 snapshot[]; };  // epoch * blocks + block

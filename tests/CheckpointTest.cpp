@@ -140,7 +140,7 @@ TEST_CASE("A stochastic solve resumed from a checkpoint gives the bitwise result
 
 TEST_CASE("A perspective-driven solve resumed mid-solve gives the bitwise result of an uninterrupted one",
           "[cli][checkpoint][perspective]") {
-  // The camera in room 0 of the 4-room building, the simulated field of view growing every 2
+  // The camera in room 0 of the 4-room building, the area of interest looked at again every 2
   // shots (--fov-decay 16, 8 steps): by 20 shots surfaces have left the view, entries are held
   // in the table and deliveries are due, so the checkpoint holds all of the view's state.
   const std::string args = "solve " + test::sourcePath("scenes/building/building_4.obj") +

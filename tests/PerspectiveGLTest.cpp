@@ -6,6 +6,8 @@
 
 #include "cpu/ExactFormFactor.h"
 #include "cpu/Hemisphere.h"
+#include "src/scene/SceneLoader.h"
+#include "src/walk/Walkthrough.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
@@ -85,10 +87,11 @@ TEST_CASE("Out of view nothing is received, and the table hands it all over once
   }
 }
 
-TEST_CASE("A camera move hands the surfaces entering the view their stored entries, a budget at a time",
+TEST_CASE("A camera move hands the surfaces entering the view their stored entries, a pass in turn with a shot",
           "[gl][perspective]") {
-  // Looking at the floor, then at the wall z = 0 (polygon 2): the wall gets all the shots so far
-  // held for it before any new shot; the walls still out of view hold nothing.
+  // Looking at the floor, then at the wall z = 0 (polygon 2): the wall gets all the shots held
+  // for it, and the shots taken meanwhile, exactly once; the floor, out of the camera's view
+  // for less than the decay interval, stays in the area of interest; the other walls hold nothing.
   test::backend();
   Scene s = test::cube(kRho, 0.0, 1);
   Atlas atlas = buildAtlas(s, 0.1);
@@ -98,15 +101,17 @@ TEST_CASE("A camera move hands the surfaces entering the view their stored entri
   const SolveStatus st = solver.advance(48);
   CHECK(facePower(s, atlas, state).held[2] == 0.0);
   // The move is applied by the next advance(), whose budget (here one pass, 8 item buffers)
-  // the deliveries share; no shot is taken while any are due.
+  // goes to a delivery pass; the next pass shoots, and so on while deliveries are due.
   const unsigned deliveries = solver.deliveryShots();
   solver.look({{0.5, 0.5, 0.6}, {0.5, 0.5, 0.0}, {0, 1, 0}, 30.0}, 1.0);
   solver.advance(8);
-  CHECK(solver.perspective()->surfacesInView() == 1);
+  CHECK(solver.perspective()->surfacesInView() == 2);
   CHECK(solver.deliveryShots() == deliveries + 8);
+  CHECK(solver.advance(0).shots == st.shots);
+  CHECK(solver.advance(8).shots == st.shots + 8);  // a shot while deliveries are due
+  CHECK(solver.perspective()->delivering());
   while (!solver.perspective()->settled()) solver.advance(8);
   CHECK(solver.deliveryShots() > deliveries + 8);
-  CHECK(solver.advance(0).shots == st.shots);  // no radiosity shot
   FacePower moved = facePower(s, atlas, state);
   INFO("wall 2 holds " << moved.held[2] << " of " << moved.shotAt[2] << "; the floor " << moved.held[0] << " of "
                        << moved.shotAt[0]);
@@ -138,5 +143,40 @@ TEST_CASE("Perspective-driven and plain progressive refinement converge to the s
     INFO("face " << face << ": progressive " << ma / area << " (" << a.status.shots << " shots), perspective "
                  << mb / area << " (" << b.status.shots << ")");
     CHECK(mb / area == Approx(ma / area).epsilon(0.002));
+  }
+}
+
+TEST_CASE("Along a walk through the doors of four rooms, perspective-driven shooting shoots every frame, deliveries "
+          "taking at most every other pass",
+          "[gl][perspective][walkthrough]") {
+  // Issue 19: a camera that moves every frame brings surfaces into view every frame. Were their
+  // entries delivered before any further shot, the frame budget would go to deliveries and the
+  // view would stop brightening (main before the fix: no shot from 1.5 s to 10.5 s of the
+  // 16-room walk). Importance-driven shooting walks alongside for the record (INFO).
+  test::backend();
+  const Scene s = loadScene(test::sourcePath("scenes/building/building_4.obj"));
+  const CameraPath path = readCameraPath(test::sourcePath("scenes/building/building_4.path"), resolveCamera(s, std::nullopt));
+  const Atlas atlas = buildAtlas(s, texelSizeForElements(s, 600), 4096);
+  ProgressiveSettings settings;
+  settings.shootersPerPass = 8, settings.itemSubdivision = 1, settings.itemResolution = 64;
+  ConvergedViews converged(s, atlas, settings, 0.95);
+  WalkthroughOptions w;
+  w.fps = 0.5, w.frameShots = 16, w.width = w.height = 32, w.ambient = false;
+  std::vector<FrameRecord> frames[2];
+  for (int k = 0; k < 2; ++k) {
+    SolverState state(s, atlas);
+    settings.algorithm = k ? Algorithm::Perspective : Algorithm::Importance;
+    settings.stop = {0, 0.99999};
+    ProgressiveSolver solver(state, settings);
+    frames[k] = walk(solver, state, path, converged, w);
+  }
+  REQUIRE(frames[1].size() == 7);
+  for (std::size_t f = 1; f < frames[1].size(); ++f) {
+    const FrameRecord &importance = frames[0][f], &perspective = frames[1][f], &before = frames[1][f - 1];
+    INFO("frame " << f << ": importance " << importance.imageError << " after " << importance.shots
+                  << " shots; perspective " << perspective.imageError << " after " << perspective.shots << " shots and "
+                  << perspective.deliveryShots << " deliveries");
+    CHECK(perspective.shots >= before.shots + 8);  // at least one shooting pass of the frame's two
+    CHECK(perspective.deliveryShots <= perspective.shots + 8);  // a delivery pass (<= 8) per shooting pass, + 1
   }
 }

@@ -17,9 +17,10 @@ constexpr std::size_t kVec4 = 4 * sizeof(float);
 constexpr unsigned kFirstEpochs = 4;
 }  // namespace
 
-PerspectiveView::PerspectiveView(const SolverState& state, std::size_t blockCount, unsigned decayShots, double interest,
-                                 int resolution)
+PerspectiveView::PerspectiveView(const SolverState& state, const gl::Buffer& nodes, std::size_t blockCount,
+                                 unsigned decayShots, double interest, int resolution)
     : state_(state),
+      nodes_(nodes),
       blocks_(blockCount),
       surfaces_(state.scene.polygons().size()),
       decayShots_(std::max(1u, decayShots)),
@@ -31,22 +32,28 @@ PerspectiveView::PerspectiveView(const SolverState& state, std::size_t blockCoun
       importantPass_(gl::computeProgram("important_surfaces.comp")),
       pendingPass_(gl::computeProgram("pending_blocks.comp")),
       deferredPass_(gl::computeProgram("deferred_shooters.comp")),
-      surfaceView_(surfaces_ * 2 * sizeof(std::uint32_t)),
+      surfaceView_(surfaces_ * sizeof(glm::uvec4)),
       shotSoFar_(blocks_ * kVec4),
       seen_(surfaces_ * sizeof(std::uint32_t)),
-      pending_(blocks_ * sizeof(std::uint32_t)),
+      pending_(blocks_ * sizeof(float)),
       deferredBlocks_(blocks_ * sizeof(std::uint32_t)),
       visible_(surfaces_, 1),
-      epoch_(surfaces_, -1) {
+      lastIn_(surfaces_, kNever),
+      epoch_(surfaces_, -1),
+      end_(surfaces_, -1) {
   shotSoFar_.clear(0.0f);
   pendingPass_.set("blockCount", unsigned(blocks_));
   double area = 0;
   for (const auto& pa : state.atlas.positionArea) area += pa.w;
   importantPass_.set("threshold", float(interest / area));
-  uploadSurfaces(false);
+  uploadSurfaces();
 }
 
+// With the interest threshold, what the view needs beyond the camera's frustum is the important
+// surfaces: the field of view stays the camera's, and the entries of the rest wait until the
+// light runs out (showAll()); its steps only look again at what has become important.
 double PerspectiveView::simulatedFov() const {
+  if (byImportance_ && !wholeScene()) return camera_.fovY;
   return camera_.fovY + (180.0 - camera_.fovY) * double(std::min(step_, kSteps)) / kSteps;
 }
 
@@ -63,14 +70,14 @@ void PerspectiveView::look(const Camera& camera, double aspect, unsigned shots) 
 }
 
 unsigned PerspectiveView::shotsToNextStep(unsigned shots) const {
-  if (wholeScene()) return kNoStep;
+  if (step_ >= lastStep()) return kNoStep;
   const unsigned at = lookShots_ + unsigned(std::uint64_t(decayShots_) * unsigned(step_ + 1) / kSteps);
   return at > shots ? at - shots : 0;
 }
 
 void PerspectiveView::grow(unsigned shots) {
   int step = step_;
-  while (step < kSteps &&
+  while (step < lastStep() &&
          shots >= lookShots_ + unsigned(std::uint64_t(decayShots_) * unsigned(step + 1) / kSteps))
     ++step;
   if (step == step_) return;
@@ -83,12 +90,9 @@ void PerspectiveView::showAll() {
   pending_view_ = true;
 }
 
-bool PerspectiveView::update() {
-  if (!pending_view_ || delivering_) return false;
+bool PerspectiveView::update(unsigned shots) {
+  if (!pending_view_ || !applyView(shots)) return false;
   pending_view_ = false;
-  applyView();
-  delivering_ = true;
-  if (deferred_ == 0) finishDeliveries();  // nothing to deliver: the change is complete
   return true;
 }
 
@@ -133,68 +137,82 @@ std::vector<std::uint8_t> PerspectiveView::renderSeen() {
   return {seen.begin(), seen.end()};
 }
 
-// A snapshot slot for surfaces leaving the view now. With all slots taken, the oldest epoch's
-// surfaces receive their entries now and join the new epoch (its snapshot is taken after).
-unsigned PerspectiveView::takeEpoch(const std::vector<std::uint8_t>& seen) {
+int PerspectiveView::takeEpoch() {
   for (unsigned e = 0; e < capacity_; ++e)
-    if (!epochBirth_[e]) return epochBirth_[e] = ++births_, e;
-  if (capacity_ < kMaxEpochs) {
-    const unsigned grown = std::min(kMaxEpochs, std::max(kFirstEpochs, 2 * capacity_));
-    gl::Buffer bigger(std::size_t(grown) * blocks_ * kVec4);
-    if (capacity_) snapshots_.copyTo(bigger, 0, 0, std::size_t(capacity_) * blocks_ * kVec4);
-    snapshots_ = std::move(bigger);
-    epochBirth_.resize(grown, 0);
-    const unsigned e = capacity_;
-    capacity_ = grown;
-    return epochBirth_[e] = ++births_, e;
-  }
-  const unsigned oldest = unsigned(std::min_element(epochBirth_.begin(), epochBirth_.end()) - epochBirth_.begin());
-  for (std::uint32_t p = 0; p < surfaces_; ++p)
-    if (epoch_[p] == int(oldest) && !visible_[p] && !seen[p]) entering_.push_back(p), staysOut_.push_back(1);
-  epochBirth_[oldest] = ++births_;
-  return oldest;
+    if (!slotUsed_[e]) return slotUsed_[e] = 1, int(e);
+  if (capacity_ == kMaxEpochs) return -1;
+  const unsigned grown = std::min(kMaxEpochs, std::max(kFirstEpochs, 2 * capacity_));
+  gl::Buffer bigger(std::size_t(grown) * blocks_ * kVec4);
+  if (capacity_) snapshots_.copyTo(bigger, 0, 0, std::size_t(capacity_) * blocks_ * kVec4);
+  snapshots_ = std::move(bigger);
+  slotUsed_.resize(grown, 0);
+  const unsigned e = capacity_;
+  capacity_ = grown;
+  return slotUsed_[e] = 1, int(e);
 }
 
-void PerspectiveView::applyView() {
+bool PerspectiveView::applyView(unsigned shots) {
   std::vector<std::uint8_t> seen = wholeScene() ? std::vector<std::uint8_t>(surfaces_, 1) : renderSeen();
-  entering_.clear();
-  staysOut_.clear();
-  newEpoch_ = -1;
+  // Hysteresis: what a view showed less than the decay interval ago stays (a walk's next frames
+  // would mostly bring it back), and so does a surface still owed entries (they end at its epoch).
+  // Before the first look() no view has shown anything.
   for (std::uint32_t p = 0; p < surfaces_; ++p)
-    if (!visible_[p] && seen[p]) entering_.push_back(p), staysOut_.push_back(0);
+    if (seen[p]) lastIn_[p] = shots;
+    else if (visible_[p] && (epoch_[p] >= 0 || (lastIn_[p] != kNever && shots - lastIn_[p] < decayShots_))) seen[p] = 1;
+  std::vector<std::uint32_t> entering, leaving;
   for (std::uint32_t p = 0; p < surfaces_; ++p)
-    if (visible_[p] && !seen[p]) {
-      if (newEpoch_ < 0) newEpoch_ = int(takeEpoch(seen));
-      epoch_[p] = newEpoch_;
-    }
-  visible_ = seen;
-
-  // Seed 004 §5.5.2: the shooting locations of the entries to deliver, in block order.
-  deferred_ = next_ = 0;
-  if (entering_.empty()) return uploadSurfaces(false);
-  std::vector<GLuint> epochs;
-  for (std::uint32_t p : entering_)
-    if (std::find(epochs.begin(), epochs.end(), GLuint(epoch_[p])) == epochs.end()) epochs.push_back(GLuint(epoch_[p]));
-  pendingPass_.set("epochCount", unsigned(epochs.size()));
-  pendingPass_.set("epochs", std::span<const unsigned>(epochs));
-  bind();
-  pending_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
-  pendingPass_.use();
-  gl::Program::dispatch(gl::groupsFor(unsigned(blocks_), 256));
-  gl::barrier(gl::Barrier::BufferUpdate);
-  std::vector<std::uint32_t> pending(blocks_), list;
-  pending_.read(0, pending.size() * sizeof(std::uint32_t), pending.data());
-  for (std::uint32_t b = 0; b < blocks_; ++b)
-    if (pending[b]) list.push_back(b);
-  if (!list.empty()) deferredBlocks_.upload(0, list.size() * sizeof(std::uint32_t), list.data());
-  deferred_ = list.size();
-  uploadSurfaces(true);
+    if (visible_[p] != seen[p]) (seen[p] ? entering : leaving).push_back(p);
+  if (entering.empty() && leaving.empty()) return true;
+  const int e = takeEpoch();
+  if (e < 0) return false;
+  gl::barrier(gl::Barrier::BufferUpdate);  // shots so far, as select.comp left them
+  shotSoFar_.copyTo(snapshots_, 0, std::size_t(e) * blocks_ * kVec4, blocks_ * kVec4);
+  for (std::uint32_t p : leaving) visible_[p] = 0, epoch_[p] = e;
+  for (std::uint32_t p : entering) visible_[p] = 1, end_[p] = e;  // owed from epoch_[p] to e
+  if (round_.empty()) startRound();
+  uploadSurfaces();
+  return true;
 }
 
-void PerspectiveView::describeDeliveries(unsigned count, const gl::Buffer& nodes, const gl::Buffer& control) {
+// Seed 004 §5.5.2: the shooting locations of the entries owed to the round's surfaces.
+void PerspectiveView::startRound() {
+  while (round_.empty()) {
+    std::vector<glm::uvec2> spans;
+    for (std::uint32_t p = 0; p < surfaces_; ++p)
+      if (visible_[p] && end_[p] >= 0) {
+        round_.push_back(p);
+        const glm::uvec2 span(epoch_[p], end_[p]);
+        if (std::find(spans.begin(), spans.end(), span) == spans.end()) spans.push_back(span);
+      }
+    if (round_.empty()) return;
+    if (spans_.size() < spans.size() * sizeof(glm::uvec2)) spans_ = gl::Buffer(surfaces_ * sizeof(glm::uvec2));
+    spans_.upload(0, spans.size() * sizeof(glm::uvec2), spans.data());
+    pendingPass_.set("spanCount", unsigned(spans.size()));
+    bind();
+    nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, 13);
+    pending_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
+    spans_.bindBase(GL_SHADER_STORAGE_BUFFER, 10);
+    pendingPass_.use();
+    gl::Program::dispatch(gl::groupsFor(unsigned(blocks_), 256));
+    gl::barrier(gl::Barrier::BufferUpdate);
+    std::vector<float> power(blocks_);
+    pending_.read(0, power.size() * sizeof(float), power.data());
+    std::vector<std::uint32_t> list;
+    for (std::uint32_t b = 0; b < blocks_; ++b)
+      if (power[b] > 0) list.push_back(b);
+    // The strongest entries first: the light the entering surfaces lack most arrives first.
+    std::stable_sort(list.begin(), list.end(), [&](std::uint32_t a, std::uint32_t b) { return power[a] > power[b]; });
+    if (!list.empty()) deferredBlocks_.upload(0, list.size() * sizeof(std::uint32_t), list.data());
+    deferred_ = list.size();
+    next_ = 0;
+    if (!deferred_) endRound();  // nothing shot between: nothing owed (and the loop ends)
+  }
+}
+
+void PerspectiveView::describeDeliveries(unsigned count, const gl::Buffer& control) {
   count = unsigned(std::min<std::size_t>(count, deliveriesLeft()));
   state_.bindScene();
-  nodes.bindBase(GL_SHADER_STORAGE_BUFFER, 13);
+  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, 13);
   control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
   deferredBlocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
   deferredPass_.set("first", unsigned(next_));
@@ -203,33 +221,33 @@ void PerspectiveView::describeDeliveries(unsigned count, const gl::Buffer& nodes
   gl::Program::dispatch(gl::groupsFor(count, 64));
   gl::barrier(gl::Barrier::Storage | gl::Barrier::Command);
   next_ += count;
+  deliveryTurn_ = false;
 }
 
 void PerspectiveView::finishDeliveries() {
-  for (std::size_t k = 0; k < entering_.size(); ++k) epoch_[entering_[k]] = staysOut_[k] ? newEpoch_ : -1;
-  // Free the slots nobody refers to any more, then snapshot the new epoch (delivery passes do
-  // not shoot, so shots so far are as they were when the surfaces left).
-  for (unsigned e = 0; e < capacity_; ++e)
-    if (epochBirth_[e] && int(e) != newEpoch_ && std::find(epoch_.begin(), epoch_.end(), int(e)) == epoch_.end())
-      epochBirth_[e] = 0;
-  gl::barrier(gl::Barrier::BufferUpdate);
-  if (newEpoch_ >= 0) shotSoFar_.copyTo(snapshots_, 0, std::size_t(newEpoch_) * blocks_ * kVec4, blocks_ * kVec4);
-  entering_.clear();
-  staysOut_.clear();
-  newEpoch_ = -1;
-  deferred_ = next_ = 0;
-  delivering_ = false;
-  uploadSurfaces(false);
+  endRound();
+  startRound();  // the surfaces that came into view meanwhile
+  uploadSurfaces();
   gl::checkErrors("perspective view");
 }
 
-// x: in view; y: 1 + the epoch of the entries a surface receives in this change's deliveries.
-void PerspectiveView::uploadSurfaces(bool delivering) {
-  std::vector<std::uint32_t> v(surfaces_ * 2, 0);
-  for (std::size_t p = 0; p < surfaces_; ++p) v[2 * p] = visible_[p];
-  if (delivering)
-    for (std::uint32_t p : entering_) v[2 * p + 1] = std::uint32_t(epoch_[p] + 1);
-  surfaceView_.upload(0, v.size() * sizeof(std::uint32_t), v.data());
+// The round's surfaces have all they were owed; the snapshot slots nobody refers to are free.
+void PerspectiveView::endRound() {
+  for (std::uint32_t p : round_) epoch_[p] = end_[p] = -1;
+  round_.clear();
+  deferred_ = next_ = 0;
+  std::fill(slotUsed_.begin(), slotUsed_.end(), 0);
+  for (std::size_t p = 0; p < surfaces_; ++p)
+    for (int e : {epoch_[p], end_[p]})
+      if (e >= 0) slotUsed_[std::size_t(e)] = 1;
+}
+
+// x: in view; y, z: 1 + the epochs where the entries the round hands a surface start and end.
+void PerspectiveView::uploadSurfaces() {
+  std::vector<glm::uvec4> v(surfaces_, glm::uvec4(0));
+  for (std::size_t p = 0; p < surfaces_; ++p) v[p].x = visible_[p];
+  for (std::uint32_t p : round_) v[p].y = std::uint32_t(epoch_[p] + 1), v[p].z = std::uint32_t(end_[p] + 1);
+  surfaceView_.upload(0, v.size() * sizeof(glm::uvec4), v.data());
 }
 
 void PerspectiveView::bind() const {
@@ -286,10 +304,11 @@ std::vector<std::uint8_t> PerspectiveView::save() const {
   Writer w;
   w.put(std::uint64_t(blocks_)), w.put(std::uint64_t(surfaces_));
   w.put(camera_), w.put(aspect_), w.put(lookShots_), w.put(looked_), w.put(step_);
-  w.put(pending_view_), w.put(delivering_), w.put(newEpoch_), w.put(std::uint64_t(deferred_)), w.put(std::uint64_t(next_));
-  w.put(births_), w.put(capacity_);
-  w.putVector(visible_), w.putVector(epoch_), w.putVector(epochBirth_), w.putVector(entering_), w.putVector(staysOut_);
-  std::vector<glm::vec4> table(blocks_ * (1 + std::size_t(capacity_)));
+  w.put(pending_view_), w.put(deliveryTurn_), w.put(std::uint64_t(deferred_)), w.put(std::uint64_t(next_));
+  w.put(capacity_);
+  w.putVector(visible_), w.putVector(lastIn_), w.putVector(epoch_), w.putVector(end_), w.putVector(slotUsed_);
+  w.putVector(round_);
+  std::vector<glm::vec4> table(blocks_ * (1 + std::size_t(capacity_)));  // shots so far, then the snapshots
   shotSoFar_.read(0, blocks_ * kVec4, table.data());
   if (capacity_) snapshots_.read(0, std::size_t(capacity_) * blocks_ * kVec4, table.data() + blocks_);
   w.putVector(table);
@@ -304,23 +323,27 @@ void PerspectiveView::restore(std::span<const std::uint8_t> bytes) {
   if (r.get<std::uint64_t>() != blocks_ || r.get<std::uint64_t>() != surfaces_)
     throw InputError("checkpoint: perspective view state is of another scene");
   camera_ = r.get<Camera>(), aspect_ = r.get<double>(), lookShots_ = r.get<unsigned>(), looked_ = r.get<bool>();
-  step_ = r.get<int>(), pending_view_ = r.get<bool>(), delivering_ = r.get<bool>(), newEpoch_ = r.get<int>();
+  step_ = r.get<int>(), pending_view_ = r.get<bool>(), deliveryTurn_ = r.get<bool>();
   deferred_ = std::size_t(r.get<std::uint64_t>()), next_ = std::size_t(r.get<std::uint64_t>());
-  births_ = r.get<std::uint64_t>(), capacity_ = r.get<unsigned>();
-  visible_ = r.getVector<std::uint8_t>(surfaces_), epoch_ = r.getVector<int>(surfaces_);
-  epochBirth_ = r.getVector<std::uint64_t>(kMaxEpochs);
-  entering_ = r.getVector<std::uint32_t>(surfaces_), staysOut_ = r.getVector<std::uint8_t>(surfaces_);
+  capacity_ = r.get<unsigned>();
+  visible_ = r.getVector<std::uint8_t>(surfaces_), lastIn_ = r.getVector<std::uint32_t>(surfaces_);
+  epoch_ = r.getVector<int>(surfaces_), end_ = r.getVector<int>(surfaces_);
+  slotUsed_ = r.getVector<std::uint8_t>(kMaxEpochs), round_ = r.getVector<std::uint32_t>(surfaces_);
   const std::vector<glm::vec4> table = r.getVector<glm::vec4>(blocks_ * (1 + kMaxEpochs));
   const std::vector<std::uint32_t> deferred = r.getVector<std::uint32_t>(blocks_);
-  if (r.at != bytes.size() || visible_.size() != surfaces_ || epoch_.size() != surfaces_ ||
-      epochBirth_.size() != capacity_ || table.size() != blocks_ * (1 + std::size_t(capacity_)) ||
-      deferred.size() != deferred_ || next_ > deferred_ || staysOut_.size() != entering_.size())
+  auto bad = [&](int e) { return e >= int(capacity_); };
+  if (r.at != bytes.size() || visible_.size() != surfaces_ || lastIn_.size() != surfaces_ || epoch_.size() != surfaces_ ||
+      end_.size() != surfaces_ || slotUsed_.size() != capacity_ || table.size() != blocks_ * (1 + std::size_t(capacity_)) ||
+      deferred.size() != deferred_ || next_ > deferred_ || std::any_of(epoch_.begin(), epoch_.end(), bad) ||
+      std::any_of(end_.begin(), end_.end(), bad) ||
+      std::any_of(round_.begin(), round_.end(), [&](std::uint32_t p) { return p >= surfaces_ || epoch_[p] < 0 || end_[p] < 0; }) ||
+      std::any_of(deferred.begin(), deferred.end(), [&](std::uint32_t b) { return b >= blocks_; }))
     throw InputError("checkpoint: perspective view state is corrupt");
   shotSoFar_.upload(0, blocks_ * kVec4, table.data());
   snapshots_ = capacity_ ? gl::Buffer(std::size_t(capacity_) * blocks_ * kVec4) : gl::Buffer();
   if (capacity_) snapshots_.upload(0, std::size_t(capacity_) * blocks_ * kVec4, table.data() + blocks_);
   if (deferred_) deferredBlocks_.upload(0, deferred_ * sizeof(std::uint32_t), deferred.data());
-  uploadSurfaces(delivering_);
+  uploadSurfaces();
 }
 
 }  // namespace hemirad

@@ -9,9 +9,18 @@
 // shooting-locations vector, one item buffer per block for all entering surfaces: bucketing).
 // Memory is O(blocks x live epochs), for any number of surfaces.
 //
-// The simulated field of view grows from the camera's to the whole scene in kSteps steps over
-// `decayShots` shots after each camera move (seed 004's decay interval, counted in shots so a
-// run is reproducible); once it covers the whole scene nothing is held back any more.
+// Without an interest threshold, the simulated field of view grows from the camera's to the
+// whole scene in kSteps steps over `decayShots` shots after each camera move (seed 004's decay
+// interval, counted in shots so a run is reproducible); once it covers the whole scene nothing
+// is held back any more. With one, the field of view stays the camera's and the steps only
+// look again at what has become important: the rest waits until showAll().
+//
+// A moving camera (issue 19): a surface leaves the area of interest only once no view has shown
+// it for `decayShots` shots (hysteresis), so a walk does not hand the same surfaces their entries
+// again every frame. A view applies at once, with a snapshot of its own: its entering surfaces
+// receive shots from then on and are owed the entries up to it, which delivery rounds hand over
+// in turn with shooting passes, strongest first; a round serves every surface owed entries when
+// it starts, whatever view brought it in. A surface stays in view while it is owed entries.
 #pragma once
 #include <cstdint>
 #include <limits>
@@ -28,15 +37,17 @@ namespace hemirad {
 class PerspectiveView {
  public:
   static constexpr int kSteps = 8;          // simulated field-of-view steps from the camera's to all
-  static constexpr unsigned kMaxEpochs = 64;  // live snapshots; the oldest is delivered beyond that
+  static constexpr unsigned kMaxEpochs = 64;  // live snapshots; beyond, a new view waits for a round's end
   static constexpr unsigned kNoStep = std::numeric_limits<unsigned>::max();
+  static constexpr std::uint32_t kNever = std::numeric_limits<std::uint32_t>::max();
 
 
   // `resolution`: pixels of the visibility view's longer side. `interest`: a surface with
   // received importance I - R above interest / (total area) somewhere (1: the view's importance
   // spread evenly) is in the area of interest wherever it is; 0: only the simulated field of view.
-  PerspectiveView(const SolverState& state, std::size_t blockCount, unsigned decayShots, double interest = 0,
-                  int resolution = 256);
+  // `nodes`: the shooter tree (ShooterTree.h), whose first `blockCount` nodes are the blocks.
+  PerspectiveView(const SolverState& state, const gl::Buffer& nodes, std::size_t blockCount, unsigned decayShots,
+                  double interest = 0, int resolution = 256);
 
   // A camera move at `shots` shots: the simulated field of view restarts at the camera's.
   // The view it already has is no move (a resumed solve looks again): nothing changes.
@@ -52,17 +63,19 @@ class PerspectiveView {
   std::size_t surfacesInView() const;
 
   // look(), grow() and showAll() only record the new view; it takes effect in update(), and the
-  // stored entries of the surfaces it brings in are then delivered a few item buffers at a time
-  // (so a frame's budget holds). While they are, nothing is shot (the entries stay exact), and a
-  // newer view waits: the latest one applies once the deliveries are done.
-  bool settled() const { return !pending_view_ && !delivering_; }
-  bool delivering() const { return delivering_; }
-  bool update();  // applies a waiting view (not while delivering); true if it did
+  // stored entries of the surfaces it brings in are then delivered a few item buffers at a time,
+  // a delivery pass in turn with a shooting pass (so a frame's budget holds and shooting goes on;
+  // the entries stay exact).
+  bool settled() const { return !pending_view_ && round_.empty(); }
+  bool delivering() const { return !round_.empty(); }
+  bool deliveryTurn() const { return delivering() && deliveryTurn_; }  // the next pass delivers
+  void shot() { deliveryTurn_ = true; }  // after a shooting pass
+  bool update(unsigned shots);  // applies a waiting view at `shots`; true if it did
   // Blocks whose entries are still to deliver; describes the next `count` of them as the pass's
   // shooters (gather.comp, delivery mode).
   std::size_t deliveriesLeft() const { return deferred_ - next_; }
-  void describeDeliveries(unsigned count, const gl::Buffer& nodes, const gl::Buffer& control);
-  void finishDeliveries();  // after the pass of the last of them
+  void describeDeliveries(unsigned count, const gl::Buffer& control);
+  void finishDeliveries();  // after the pass of the last of a round's
 
   // Binds the surface view (6), shots so far (7) and snapshots (8) for select.comp and gather.comp.
   void bind() const;
@@ -73,19 +86,23 @@ class PerspectiveView {
   void restore(std::span<const std::uint8_t> bytes);
 
  private:
-  void applyView();
+  bool applyView(unsigned shots);  // false: no snapshot slot free, the view waits
+  int lastStep() const { return byImportance_ ? kSteps - 1 : kSteps; }  // growth ends there
   std::vector<std::uint8_t> renderSeen();
-  unsigned takeEpoch(const std::vector<std::uint8_t>& seen);
-  void uploadSurfaces(bool delivering);
+  int takeEpoch();  // a free snapshot slot, -1 if none
+  void startRound();  // the surfaces owed entries now, and the blocks with entries for them
+  void endRound();
+  void uploadSurfaces();
 
   const SolverState& state_;
+  const gl::Buffer& nodes_;
   std::size_t blocks_, surfaces_;
   unsigned decayShots_;
   bool byImportance_;
   int resolution_;
   CameraMesh mesh_;
   gl::Program ids_, seenPass_, importantPass_, pendingPass_, deferredPass_;
-  gl::Buffer surfaceView_, shotSoFar_, snapshots_, seen_, pending_, deferredBlocks_;
+  gl::Buffer surfaceView_, shotSoFar_, snapshots_, seen_, pending_, deferredBlocks_, spans_;
   unsigned capacity_ = 0;  // snapshot slots allocated
 
   Camera camera_;
@@ -94,14 +111,13 @@ class PerspectiveView {
   bool looked_ = false;
   int step_ = kSteps;  // until the first look() everything is in view
   std::vector<std::uint8_t> visible_;
+  std::vector<std::uint32_t> lastIn_;     // per surface: shots when a view last showed it (kNever: none)
   std::vector<int> epoch_;                // per surface: the epoch its entries started, -1 none
-  std::vector<std::uint64_t> epochBirth_;  // per slot: when it was taken (0: free)
-  std::uint64_t births_ = 0;
-  std::vector<std::uint32_t> entering_;   // surfaces receiving their entries now
-  std::vector<std::uint8_t> staysOut_;    // ... of which these stay out of view (oldest epoch flushed)
-  int newEpoch_ = -1;                     // the slot taken for this change, snapshot at finish
-  std::size_t deferred_ = 0, next_ = 0;
-  bool pending_view_ = false, delivering_ = false;
+  std::vector<int> end_;                  // ... and, back in view, the epoch they end at, -1 none
+  std::vector<std::uint8_t> slotUsed_;    // per snapshot slot
+  std::vector<std::uint32_t> round_;      // the surfaces the delivery round under way serves
+  std::size_t deferred_ = 0, next_ = 0;   // its blocks with entries, delivered so far
+  bool pending_view_ = false, deliveryTurn_ = true;
 };
 
 }  // namespace hemirad

@@ -56,7 +56,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   gather_ = gl::computeProgram("gather.comp", gatherDefines);
   if (perspective) {
     perspective_ = std::make_unique<PerspectiveView>(
-        state, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep),
+        state, nodes_, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep),
         settings.viewInterest);
     gather_.set("blockCount", unsigned(blockCount_));
   }
@@ -163,32 +163,23 @@ void ProgressiveSolver::look(const Camera& camera, double aspect) {
 
 // Seed 004 §5.5.3: one item buffer per block with entries for the surfaces entering the view,
 // K a pass (fewer in the last), each entering surface receiving its own entry (Receivers::Entering).
-// Applies a waiting view first; delivers while fewer than `budget` item buffers are used and
-// returns how many were (whole passes, like shots: the grouping, and so the result, never
-// depends on the batch sizes, which a resumed solve does not repeat).
-unsigned ProgressiveSolver::deliverStored(unsigned budget) {
-  const unsigned K = unsigned(settings_.shootersPerPass);
-  unsigned used = 0;
-  perspective_->update();
-  while (used < budget && perspective_->delivering()) {
-    const unsigned n = unsigned(std::min<std::size_t>(K, perspective_->deliveriesLeft()));
-    perspective_->describeDeliveries(n, nodes_, control_);
-    itemBuffer_->render(control_);
-    gatherPass(Receivers::Entering);
-    used += n;
-    deliveryShots_ += n;
-    if (perspective_->deliveriesLeft() == 0) {
-      perspective_->finishDeliveries();
-      // What was delivered is unshot again: a stopped solve goes on (unless its shots are spent).
-      if (!budgetSpent()) {
-        const std::uint32_t notDone = 0;
-        control_.upload(offsetof(ControlBlock, done), sizeof notDone, &notDone);
-        status_.done = false;
-      }
-      perspective_->update();  // a view that waited
+// One pass; returns its item buffers.
+unsigned ProgressiveSolver::deliverStored() {
+  const unsigned n = unsigned(std::min<std::size_t>(settings_.shootersPerPass, perspective_->deliveriesLeft()));
+  perspective_->describeDeliveries(n, control_);
+  itemBuffer_->render(control_);
+  gatherPass(Receivers::Entering);
+  deliveryShots_ += n;
+  if (perspective_->deliveriesLeft() == 0) {
+    perspective_->finishDeliveries();
+    // What was delivered is unshot again: a stopped solve goes on (unless its shots are spent).
+    if (!budgetSpent()) {
+      const std::uint32_t notDone = 0;
+      control_.upload(offsetof(ControlBlock, done), sizeof notDone, &notDone);
+      status_.done = false;
     }
   }
-  return used;
+  return n;
 }
 
 // One ranking of the blocks and the selection from it.
@@ -244,18 +235,25 @@ SolveStatus ProgressiveSolver::advance(unsigned shots) {
   return status_;
 }
 
-// Perspective-driven: nothing is shot while deliveries are due. The area of interest grows at
-// fixed shot counts, so passes stop there (every pass but a solve's last shoots K) whatever
-// the batch sizes asked for.
+// Perspective-driven: while deliveries are due, delivery passes and shooting passes take turns
+// (a moving camera brings new surfaces every frame: were shooting to wait for their entries, a
+// walk would shoot nothing). The area of interest grows at fixed shot counts, so passes stop
+// there (every pass but a solve's last shoots K). Whole passes in a fixed order: the result
+// never depends on the batch sizes, which a resumed solve does not repeat.
 void ProgressiveSolver::advancePerspective(unsigned budget) {
-  while (budget > 0) {
-    budget -= std::min(budget, deliverStored(budget));
-    if (budget == 0 || perspective_->delivering()) return;
+  const unsigned K = unsigned(settings_.shootersPerPass);
+  while (budget > 0 && !(status_.done && budgetSpent())) {
+    perspective_->update(status_.shots);  // a view that waited
+    if (perspective_->delivering() && (perspective_->deliveryTurn() || status_.done)) {
+      budget -= std::min(budget, deliverStored());
+      continue;
+    }
     if (status_.done) {
       if (!openWholeView()) return;
       continue;
     }
-    budget -= std::min(budget, shootToNextStep(budget));
+    budget -= std::min(budget, shootToNextStep(perspective_->delivering() ? K : budget));
+    perspective_->shot();
   }
 }
 

@@ -106,7 +106,7 @@ class ProgressiveSolver final : public Solver {
   void runPasses(unsigned passes);
   // Perspective-driven: item buffers for deliveries and for shots share `budget`.
   void advancePerspective(unsigned budget);
-  unsigned deliverStored(unsigned budget);  // entries for surfaces entering the view
+  unsigned deliverStored();  // one pass of entries for surfaces entering the view
   bool openWholeView();                     // out of light with entries held back
   unsigned shootToNextStep(unsigned budget);  // returns the shots enqueued
   bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
