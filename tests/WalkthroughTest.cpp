@@ -66,7 +66,7 @@ TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly wi
     const bool twice = algorithm == "perspective";
     const std::string a = test::tempPath("walk_a_" + algorithm), b = test::tempPath("walk_b_" + algorithm);
     const std::string flags = " --elements 600 --algorithm " + algorithm + " --camera-path " + path +
-                              " --fps 4 --frame-shots 12 --shooters-per-pass 4 --width 48 --height 48 "
+                              " --fps 4 --frame-shots 12 --shooters-per-pass 4 --item-res 128 --width 48 --height 48 "
                               "--reference-convergence 0.9 --quiet";
     test::Run run = test::shell("$HEMIRAD solve " + scene + flags + " --frames " + a +
                                 (twice ? " && $HEMIRAD solve " + scene + flags + " --frames " + b : std::string()));
