@@ -26,6 +26,7 @@ ProgressiveSettings perspective(unsigned decayShots) {
   s.shootersPerPass = 8;
   s.fovDecayShots = decayShots;
   s.viewInterest = 0;  // the simulated field of view alone: the walls are out of the area of interest
+  s.itemResolution = 128;  // a convex box: the exact bookkeeping is checked, not the item buffer's resolution
   s.stop = {0, 0.9999};
   return s;
 }

@@ -315,5 +315,5 @@ if __name__ == "__main__":
     four_boxes("scenes/four_boxes")
     analytic("scenes/analytic")
     os.makedirs("scenes/building", exist_ok=True)
-    for n in (2, 4):  # 4 and 16 rooms; 64 (n = 8) on demand: make_scenes.py building 8
+    for n in (2, 4, 8):  # 4, 16 and 64 rooms
         building("scenes/building", n)
