@@ -6,7 +6,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(HEMIRAD_EXPORTED base scene solver output output_files options bench validate walk sweep)
+set(HEMIRAD_EXPORTED base scene solver output output_files options bench validate walk walk_files sweep)
 set(_targets hemirad_gl hemirad_cpu glad_gl hemirad_shaders)
 foreach(l ${HEMIRAD_EXPORTED})
   list(APPEND _targets hemirad_${l})
@@ -18,7 +18,7 @@ endforeach()
 
 # hemirad::hemirad: the whole library (every exported part), C++20 like hemirad itself.
 add_library(hemirad_library INTERFACE)
-target_link_libraries(hemirad_library INTERFACE hemirad_output_files hemirad_bench hemirad_validate hemirad_walk
+target_link_libraries(hemirad_library INTERFACE hemirad_output_files hemirad_bench hemirad_validate hemirad_walk_files
                                                 hemirad_sweep)
 target_compile_features(hemirad_library INTERFACE cxx_std_20)
 set_target_properties(hemirad_library PROPERTIES EXPORT_NAME hemirad)
@@ -43,7 +43,7 @@ install(FILES ${CMAKE_BINARY_DIR}/hemiradConfig.cmake ${CMAKE_BINARY_DIR}/hemira
 
 # pkg-config: the same libraries, in link order, then the Debian packages they need.
 set(HEMIRAD_PC_LIBS "")
-foreach(l sweep walk validate bench options output_files output solver cpu gl scene base)
+foreach(l sweep walk_files walk validate bench options output_files output solver cpu gl scene base)
   string(APPEND HEMIRAD_PC_LIBS " -lhemirad_${l}")
 endforeach()
 string(APPEND HEMIRAD_PC_LIBS " -lglad_gl -lhemirad_shaders")

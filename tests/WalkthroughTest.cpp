@@ -100,3 +100,24 @@ TEST_CASE("Walkthrough flags come together: a path needs a frames folder and a b
     CHECK(run.output.find("hemirad: error:") != std::string::npos);
   }
 }
+
+TEST_CASE("hemirad-bench experiment, the lean binary for GPU machines, walks as hemirad experiment does, without figures",
+          "[cli][walkthrough]") {
+  // Shots per frame make the runs reproducible: every column but the times must agree.
+  const std::string flags = " experiment --scenes " + test::sourcePath("scenes/building/building_4.obj") +
+                            " --algorithms perspective --elements 300 --camera-path " +
+                            test::sourcePath("scenes/building/building_4.path") +
+                            " --fps 0.5 --frame-shots 8 --width 32 --height 32 --reference-convergence 0.8 --out-dir ";
+  const std::string full = test::tempPath("experiment_full"), lean = test::tempPath("experiment_lean");
+  test::Run run = test::shell("$HEMIRAD" + flags + full + " && \"$(dirname \"$HEMIRAD\")/hemirad-bench\"" + flags + lean);
+  INFO(run.output);
+  REQUIRE(run.exitCode == 0);
+  const auto a = readCsv(full + "/building_4_perspective.csv"), b = readCsv(lean + "/building_4_perspective.csv");
+  REQUIRE(a.size() > 2);
+  REQUIRE(a.size() == b.size());
+  for (std::size_t r = 0; r < a.size(); ++r)
+    for (std::size_t c : {0u, 1u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u}) CHECK(a[r][c] == b[r][c]);
+  CHECK(std::filesystem::exists(lean + "/summary.md"));
+  CHECK(std::filesystem::exists(full + "/building_4_error_vs_shots.svg"));
+  CHECK_FALSE(std::filesystem::exists(lean + "/building_4_error_vs_shots.svg"));
+}

@@ -5,8 +5,10 @@
 #include "src/base/Error.h"
 #include "src/cli/CliDocs.h"
 #include "src/cli/Options.h"
+#include "src/output/ImageFile.h"
 #include "src/output/Provenance.h"
 #include "src/solver/Methods.h"
+#include "src/walk/ExperimentFlags.h"
 
 namespace hemirad {
 
@@ -166,18 +168,9 @@ void Commands::addExperiment() {
   CLI::App* x = experimentCmd = app.add_subcommand(
       "experiment", "Seed 004's experiments: progressive vs importance vs perspective along camera paths; or, "
                     "with SPEC, a parameter sweep run here or on Slurm (docs/sweeps.md)");
-  ExperimentOptions& e = experiment;
-  seed004Only = {add(x, "--scenes", e.scenes), add(x, "--algorithms", e.algorithms), add(x, "--elements", e.elements),
-                 add(x, "--fps", e.walkthrough.fps), add(x, "--frame-ms", e.walkthrough.frameMs),
-                 add(x, "--camera-path", e.cameraPath, "SCENE.path beside each scene"),
-                 add(x, "--width", e.walkthrough.width), add(x, "--height", e.walkthrough.height),
-                 add(x, "--ambient", e.walkthrough.ambient), add(x, "--reference-convergence", e.referenceConvergence),
-                 add(x, "--fov-decay", e.progressive.fovDecayShots)};
-  add(x, "--out-dir", e.out);
-  seed004Only.push_back(add(x, "--frame-shots", e.walkthrough.frameShots)->excludes(experimentCmd->get_option("--frame-ms")));
-  seed004Only.push_back(addSwitch(x, "--keep-frames", e.frames));
-  seed004Only.push_back(add(x, "--backend", e.backendName));
-  seed004Only.push_back(add(x, "--gpu", e.backend.gpu));
+  seed004Only = addExperimentFlags(x, experiment);
+  add(x, "--out-dir", experiment.out);
+  seed004Only.push_back(addSwitch(x, "--keep-frames", experiment.frames));
   addSweep(x);
 }
 
@@ -326,6 +319,7 @@ int Commands::runExperiment() {
   if (sweep.spec.empty()) {
     for (const CLI::Option* o : {slurm, jobs})
       if (*o) throw InputError(o->get_name() + " needs a sweep SPEC: hemirad experiment SPEC " + o->get_name() + " ...");
+    experiment.walkthrough.writeFrame = writePng;
     return hemirad::runExperiment(experiment);
   }
   for (const CLI::Option* o : seed004Only)

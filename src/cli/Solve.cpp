@@ -68,6 +68,7 @@ int runWalkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas
   const CameraPath path = readCameraPath(o.cameraPath, camera);
   WalkthroughOptions w = o.walkthrough;
   w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient, w.exposure = o.exposure;
+  w.writeFrame = writePng;
   ConvergedViews converged(scene, atlas, o.progressive, o.referenceConvergence);
   const std::vector<FrameRecord> frames = walk(solver, state, path, converged, w);
   writeFramesCsv(w.framesDir + "/frames.csv", frames);

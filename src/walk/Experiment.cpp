@@ -163,7 +163,7 @@ int runExperiment(ExperimentOptions o) {
   checkWritable(o.out + "/summary.md", "--out-dir");
   o.backend.kind = gl::parseBackendKind(o.backendName);
   for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
-  checkPlotting();
+  if (o.figures) checkPlotting();
   auto backend = gl::createBackend(o.backend);
   std::vector<Run> runs;
   std::vector<std::string> names;
@@ -204,9 +204,11 @@ int runExperiment(ExperimentOptions o) {
                : fmt::format("{},{},{},{},,\n", run.scene, run.elements, run.algorithm, e.name);
     }
   writeTextFile(o.out + "/events.csv", csv);
-  Figures figures(provenance(backend->name(), backend->renderer()));
-  for (const std::string& name : names) plotScene(figures, o.out, name, runs);
-  figures.write();
+  if (o.figures) {
+    Figures figures(provenance(backend->name(), backend->renderer()));
+    for (const std::string& name : names) plotScene(figures, o.out, name, runs);
+    figures.write();
+  }
   const std::string md = summaryMarkdown(runs, o, fmt::format("{} ({})", backend->name(), backend->renderer())) + winsMarkdown(runs);
   writeTextFile(o.out + "/summary.md", md);
   fmt::print("{}", md);

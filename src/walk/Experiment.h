@@ -23,7 +23,8 @@ struct ExperimentOptions {
   WalkthroughOptions walkthrough;  // fps, frame budget, frame size
   std::string cameraPath;          // instead of SCENE.path beside each scene (e.g. a still camera)
   std::string out = "docs/experiments";  // --out-dir
-  bool frames = false;             // also keep every frame's PNG
+  bool frames = false;             // also keep every frame's PNG (written by walkthrough.writeFrame)
+  bool figures = true;             // the SVG/PDF plots (matplotlib); without, the CSVs and summary only
   gl::BackendOptions backend;
   std::string backendName = "osmesa";
 };

@@ -1,4 +1,3 @@
-#include "src/output/ImageFile.h"
 #include "src/walk/Walkthrough.h"
 
 #include <chrono>
@@ -24,6 +23,7 @@ ConvergedViews::ConvergedViews(const Scene& scene, const Atlas& atlas, Progressi
 std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, const CameraPath& path,
                               ConvergedViews& converged, const WalkthroughOptions& o) {
   using Clock = std::chrono::steady_clock;
+  if (!o.framesDir.empty() && !o.writeFrame) throw std::logic_error("walk: a frames folder without a frame writer");
   if (!o.framesDir.empty()) std::filesystem::create_directories(o.framesDir);
   Renderer renderer(state);
   const double aspect = double(o.width) / o.height;
@@ -71,7 +71,7 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
     r.shownRms = imageRmsError(shown, reference);
     if (!o.framesDir.empty()) {
       if (f == 0) scale = exposureScale(reference, o.exposure);  // one exposure: frames compare
-      writePng(fmt::format("{}/frame_{:04d}.png", o.framesDir, f), shown, scale);
+      o.writeFrame(fmt::format("{}/frame_{:04d}.png", o.framesDir, f), shown, scale);
     }
     records.push_back(r);
   }

@@ -3,6 +3,7 @@
 // reproducible runs), then the frame is rendered, compared with the converged solution seen
 // from the same camera, and logged.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,9 @@ struct WalkthroughOptions {
   int width = 256, height = 256, supersample = 1;
   bool ambient = true;         // seed 004's display-only ambient term on the frames
   double exposure = 0;         // stops over the automatic exposure of the first converged frame
-  std::string framesDir;       // frame_NNNN.png per frame (empty: none)
+  std::string framesDir;       // frame_NNNN.png per frame (empty: none), written by writeFrame
+  // (writePng of output/ImageFile.h: passed in, so walkthroughs need no image library).
+  std::function<void(const std::string& path, const Image& image, double exposureScale)> writeFrame;
 };
 
 struct FrameRecord {

@@ -1,0 +1,14 @@
+// The flags of seed 004's experiments, declared once (from the option table, cli/Options.h) for
+// `hemirad experiment` and for the lean `hemirad-bench experiment` that GPU machines run.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <vector>
+
+#include "src/walk/Experiment.h"
+
+namespace hemirad {
+
+// Adds them to `cmd`, bound to `e`; returns them (what a sweep SPEC makes meaningless).
+std::vector<CLI::Option*> addExperimentFlags(CLI::App* cmd, ExperimentOptions& e);
+
+}  // namespace hemirad
