@@ -16,8 +16,9 @@ namespace {
 
 // Cornell box at ~2,500 elements to 0.9: 630 shots, about 3 s on llvmpipe with 128^2 item buffers
 // (17 s at the default 512^2; what is checked is the checkpoint, not the item buffer).
-std::string solveArgs() {
-  return "solve " + test::sourcePath("scenes/cornell/cornell.obj") + " --elements 2500 --item-res 128 --quiet";
+std::string solveArgs(int itemResolution = 128) {
+  return "solve " + test::sourcePath("scenes/cornell/cornell.obj") + " --elements 2500 --item-res " +
+         std::to_string(itemResolution) + " --quiet";
 }
 
 // The uninterrupted solve's report, computed once.
@@ -99,8 +100,7 @@ TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint
   refused(test::hemirad("solve " + test::sourcePath("scenes/cornell_subdivided/cornell_x2.obj") +
                         " --elements 2500 --item-res 128 --quiet --resume " + ck),
           "another scene");
-  refused(test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") + " --elements 2500 --item-res 256 --quiet --resume " + ck),
-          "item_resolution = 128, this run has 256");
+  refused(test::hemirad(solveArgs(256) + " --resume " + ck), "item_resolution = 128, this run has 256");
   refused(test::hemirad(solveArgs() + " --shooters-per-pass 4 --resume " + ck), "shooters_per_pass");
   std::string cut = test::tempPath("cut.ckpt");
   {

@@ -7,7 +7,6 @@
 
 #include "src/bench/Bench.h"
 #include "src/base/Error.h"
-#include "src/cli/Options.h"
 #include "src/cli/Suggest.h"
 #include "src/output/Provenance.h"
 #include "src/walk/ExperimentFlags.h"
@@ -21,7 +20,6 @@ int main(int argc, char** argv) {
   experiment.figures = false;  // matplotlib is not carried to GPU machines
   CLI::App* x = app.add_subcommand("experiment", "Seed 004's experiments (as hemirad experiment): CSVs and summary, no figures");
   hemirad::addExperimentFlags(x, experiment);
-  hemirad::options::add(x, "--out-dir", experiment.out);
   if (std::optional<int> exit = hemirad::options::parse(app, argc, argv)) return *exit;
   try {
     return *x ? hemirad::runExperiment(experiment) : hemirad::runBench(options);

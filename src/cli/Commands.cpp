@@ -169,7 +169,6 @@ void Commands::addExperiment() {
       "experiment", "Seed 004's experiments: progressive vs importance vs perspective along camera paths; or, "
                     "with SPEC, a parameter sweep run here or on Slurm (docs/sweeps.md)");
   seed004Only = addExperimentFlags(x, experiment);
-  add(x, "--out-dir", experiment.out);
   seed004Only.push_back(addSwitch(x, "--keep-frames", experiment.frames));
   addSweep(x);
 }

@@ -8,7 +8,7 @@
 
 namespace hemirad {
 
-// Adds them to `cmd`, bound to `e`; returns them (what a sweep SPEC makes meaningless).
+// Adds them to `cmd`, bound to `e`; returns those a sweep SPEC makes meaningless (all but --out-dir).
 std::vector<CLI::Option*> addExperimentFlags(CLI::App* cmd, ExperimentOptions& e);
 
 }  // namespace hemirad
