@@ -2,13 +2,17 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "src/base/Error.h"
 
@@ -22,8 +26,53 @@ std::string tempName(const fs::path& p, const fs::path& dir) {
   return (dir / (p.stem().string() + ".tmp" + std::to_string(getpid()) + p.extension().string())).string();
 }
 
-// A stream (FIFO, device) is fed from a finished temporary file in the temp folder, since
-// writers such as OpenEXR seek and a pipe cannot.
+// Every byte to `fd`, each write checked (a full disk: ENOSPC); `path` names the file in errors.
+void writeAll(int fd, std::string_view bytes, const std::string& path) {
+  while (!bytes.empty()) {
+    const ssize_t k = ::write(fd, bytes.data(), bytes.size());
+    if (k < 0 && errno == EINTR) continue;
+    if (k < 0) fail("{}: cannot write: {}", path, std::strerror(errno));
+    bytes.remove_prefix(std::size_t(k));
+  }
+}
+
+// Writes, closes and (for a regular file) fsyncs `fd`, each step checked; closes it on failure too.
+void finish(int fd, std::string_view bytes, const std::string& path, bool sync) {
+  try {
+    writeAll(fd, bytes, path);
+    if (sync && ::fsync(fd) != 0) fail("{}: cannot write: {}", path, std::strerror(errno));
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  if (::close(fd) != 0) fail("{}: cannot write: {}", path, std::strerror(errno));
+}
+
+// A new regular file `file` holding `bytes`; `path` is the name the user gave.
+void writeNewFile(const std::string& file, std::string_view bytes, const std::string& path) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail("{}: cannot write: {}", path, std::strerror(errno));
+  finish(fd, bytes, path, true);
+}
+
+// A stream (FIFO, device, /dev/stdout) gets the bytes appended: /dev/stdout redirected to a
+// file (`>>`) must not be truncated; a pipe ignores it.
+void feedStream(const std::string& path, std::string_view bytes) {
+  std::fflush(stdout);  // what stdio holds for stdout goes first
+  if (path == "-") return writeAll(STDOUT_FILENO, bytes, "stdout");
+  const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (fd < 0) fail("{}: cannot write: {}", path, std::strerror(errno));
+  finish(fd, bytes, path, false);
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail("{}: cannot read back", path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A stream is fed from a finished temporary file in the temp folder, since writers such as
+// OpenEXR seek and a pipe cannot.
 void writeThrough(const std::string& path, const std::function<void(const std::string&)>& write) {
   std::error_code ec;
   fs::path dir = fs::temp_directory_path(ec);
@@ -31,12 +80,7 @@ void writeThrough(const std::string& path, const std::function<void(const std::s
   const std::string tmp = tempName(fs::path(path).filename().empty() ? fs::path("out") : fs::path(path), dir);
   try {
     write(tmp);
-    std::ifstream in(tmp, std::ios::binary);
-    // Appends: /dev/stdout redirected to a file (`>>`) must not be truncated; a pipe ignores it.
-    std::ofstream out(path, std::ios::binary | std::ios::app);
-    if (!in || !out) fail("{}: cannot write", path);
-    out << in.rdbuf();
-    if (!out.flush()) fail("{}: write failed", path);
+    feedStream(path, readFile(tmp));
   } catch (...) {
     fs::remove(tmp, ec);
     throw;
@@ -111,17 +155,62 @@ void writeAtomically(const std::string& path, const std::function<void(const std
   }
 }
 
-void writeTextFile(const std::string& path, const std::string& text) {
-  if (path == "-") {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    if (std::fflush(stdout) != 0) fail("stdout: write failed");
+void writeFileBytes(const std::string& path, std::string_view bytes) {
+  OutputBatch batch;
+  batch.add("", path, bytes);
+  batch.commit();
+}
+
+void writeTextFile(const std::string& path, const std::string& text) { writeFileBytes(path, text); }
+
+namespace {
+// "--image out.png: cannot write: No space left on device": the flag first, when there is one.
+[[noreturn]] void rethrowNaming(const std::string& flag, const InputError& e) {
+  if (flag.empty()) throw e;
+  throw InputError(flag + " " + e.what());
+}
+}  // namespace
+
+void OutputBatch::add(const std::string& flag, const std::string& path, std::string_view bytes) {
+  if (path == "-" || isStream(path)) {
+    staged_.push_back({flag, path, "", std::string(bytes)});
     return;
   }
-  writeAtomically(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp);
-    out << text;
-    if (!out.flush()) fail("{}: write failed", path);
-  });
+  const fs::path target = followLinks(path);  // a symlink stays; the file it names is replaced
+  staged_.push_back({flag, path, tempName(target, target.parent_path()), ""});
+  try {
+    writeNewFile(staged_.back().tmp, bytes, path);
+  } catch (const InputError& e) {
+    rethrowNaming(flag, e);  // the destructor removes the partial temporary file with the others
+  }
+}
+
+void OutputBatch::commit() {
+  // Streams first: they cannot be taken back, while a staged file not yet renamed still can.
+  for (bool streams : {true, false})
+    for (Staged& s : staged_) {
+      if (s.tmp.empty() != streams) continue;
+      try {
+        if (streams) {
+          feedStream(s.path, s.bytes);
+          continue;
+        }
+        std::error_code ec;
+        fs::rename(s.tmp, followLinks(s.path), ec);
+        if (ec) fail("{}: cannot write: {}", s.path, ec.message());
+        s.tmp.clear();
+      } catch (const InputError& e) {
+        rethrowNaming(s.flag, e);
+      }
+    }
+  staged_.clear();
+}
+
+OutputBatch::~OutputBatch() {
+  for (const Staged& s : staged_) {
+    std::error_code ignored;
+    if (!s.tmp.empty()) fs::remove(s.tmp, ignored);
+  }
 }
 
 }  // namespace hemirad

@@ -27,8 +27,7 @@ void checkInstantInputs(const SolveOptions& o) {
                      "(--out, --image)");
   if (!o.checkpoint.empty() || !o.resume.empty()) throw InputError("--method instant has nothing to checkpoint");
   if (!o.cameraPath.empty()) throw InputError("--camera-path is for --method progressive, not instant");
-  for (auto [path, flag] : {std::pair{o.out, "--out"}, {o.image, "--image"}, {o.report, "--report"}})
-    if (!path.empty()) checkWritable(path, flag);
+  checkSolveOutputs(o, {{"the scene", o.scene}});
 }
 
 nlohmann::json instantReport(const SolveOptions& o, const gl::RenderBackend& backend, const VplTracer& tracer,
@@ -61,6 +60,7 @@ int runInstantSolve(const SolveOptions& o) {
   checkInstantInputs(o);
   Scene scene = loadScene(o.scene, o.load);
   for (const auto& w : scene.warnings) warn(w);
+  checkSolveOutputs(o, scene.sources);
   validateSolvable(scene);
   const Camera camera = resolveCamera(scene, o.camera);
   auto backend = gl::createBackend(o.backend);
@@ -71,12 +71,15 @@ int runInstantSolve(const SolveOptions& o) {
   const VplStats stats = tracer.trace();
   InstantRenderer renderer(scene, tracer, o.instant);
   const InstantImage render = renderer.render(camera, o.width, o.height, o.supersample, o.shading);
-  if (!o.out.empty()) writeExr(o.out, render.image);
-  if (!o.image.empty()) writePng(o.image, render.image, exposureScale(render.image, o.exposure));
+  const double scale = exposureScale(render.image, o.exposure);
+  OutputBatch outputs;  // all or none
+  if (!o.out.empty()) outputs.add("--out", o.out, encodeRender(o.out, render.image, scale));
+  if (!o.image.empty()) outputs.add("--image", o.image, encodePng(render.image, scale));
   nlohmann::json report = instantReport(o, *backend, tracer, stats, render);
   report["total_ms"] = msSince(start);
   report["provenance"] = provenanceJson(provenance(backend->name(), backend->renderer()));
-  if (!o.report.empty()) writeTextFile(o.report, report.dump(2) + "\n");
+  if (!o.report.empty()) outputs.add("--report", o.report, report.dump(2) + "\n");
+  outputs.commit();
   fmt::print(stderr, "hemirad: {}: {} VPLs from {} paths, {:.2f} % of the power escaped, clamp bias {:.2f} %, {} "
              "shading in {:.0f} ms ({}, {})\n", o.scene, stats.vpls, stats.paths,
              100.0 * report["escaped_fraction"].get<double>(), 100.0 * render.clampBias(), shadingName(o.shading),

@@ -182,8 +182,8 @@ std::vector<Flag> deviceAndOutputFlags() {
       {"--atlas", "FILE", "Radiosity atlas, one texel per element (.exr)", none},
       {"--ply", "FILE", "Mesh with per-vertex radiosity (.ply)", none},
       {"--gltf", "FILE",
-       "Scene with its lightmap (TEXCOORD_1) as glTF 2.0 (X.glb), with X.lightmap.exr (linear B) and X.lightmap.png "
-       "(tone mapped as --image: the texture X.glb uses) beside it",
+       "Scene with its lightmap (TEXCOORD_1) as glTF 2.0 (X.glb, the lightmap PNG tone mapped as --image inside it), "
+       "with X.lightmap.exr (linear B) beside it (not beside a stream)",
        none},
       {"--report", "FILE", "Report (.json; - writes it to stdout)", none},
       {"--json", "FILE", "Results as JSON", none},
@@ -191,7 +191,8 @@ std::vector<Flag> deviceAndOutputFlags() {
       {"--quiet", "", "No progress bar", none},
       // Checkpoints.
       {"--checkpoint", "FILE",
-       "Write the solve's state here (atomically) at the end, on SIGINT/SIGTERM and every --checkpoint-every shots",
+       "Write the solve's state here (X.ckpt, atomically) at the end, on SIGINT/SIGTERM and every --checkpoint-every "
+       "shots",
        none},
       {"--checkpoint-every", "N", "Also checkpoint every N shots", kCount},
       {"--resume", "FILE", "Continue from a checkpoint of the same scene and parameters", CLI::ExistingFile},

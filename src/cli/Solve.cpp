@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <filesystem>
 #include <tuple>
 
 #include "src/base/AtomicFile.h"
+#include "src/base/OutputPaths.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/Camera.h"
 #include "src/solver/Checkpoint.h"
@@ -23,12 +25,6 @@
 namespace hemirad {
 
 namespace {
-
-bool isPng(const std::string& path) {
-  std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : path;
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".png";
-}
 
 Image atlasImage(const Atlas& atlas, const std::vector<glm::vec4>& B) {
   Image img{atlas.width, atlas.height, std::vector<float>(B.size() * 3)};
@@ -86,22 +82,42 @@ void describeProgressive(RunInfo& run, const ProgressiveSolver& solver) {
   run.itemTriangles = solver.itemTriangles();
 }
 
+// Every file the solve will write, with its flag and the formats it takes.
+std::vector<OutputPath> solveOutputs(const SolveOptions& o) {
+  std::vector<OutputPath> outputs;
+  auto add = [&](const std::string& path, const char* flag, std::vector<std::string> exts, bool stdoutOk = false) {
+    if (!path.empty()) outputs.push_back({flag, path, std::move(exts), stdoutOk});
+  };
+  add(o.out, "--out", {".exr", ".png"});
+  add(o.image, "--image", {".png"});
+  add(o.atlas, "--atlas", {".exr"});
+  add(o.ply, "--ply", {".ply"});
+  add(o.report, "--report", {".json"}, true);
+  add(o.checkpoint, "--checkpoint", {".ckpt"});
+  if (!o.gltf.empty()) {
+    const GltfPaths files = gltfPaths(o.gltf);
+    add(files.glb, "--gltf", {".glb"});
+    add(files.exr, "--gltf", {});
+  }
+  return outputs;
+}
+
+}  // namespace
+
+void checkSolveOutputs(const SolveOptions& o, std::vector<InputPath> inputs) {
+  std::vector<OutputPath> outputs = solveOutputs(o);
+  std::error_code ec;  // --checkpoint run.ckpt --resume run.ckpt goes on where it stopped
+  if (!o.resume.empty() && !(!o.checkpoint.empty() && std::filesystem::equivalent(o.checkpoint, o.resume, ec)))
+    inputs.push_back({"the checkpoint resumed from (--resume)", o.resume});
+  checkOutputs(outputs, inputs);
+}
+
+namespace {
+
 // Everything checkable before a scene is read: the method, writable outputs, flag combinations.
 void checkSolveInputs(const SolveOptions& o) {
   requireBuilt(o.method);
-  using Exts = std::vector<std::string>;
-  for (auto [path, flag, exts] : {std::tuple{o.out, "--out", Exts{".exr", ".png"}}, {o.image, "--image", Exts{".png"}},
-                                  {o.atlas, "--atlas", Exts{".exr"}}, {o.ply, "--ply", Exts{".ply"}},
-                                  {o.report, "--report", Exts{".json"}}, {o.checkpoint, "--checkpoint", Exts{}}})
-    if (!path.empty()) {
-      if (!exts.empty()) checkExtension(path, flag, exts, std::string(flag) == "--report");
-      checkWritable(path, flag);
-    }
-  if (!o.gltf.empty()) {
-    checkExtension(o.gltf, "--gltf", {".glb"});
-    const GltfPaths files = gltfPaths(o.gltf);
-    for (const std::string& path : {files.glb, files.exr, files.png}) checkWritable(path, "--gltf");
-  }
+  checkSolveOutputs(o, {{"the scene", o.scene}});
   if (o.out.empty() && o.image.empty() && o.atlas.empty() && o.ply.empty() && o.gltf.empty() && o.report.empty() &&
       o.checkpoint.empty() && o.cameraPath.empty())
     warn("no output flag (--out, --image, --atlas, --ply, --gltf, --report, --checkpoint): only the summary line will "
@@ -139,9 +155,10 @@ int solveInBatches(const SolveOptions& o, const SolverState& state, Solver& solv
   return 0;
 }
 
-// The camera render (EXR, PNG), the atlas, the PLY and the glTF the user asked for.
-void writeImages(const SolveOptions& o, const Scene& scene, const Atlas& atlas, const SolverState& state,
-                 const Camera& camera, const std::vector<glm::vec4>& B) {
+// The camera render (EXR, PNG), the atlas, the PLY and the glTF the user asked for, staged.
+// Returns the lightmap's line for stderr, printed once the files are written ("" without --gltf).
+std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene& scene, const Atlas& atlas,
+                 const SolverState& state, const Camera& camera, const std::vector<glm::vec4>& B) {
   Image view;
   double scale = 1;
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
@@ -152,19 +169,22 @@ void writeImages(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
     view = renderer.render(camera, o.width, o.height, o.supersample);
     scale = exposureScale(view, o.exposure);
   }
-  // --out is the linear render; named .png it gets --image's tone mapping (8 bits cannot hold linear light).
-  if (!o.out.empty()) isPng(o.out) ? writePng(o.out, view, scale) : writeExr(o.out, view);
-  if (!o.image.empty()) writePng(o.image, view, scale);
-  if (!o.atlas.empty()) writeExr(o.atlas, atlasImage(atlas, B));
-  if (!o.ply.empty()) writePly(o.ply, scene, atlas, B, scale);
+  if (!o.out.empty()) outputs.add("--out", o.out, encodeRender(o.out, view, scale));
+  if (!o.image.empty()) outputs.add("--image", o.image, encodePng(view, scale));
+  if (!o.atlas.empty()) outputs.add("--atlas", o.atlas, encodeExr(atlasImage(atlas, B)));
+  if (!o.ply.empty()) outputs.add("--ply", o.ply, encodePly(scene, atlas, B, scale));
   if (!o.gltf.empty()) {
     const GltfPaths files = gltfPaths(o.gltf);
-    const Lightmap map = writeGltf(files, scene, atlas, B, camera, double(o.width) / o.height, scale);
-    fmt::print(stderr, "hemirad: {}: {} x {} lightmap, {} elements, texel use {:.1f} % (charts with {}-texel gutters "
-               "{:.1f} %) ({}, {})\n",
-               o.gltf, map.width, map.height, map.elements, 100 * map.texelUse(), map.gutter, 100 * map.packing(),
-               files.exr, files.png);
+    const GltfFiles gltf = encodeGltf(files, scene, atlas, B, camera, double(o.width) / o.height, scale);
+    stageGltf(outputs, files, gltf);
+    const Lightmap& map = gltf.map;
+    return fmt::format("hemirad: {}: {} x {} lightmap, {} elements, texel use {:.1f} % (charts with {}-texel gutters "
+                       "{:.1f} %){}\n",
+                       o.gltf, map.width, map.height, map.elements, 100 * map.texelUse(), map.gutter,
+                       100 * map.packing(),
+                       files.exr.empty() ? " (a stream: no .lightmap.exr beside it)" : " and " + files.exr);
   }
+  return "";
 }
 
 // The report's description of the run; the item buffer and shoot level are the ones the
@@ -209,6 +229,7 @@ int runSolve(const SolveOptions& o) {
 
   Scene scene = loadScene(o.scene, o.load);
   for (const auto& w : scene.warnings) warn(w);
+  checkSolveOutputs(o, scene.sources);
   validateSolvable(scene);
   Camera camera = resolveCamera(scene, o.camera);
 
@@ -235,14 +256,17 @@ int runSolve(const SolveOptions& o) {
   if (int interrupted = solveInBatches(o, state, solver, identity, status, progress)) return interrupted;
   const double solveMs = progress.elapsedSeconds() * 1e3;
   const std::vector<glm::vec4> B = state.readRadiosity();
-  writeImages(o, scene, atlas, state, camera, B);
+  OutputBatch outputs;  // all or none: a full disk on the last leaves none of the others
+  const std::string lightmapLine = stageImages(outputs, o, scene, atlas, state, camera, B);
 
   RunInfo run = describeRun(o, *backend, atlas, solver);
   run.status = status;
   run.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   run.radiosityHash = radiosityHash(atlas, B);
   run.objects = objectRadiosity(scene, atlas, B);
-  if (!o.report.empty()) writeReport(o.report, run);
+  if (!o.report.empty()) outputs.add("--report", o.report, reportJson(run).dump(2) + "\n");
+  outputs.commit();
+  fmt::print(stderr, "{}", lightmapLine);
   const std::string reached = o.method == Method::Stochastic
                                    ? fmt::format("{} iterations of {} shooters", status.shots, o.stochastic.shooters)
                                    : fmt::format("{} shots, convergence {:.4f}", status.shots, status.convergence);

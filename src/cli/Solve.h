@@ -1,5 +1,6 @@
 // `hemirad solve` and `hemirad info`: the commands, apart from flag parsing (src/cli/main.cpp).
 #pragma once
+#include "src/base/OutputPaths.h"
 #include <optional>
 #include <string>
 
@@ -43,6 +44,9 @@ struct SolveOptions {
 int runSolve(const SolveOptions& options);
 // --method instant (src/cli/InstantSolve.cpp): camera images from VPLs, no atlas.
 int runInstantSolve(const SolveOptions& options);
+// Before any work: every output's name and folder, no two outputs on one file or stream, and none
+// on `inputs` (the scene and what it names; --resume's checkpoint unless --checkpoint is it).
+void checkSolveOutputs(const SolveOptions& options, std::vector<InputPath> inputs);
 // FNV-1a 64 of an image's float bit patterns (determinism checks).
 std::uint64_t imageHash(const Image& image);
 

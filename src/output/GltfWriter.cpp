@@ -6,7 +6,7 @@
 #include <cctype>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -90,7 +90,7 @@ tinygltf::Primitive primitive(tinygltf::Model& m, const Streams& s, int material
 tinygltf::Value rgb(const glm::dvec3& c) { return tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(c.x), tinygltf::Value(c.y), tinygltf::Value(c.z)}); }
 
 // Black base colour, the lightmap as emission through TEXCOORD_1; the physical material in extras.
-tinygltf::Material material(const Material& mat, const GltfPaths& paths, double exposureScale) {
+tinygltf::Material material(const Material& mat, const std::string& exrName, double exposureScale) {
   tinygltf::Material out;
   out.name = mat.name;
   out.pbrMetallicRoughness.baseColorFactor = {0, 0, 0, 1};
@@ -102,7 +102,7 @@ tinygltf::Material material(const Material& mat, const GltfPaths& paths, double 
   out.doubleSided = true;  // hemirad's faces are seen, and lit, from both sides
   tinygltf::Value::Object hemirad{{"reflectance", rgb(mat.reflectance)},
                                   {"emission", rgb(mat.emission)},
-                                  {"lightmap_hdr", tinygltf::Value(std::filesystem::path(paths.exr).filename().string())},
+                                  {"lightmap_hdr", tinygltf::Value(exrName)},
                                   {"lightmap_texcoord", tinygltf::Value(1)},
                                   {"png_exposure_scale", tinygltf::Value(exposureScale)}};
   out.extras = tinygltf::Value(tinygltf::Value::Object{{"hemirad", tinygltf::Value(hemirad)}});
@@ -134,11 +134,25 @@ void addCamera(tinygltf::Model& m, const Scene& scene, const Camera& camera, dou
   m.nodes.push_back(node);
 }
 
-// Keep each image's uri as given: the images are written by hemirad, not by tinygltf.
-bool keepUri(const std::string*, const std::string*, const tinygltf::Image*, bool, std::string*, void*) { return false; }
+// The lightmap PNG inside the binary chunk, so a .glb copied alone still shows its light.
+void embedLightmap(tinygltf::Model& m, const std::string& png) {
+  auto& buffer = m.buffers[0].data;
+  buffer.resize((buffer.size() + 3) / 4 * 4);  // the next view starts 4-byte aligned
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = buffer.size();
+  view.byteLength = png.size();
+  buffer.insert(buffer.end(), png.begin(), png.end());
+  m.bufferViews.push_back(view);
+  tinygltf::Image image;
+  image.name = "lightmap";
+  image.bufferView = int(m.bufferViews.size()) - 1;
+  image.mimeType = "image/png";
+  m.images.push_back(image);
+}
 
-tinygltf::Model model(const GltfPaths& paths, const Scene& scene, const Atlas& atlas, const Lightmap& map,
-                      const Camera& camera, double aspect, double exposureScale) {
+tinygltf::Model model(const Scene& scene, const Atlas& atlas, const Lightmap& map, const Camera& camera, double aspect,
+                      double exposureScale, const std::string& exrName, const std::string& png) {
   tinygltf::Model m;
   m.asset.version = "2.0";
   m.asset.generator = "hemirad";
@@ -150,14 +164,11 @@ tinygltf::Model model(const GltfPaths& paths, const Scene& scene, const Atlas& a
     for (std::size_t id = 0; id < scene.polygons().size(); ++id)
       if (scene.polygons()[id].material == int(mat)) addPolygon(s, scene, atlas, map, int(id));
     if (s.indices.empty()) continue;
-    m.materials.push_back(material(scene.materials[mat], paths, exposureScale));
+    m.materials.push_back(material(scene.materials[mat], exrName, exposureScale));
     mesh.primitives.push_back(primitive(m, s, int(m.materials.size()) - 1));
   }
   m.meshes.push_back(mesh);
-  tinygltf::Image image;
-  image.uri = std::filesystem::path(paths.png).filename().string();
-  image.mimeType = "image/png";
-  m.images.push_back(image);
+  embedLightmap(m, png);
   tinygltf::Sampler sampler;  // bilinear, no mipmaps: a 2-texel gutter guards level 0 only
   sampler.magFilter = sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
   sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;  // the border's gutters are cut away
@@ -181,28 +192,41 @@ tinygltf::Model model(const GltfPaths& paths, const Scene& scene, const Atlas& a
 }  // namespace
 
 GltfPaths gltfPaths(const std::string& glb) {
+  if (isStream(glb) || glb == "-") return {glb, ""};  // a stream gets no sidecar: the .glb alone
   std::string base = glb;
   std::string ext = std::filesystem::path(glb).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (ext == ".glb") base.resize(glb.size() - 4);
-  return {glb, base + ".lightmap.exr", base + ".lightmap.png"};
+  return {glb, base + ".lightmap.exr"};
+}
+
+GltfFiles encodeGltf(const GltfPaths& paths, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
+                     const Camera& camera, double aspect, double exposureScale) {
+  GltfFiles files{buildLightmap(atlas, B), "", ""};
+  Image image{files.map.width, files.map.height, std::vector<float>(files.map.rgb.size() * 3)};
+  std::memcpy(image.rgb.data(), files.map.rgb.data(), image.rgb.size() * sizeof(float));
+  if (!paths.exr.empty()) files.exr = encodeExr(image);
+  const std::string exrName = paths.exr.empty() ? "" : std::filesystem::path(paths.exr).filename().string();
+  const tinygltf::Model m =
+      model(scene, atlas, files.map, camera, aspect, exposureScale, exrName, encodePng(image, exposureScale));
+  std::ostringstream out;
+  if (!tinygltf::TinyGLTF().WriteGltfSceneToStream(&m, out, false, true)) fail("{}: cannot encode the glTF", paths.glb);
+  files.glb = std::move(out).str();
+  return files;
 }
 
 Lightmap writeGltf(const GltfPaths& paths, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
                    const Camera& camera, double aspect, double exposureScale) {
-  Lightmap map = buildLightmap(atlas, B);
-  Image image{map.width, map.height, std::vector<float>(map.rgb.size() * 3)};
-  std::memcpy(image.rgb.data(), map.rgb.data(), image.rgb.size() * sizeof(float));
-  writeExr(paths.exr, image);
-  writePng(paths.png, image, exposureScale);
-  const tinygltf::Model m = model(paths, scene, atlas, map, camera, aspect, exposureScale);
-  writeAtomically(paths.glb, [&](const std::string& tmp) {
-    tinygltf::TinyGLTF writer;
-    writer.SetImageWriter(keepUri, nullptr);
-    std::ofstream out(tmp, std::ios::binary);
-    if (!writer.WriteGltfSceneToStream(&m, out, false, true) || !out.flush()) fail("{}: cannot write the glTF", paths.glb);
-  });
-  return map;
+  GltfFiles files = encodeGltf(paths, scene, atlas, B, camera, aspect, exposureScale);
+  OutputBatch batch;
+  stageGltf(batch, paths, files);
+  batch.commit();
+  return files.map;
+}
+
+void stageGltf(OutputBatch& batch, const GltfPaths& paths, const GltfFiles& files) {
+  batch.add("--gltf", paths.glb, files.glb);
+  if (!paths.exr.empty()) batch.add("--gltf", paths.exr, files.exr);
 }
 
 }  // namespace hemirad

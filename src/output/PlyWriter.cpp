@@ -3,7 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <map>
 
 #include "src/base/AtomicFile.h"
@@ -20,8 +20,7 @@ struct PlyVertex {
 };
 }  // namespace
 
-void writePly(const std::string& path, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
-              double scale) {
+std::string encodePly(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B, double scale) {
   std::vector<PlyVertex> vertices;
   std::vector<std::vector<std::uint32_t>> faces;
   // Corners shared by neighbouring cuts agree to rounding; weld them on a fine grid.
@@ -47,27 +46,29 @@ void writePly(const std::string& path, const Scene& scene, const Atlas& atlas, c
       if (face.size() >= 3) faces.push_back(std::move(face));
     }
 
-  writeAtomically(path, [&](const std::string& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) fail("{}: cannot write", path);
-    out << "ply\nformat binary_little_endian 1.0\ncomment hemirad radiosity solution\n"
-        << "element vertex " << vertices.size() << "\n"
-        << "property float x\nproperty float y\nproperty float z\n"
-        << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-        << "property float radiosity_r\nproperty float radiosity_g\nproperty float radiosity_b\n"
-        << "element face " << faces.size() << "\nproperty list uchar uint vertex_indices\nend_header\n";
-    for (const PlyVertex& v : vertices) {
-      out.write(reinterpret_cast<const char*>(&v.x), 12);
-      out.write(reinterpret_cast<const char*>(&v.r), 3);
-      out.write(reinterpret_cast<const char*>(&v.br), 12);
-    }
-    for (const auto& f : faces) {
-      unsigned char n = static_cast<unsigned char>(f.size());
-      out.write(reinterpret_cast<const char*>(&n), 1);
-      out.write(reinterpret_cast<const char*>(f.data()), std::streamsize(f.size() * 4));
-    }
-    if (!out.flush()) fail("{}: write failed", path);
-  });
+  std::ostringstream out;
+  out << "ply\nformat binary_little_endian 1.0\ncomment hemirad radiosity solution\n"
+      << "element vertex " << vertices.size() << "\n"
+      << "property float x\nproperty float y\nproperty float z\n"
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      << "property float radiosity_r\nproperty float radiosity_g\nproperty float radiosity_b\n"
+      << "element face " << faces.size() << "\nproperty list uchar uint vertex_indices\nend_header\n";
+  for (const PlyVertex& v : vertices) {
+    out.write(reinterpret_cast<const char*>(&v.x), 12);
+    out.write(reinterpret_cast<const char*>(&v.r), 3);
+    out.write(reinterpret_cast<const char*>(&v.br), 12);
+  }
+  for (const auto& f : faces) {
+    unsigned char n = static_cast<unsigned char>(f.size());
+    out.write(reinterpret_cast<const char*>(&n), 1);
+    out.write(reinterpret_cast<const char*>(f.data()), std::streamsize(f.size() * 4));
+  }
+  return std::move(out).str();
+}
+
+void writePly(const std::string& path, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
+              double scale) {
+  writeFileBytes(path, encodePly(scene, atlas, B, scale));
 }
 
 }  // namespace hemirad

@@ -11,6 +11,8 @@
 
 namespace hemirad {
 
+// The mesh of element cuts, welded, with tone-mapped colours and linear radiosity per vertex.
+std::string encodePly(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B, double exposureScale);
 void writePly(const std::string& path, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
               double exposureScale);
 

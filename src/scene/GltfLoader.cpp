@@ -250,6 +250,13 @@ Scene loadGltf(const std::string& path) {
   const tinygltf::Model model = readModel(path);
   Scene scene;
   scene.path = path;
+  scene.sources = {{"the scene", path}};
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  auto external = [&](const std::string& uri) { return !uri.empty() && uri.rfind("data:", 0) != 0; };
+  for (const tinygltf::Buffer& b : model.buffers)
+    if (external(b.uri)) scene.sources.push_back({"a buffer the scene names", (folder / b.uri).string()});
+  for (const tinygltf::Image& i : model.images)
+    if (external(i.uri)) scene.sources.push_back({"an image the scene names", (folder / i.uri).string()});
   Loader loader{model, path, scene, {}};
   for (std::size_t k = 0; k < model.materials.size(); ++k)
     loader.materialIds.push_back(scene.addMaterial(toMaterial(model.materials[k], k, path, scene)));

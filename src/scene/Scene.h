@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "src/base/OutputPaths.h"
 #include "src/base/Polygon.h"
 
 namespace hemirad {
@@ -43,6 +44,9 @@ class Scene {
   std::vector<Material> materials;
   std::vector<SceneObject> objects;
   std::vector<std::string> warnings;  // what loading repaired or skipped
+  // Every file the scene names (the scene, MTLs and their texture maps, glTF buffers and
+  // images), with what it is: outputs may never be written over them.
+  std::vector<InputPath> sources;
   std::string camera;  // the scene file's own camera (glTF) as --camera text; "" for none
 
   // Adds a polygon; returns false (and records nothing) if it has no area.

@@ -124,6 +124,7 @@ void scanMaterialNumbers(const std::string& objPath, const ObjLines& lines) {
 // Where each material's newmtl, Kd, Ka and Ke are ("FILE:LINE"), which tinyobjloader does not
 // keep. Also refuses a material library that is there but is no readable file (a folder).
 struct MtlLines {
+  std::vector<InputPath> files;  // the MTLs and the texture maps they name
   std::map<std::string, std::vector<std::string>> newmtl;              // every definition of a name
   std::map<std::pair<std::string, std::string>, std::string> values;  // (name, key): its line
   std::set<std::pair<std::string, std::string>> grey;  // (name, key) given one value: r = g = b
@@ -150,6 +151,7 @@ MtlLines scanMaterialLines(const std::string& objPath, const ObjLines& lines) {
       if (fs::exists(mtlPath, ec) && (!fs::is_regular_file(mtlPath, ec) || !std::ifstream(mtlPath)))
         fail("{}:{}: material library '{}' is not a readable file", objPath, mtllibLine, name);
       std::ifstream in(mtlPath);
+      out.files.push_back({"the scene's material library", mtlPath.string()});
       for (int no = 1; std::getline(in, line); ++no) {
         std::istringstream ss(line);
         std::string key;
@@ -165,10 +167,14 @@ MtlLines scanMaterialLines(const std::string& objPath, const ObjLines& lines) {
           while (ss >> value) ++values;
           if (values == 1) out.grey.insert({current, key});
         }
-        if (key.rfind("map_", 0) == 0 || key == "bump" || key == "disp" || key == "decal")
+        if (key.rfind("map_", 0) == 0 || key == "bump" || key == "disp" || key == "decal") {
+          std::string file, word;
+          while (ss >> word) file = word;  // the map's options come first, its file last
+          if (!file.empty()) out.files.push_back({"a texture the scene names", (mtlPath.parent_path() / file).string()});
           out.warnings.push_back(fmt::format("{}: material '{}': {} texture ignored: hemirad uses the constant Kd/Ke "
                                              "of each material, never textures",
                                              where, current, key));
+        }
       }
     }
   }
@@ -264,6 +270,8 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
   Scene scene;
   scene.path = path;
   scene.warnings = mtl.warnings;
+  scene.sources = mtl.files;
+  scene.sources.insert(scene.sources.begin(), {"the scene", path});
   addMaterials(scene, reader, options, mtl, lines, path);
   int defaultMaterial = -1;
   size_t faceNo = 0, totalFaces = 0;

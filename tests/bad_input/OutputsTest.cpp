@@ -56,11 +56,11 @@ TEST_CASE("Bad input: --gltf whose lightmap beside it cannot be written is one e
           "[cli][bad-input]") {
   std::string obj = writeScene("gltf-sidecar", kQuad + "f 1 2 3 4\n");
   std::string dir = test::tempPath("gltf-sidecar-out");
-  fs::create_directories(dir + "/x.lightmap.png");  // a folder where the PNG must go
+  fs::create_directories(dir + "/x.lightmap.exr");  // a folder where the EXR must go
   test::Run run = test::hemirad(solve(obj) + " --gltf " + dir + "/x.glb");
   INFO(run.output);
   CHECK(run.exitCode == 2);
   CHECK(count(run.output, "hemirad: error:") == 1);
-  CHECK_THAT(run.output, Contains("--gltf " + dir + "/x.lightmap.png"));
+  CHECK_THAT(run.output, Contains("--gltf " + dir + "/x.lightmap.exr"));
   CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);  // the folder only
 }

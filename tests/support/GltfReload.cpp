@@ -82,7 +82,14 @@ ReloadedGltf reloadGltf(const std::string& path) {
     for (const tinygltf::Primitive& p : mesh.primitives) addPrimitive(m, p, surfaces, out);
   out.camera = camera(m, out.aspect);
   REQUIRE(m.textures.size() == 1);
-  out.imageUri = m.images.at(std::size_t(m.textures[0].source)).uri;
+  const tinygltf::Image& image = m.images.at(std::size_t(m.textures[0].source));
+  out.imageUri = image.uri;
+  if (image.bufferView >= 0) {
+    const tinygltf::BufferView& v = m.bufferViews.at(std::size_t(image.bufferView));
+    const auto& data = m.buffers.at(std::size_t(v.buffer)).data;
+    REQUIRE(v.byteOffset + v.byteLength <= data.size());
+    out.embeddedImage.assign(data.begin() + std::ptrdiff_t(v.byteOffset), data.begin() + std::ptrdiff_t(v.byteOffset + v.byteLength));
+  }
   const tinygltf::Sampler& s = m.samplers.at(std::size_t(m.textures[0].sampler));
   out.samplerFilter = s.minFilter == s.magFilter ? s.magFilter : -1;
   out.samplerWrap = s.wrapS == s.wrapT ? s.wrapS : -1;
