@@ -112,3 +112,48 @@ TEST_CASE("OSMesa and EGL on llvmpipe give bitwise-identical radiosity", "[cli]"
   CHECK(egl["backend"] == "egl");
   CHECK(osmesa["radiosity_hash"] == egl["radiosity_hash"]);
 }
+
+namespace {
+// The command lines of a doc's ```sh blocks (continuations joined) and `inline` spans that start
+// with `prefix`, with the prefix cut off: what a user would paste.
+std::vector<std::string> documentedCommands(const std::string& doc, const std::string& prefix) {
+  std::ifstream in(test::sourcePath(doc));
+  std::vector<std::string> out;
+  std::string line, joined;
+  bool block = false;
+  while (std::getline(in, line)) {
+    if (line.starts_with("```")) block = !block && line.size() > 3;
+    for (std::size_t at = 0; !block && (at = line.find("`" + prefix, at)) != std::string::npos; ++at)
+      out.push_back(line.substr(at + 1 + prefix.size(), line.find('`', at + 1) - at - 1 - prefix.size()));
+    if (!block) continue;
+    joined += line.substr(0, line.find(" #"));
+    if (!joined.empty() && joined.back() == '\\') {
+      joined.pop_back();
+      continue;
+    }
+    if (joined.starts_with(prefix)) out.push_back(joined.substr(prefix.size()));
+    joined.clear();
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("The README's and docs/gpu.md's commands parse as written in both binaries, space-separated values too",
+          "[cli]") {
+  std::vector<std::pair<std::string, std::string>> commands;  // binary, arguments
+  for (const std::string& args : documentedCommands("README.md", "build/hemirad "))
+    commands.emplace_back("\"$HEMIRAD\"", args);
+  for (const std::string& args : documentedCommands("docs/gpu.md", ".gpu/run "))  // hemirad-bench on the GPU machine
+    commands.emplace_back("\"$(dirname \"$HEMIRAD\")/hemirad-bench\"", args);
+  REQUIRE(commands.size() >= 9);
+  // The space form of a value list, which hemirad-bench once took for a subcommand's name.
+  commands.emplace_back("\"$(dirname \"$HEMIRAD\")/hemirad-bench\"", "--elements 10000 --shooters-per-pass 1,16");
+  commands.emplace_back("\"$HEMIRAD\"", "bench --elements 10000 --shooters-per-pass 1,16");
+  for (const auto& [binary, args] : commands) {
+    // --help after the flags: the flags are checked (names, subcommand), then the help ends the run.
+    test::Run run = test::shell("cd " + test::sourcePath(".") + " && " + binary + " " + args + " --help");
+    INFO(binary << " " << args << "\n" << run.output);
+    CHECK(run.exitCode == 0);
+    CHECK(run.output.find("error") == std::string::npos);
+  }
+}

@@ -104,15 +104,22 @@ TEST_CASE("A PNG named by --out is the tone-mapped render, pixel for pixel the -
   CHECK(test::meanPixel(out) > 0.1);  // exposed: lit surfaces are mid-grey or brighter
 }
 
-TEST_CASE("The convergence history starts at exactly 0 and never decreases", "[cli]") {
+TEST_CASE("The convergence history starts at exactly 0, has one entry per pass and never decreases", "[cli]") {
   const std::string report = test::tempPath("history.json");
   test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
                                 " --elements 600 --shots 40 --quiet --report " + report);
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
-  const std::vector<float> h = test::readJson(report)["convergence_history"].get<std::vector<float>>();
-  REQUIRE(h.size() == 41);
-  CHECK(h[0] == 0.0f);
-  for (std::size_t i = 1; i < h.size(); ++i) CHECK(h[i] >= h[i - 1]);
-  CHECK(h.back() > 0.1f);
+  const nlohmann::json r = test::readJson(report);
+  const auto h = r["convergence_history"].get<std::vector<std::pair<unsigned, float>>>();
+  const unsigned passes = (40 + r["shooters_per_pass"].get<unsigned>() - 1) / r["shooters_per_pass"].get<unsigned>();
+  REQUIRE(h.size() >= 2);
+  CHECK(h.size() <= passes + 2);  // where each pass began, and the end
+  CHECK(h.front() == std::pair<unsigned, float>{0, 0.0f});
+  for (std::size_t i = 1; i < h.size(); ++i) {
+    CHECK(h[i].first > h[i - 1].first);
+    CHECK(h[i].second >= h[i - 1].second);
+  }
+  CHECK(h.back().first == 40);
+  CHECK(h.back().second == Approx(r["convergence"].get<double>()));
 }

@@ -218,3 +218,14 @@ TEST_CASE("A light hung 0.5 mm below the ceiling leaves the ceiling above it dar
   CHECK(ring > 0.05);
   CHECK(covered < 0.01 * ring);
 }
+
+TEST_CASE("validate's level table prints small form-factor errors in significant digits, not as 0.0000", "[cpu]") {
+  Validation v;
+  LevelStats s;
+  s.ffRelErrorMedian = 1.23e-6, s.ffRelErrorP95 = 4.2e-5, s.ffRelErrorMax = 0.0317;
+  v.levels.push_back(s);
+  const std::vector<std::string> row = levelRows(v).at(1);
+  CHECK(std::stod(row.at(7)) == Approx(s.ffRelErrorMedian).epsilon(0.01));
+  CHECK(std::stod(row.at(8)) == Approx(s.ffRelErrorP95).epsilon(0.01));
+  CHECK(std::stod(row.at(9)) == Approx(s.ffRelErrorMax).epsilon(0.01));
+}

@@ -55,6 +55,17 @@ bool inTable(const std::string& name) {
   return std::any_of(table().begin(), table().end(), [&](const Flag& f) { return f.name == name; });
 }
 
+// The subcommand's name: the first argument that is neither a flag nor the value of one of the
+// app's own flags (`hemirad-bench --elements 10000 experiment`: 10000 is --elements' value).
+std::vector<std::string>::const_iterator subcommandName(CLI::App& app, const std::vector<std::string>& args) {
+  for (auto a = args.begin(); a != args.end(); ++a) {
+    if (!a->starts_with("-")) return a;
+    const CLI::Option* o = a->find('=') == std::string::npos ? app.get_option_no_throw(*a) : nullptr;
+    if (o && o->get_items_expected_max() > 0 && a + 1 != args.end()) ++a;
+  }
+  return args.end();
+}
+
 }  // namespace
 
 std::string unknownName(CLI::App& app, const std::vector<std::string>& args) {
@@ -62,7 +73,7 @@ std::string unknownName(CLI::App& app, const std::vector<std::string>& args) {
   std::string command = app.get_name();
   auto arg = args.begin();
   if (!app.get_subcommands({}).empty()) {
-    arg = std::find_if(args.begin(), args.end(), [](const std::string& a) { return !a.starts_with("-"); });
+    arg = subcommandName(app, args);
     if (arg == args.end()) return "";
     std::vector<std::string> names;  // the listed subcommands
     cmd = nullptr;

@@ -15,6 +15,17 @@ nlohmann::json objectsJson(const std::vector<ObjectRadiosity>& objects) {
   return out;
 }
 
+// One [shots, convergence] entry where a pass began (the GPU writes the convergence at a pass's
+// start for each of its shots: select.comp), and the last, after every shot: 60 KB of repeats per
+// Cornell solve become a few hundred bytes.
+nlohmann::json historyJson(const std::vector<float>& h) {
+  nlohmann::json out = nlohmann::json::array();
+  auto same = [](float a, float b) { return a == b || (a != a && b != b); };  // NaN: stochastic, none
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (i == 0 || i + 1 == h.size() || !same(h[i - 1], h[i])) out.push_back({i, h[i]});
+  return out;
+}
+
 nlohmann::json reportJson(const RunInfo& r) {
   using nlohmann::json;
   return {
@@ -43,7 +54,7 @@ nlohmann::json reportJson(const RunInfo& r) {
         {"select", r.timings.select},
         {"readback", r.timings.readback}}},
       {"radiosity_hash", fmt::format("{:016x}", r.radiosityHash)},
-      {"convergence_history", r.convergenceHistory},
+      {"convergence_history", historyJson(r.convergenceHistory)},
       {"objects", objectsJson(r.objects)},
       {"provenance", provenanceJson(provenance(r.backend, r.renderer))},
   };

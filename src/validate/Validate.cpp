@@ -262,7 +262,7 @@ std::vector<std::vector<std::string>> levelRows(const Validation& v) {
     rows.push_back({configName(s), fmt::format("{}", s.itemSubdivision), fmt::format("{}", s.itemTriangles),
                     fmt::format("{}", s.texelPairs), fmt::format("{:.5f}", s.visibilityAgreement),
                     fmt::format("{}", s.falseVisible), fmt::format("{}", s.falseHidden),
-                    fmt::format("{:.4f}", s.ffRelErrorMedian), fmt::format("{:.4f}", s.ffRelErrorP95),
+                    fmt::format("{:.3g}", s.ffRelErrorMedian), fmt::format("{:.3g}", s.ffRelErrorP95),
                     fmt::format("{:.3g}", s.ffRelErrorMax), fmt::format("{:.0f}", s.gpuMs)});
   return rows;
 }
