@@ -89,11 +89,14 @@ tinygltf::Primitive primitive(tinygltf::Model& m, const Streams& s, int material
 
 tinygltf::Value rgb(const glm::dvec3& c) { return tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(c.x), tinygltf::Value(c.y), tinygltf::Value(c.z)}); }
 
-// Black base colour, the lightmap as emission through TEXCOORD_1; the physical material in extras.
+// The albedo as base colour, the lightmap as emission through TEXCOORD_1 (what a viewer with no
+// lights shows: the solution as hemirad's camera image has it); rho and E exactly in extras, which
+// hemirad reads back, so its own .glb reloads as the scene it came from.
 tinygltf::Material material(const Material& mat, const std::string& exrName, double exposureScale) {
   tinygltf::Material out;
   out.name = mat.name;
-  out.pbrMetallicRoughness.baseColorFactor = {0, 0, 0, 1};
+  const glm::dvec3 albedo = glm::clamp(mat.reflectance, 0.0, 1.0);
+  out.pbrMetallicRoughness.baseColorFactor = {albedo.x, albedo.y, albedo.z, 1};
   out.pbrMetallicRoughness.metallicFactor = 0;
   out.pbrMetallicRoughness.roughnessFactor = 1;
   out.emissiveFactor = {1, 1, 1};
@@ -115,7 +118,10 @@ void addCamera(tinygltf::Model& m, const Scene& scene, const Camera& camera, dou
   cam.type = "perspective";
   cam.perspective.yfov = glm::radians(camera.fovY);
   cam.perspective.aspectRatio = aspect;
-  cam.perspective.znear = nearPlane(camera, scene.boundsMin(), scene.boundsMax());
+  // Near enough that a viewer's orbit towards the scene does not clip it (hemirad's own near plane,
+  // half the way to the bounds, is only right for this one eye): 1 % of the scene's diagonal.
+  const double diagonal = glm::length(scene.boundsMax() - scene.boundsMin());
+  cam.perspective.znear = std::min(nearPlane(camera, scene.boundsMin(), scene.boundsMax()), 0.01 * diagonal);
   // tinygltf always writes zfar, and 0 (infinite) is not a valid one: twice the farthest corner.
   double farthest = 0;
   for (int k = 0; k < 8; ++k)
@@ -132,6 +138,28 @@ void addCamera(tinygltf::Model& m, const Scene& scene, const Camera& camera, dou
   node.translation = {camera.eye.x, camera.eye.y, camera.eye.z};
   node.rotation = {q.x, q.y, q.z, q.w};
   m.nodes.push_back(node);
+}
+
+// One mesh and one named node per scene object (what engines select, hide and instance), a
+// primitive per material it uses. Materials keep the scene's indices.
+void addObjects(tinygltf::Model& m, const Scene& scene, const Atlas& atlas, const Lightmap& map) {
+  std::vector<std::vector<Streams>> streams(scene.objects.size(), std::vector<Streams>(scene.materials.size()));
+  for (std::size_t id = 0; id < scene.polygons().size(); ++id) {
+    const ScenePolygon& p = scene.polygons()[id];
+    addPolygon(streams[std::size_t(p.object)][std::size_t(p.material)], scene, atlas, map, int(id));
+  }
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    tinygltf::Mesh mesh;
+    mesh.name = scene.objects[o].name;
+    for (std::size_t mat = 0; mat < scene.materials.size(); ++mat)
+      if (!streams[o][mat].indices.empty()) mesh.primitives.push_back(primitive(m, streams[o][mat], int(mat)));
+    if (mesh.primitives.empty()) continue;
+    m.meshes.push_back(mesh);
+    tinygltf::Node node;
+    node.name = mesh.name;
+    node.mesh = int(m.meshes.size()) - 1;
+    m.nodes.push_back(node);
+  }
 }
 
 // The lightmap PNG inside the binary chunk, so a .glb copied alone still shows its light.
@@ -157,17 +185,9 @@ tinygltf::Model model(const Scene& scene, const Atlas& atlas, const Lightmap& ma
   m.asset.version = "2.0";
   m.asset.generator = "hemirad";
   m.buffers.resize(1);
-  tinygltf::Mesh mesh;
-  mesh.name = "scene";
-  for (std::size_t mat = 0; mat < scene.materials.size(); ++mat) {
-    Streams s;
-    for (std::size_t id = 0; id < scene.polygons().size(); ++id)
-      if (scene.polygons()[id].material == int(mat)) addPolygon(s, scene, atlas, map, int(id));
-    if (s.indices.empty()) continue;
+  for (std::size_t mat = 0; mat < scene.materials.size(); ++mat)
     m.materials.push_back(material(scene.materials[mat], exrName, exposureScale));
-    mesh.primitives.push_back(primitive(m, s, int(m.materials.size()) - 1));
-  }
-  m.meshes.push_back(mesh);
+  addObjects(m, scene, atlas, map);
   embedLightmap(m, png);
   tinygltf::Sampler sampler;  // bilinear, no mipmaps: a 2-texel gutter guards level 0 only
   sampler.magFilter = sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
@@ -177,13 +197,9 @@ tinygltf::Model model(const Scene& scene, const Atlas& atlas, const Lightmap& ma
   texture.source = 0;
   texture.sampler = 0;
   m.textures.push_back(texture);
-  tinygltf::Node node;
-  node.name = "scene";
-  node.mesh = 0;
-  m.nodes.push_back(node);
   addCamera(m, scene, camera, aspect);
   tinygltf::Scene root;
-  root.nodes = {0, 1};
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) root.nodes.push_back(int(n));
   m.scenes.push_back(root);
   m.defaultScene = 0;
   return m;

@@ -2,9 +2,10 @@
 // into triangles, one primitive per scene material, TEXCOORD_1 addressing the lightmap
 // (src/output/Lightmap.h). The lightmap, tone mapped as --image, is a PNG inside the .glb's
 // binary chunk (a .glb copied alone still shows its light); its linear B is OUT.lightmap.exr
-// beside it (none beside a stream such as /dev/stdout). The lightmap is each material's
-// emissiveTexture (texCoord 1) over a black base colour: what viewers show unlit;
-// extras.hemirad keeps the material's reflectance and emission and the EXR's name.
+// beside it (none beside a stream such as /dev/stdout). One mesh and node per scene object. The
+// lightmap is each material's emissiveTexture (texCoord 1) over its albedo as base colour: what
+// viewers without lights show; extras.hemirad keeps the material's reflectance and emission
+// (read back by the glTF loader) and the EXR's name.
 // docs/gltf.md, "Lightmap export".
 #pragma once
 #include <string>

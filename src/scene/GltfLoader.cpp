@@ -133,10 +133,30 @@ Material toMaterial(const tinygltf::Material& g, std::size_t index, const std::s
     if (out.reflectance[c] < 0.0) fail("{}: reflectance baseColorFactor {} is negative", where, out.reflectance[c]);
     if (out.emission[c] < 0.0) fail("{}: emission {} is negative", where, out.emission[c]);
   }
-  if (g.pbrMetallicRoughness.baseColorTexture.index >= 0 || g.emissiveTexture.index >= 0)
+  const bool hemiradLightmap = g.extras.Has("hemirad");  // its emissiveTexture is the baked solution
+  if ((g.pbrMetallicRoughness.baseColorTexture.index >= 0 || g.emissiveTexture.index >= 0) && !hemiradLightmap)
     scene.warnings.push_back(where + ": texture ignored: hemirad uses the constant baseColorFactor and emissiveFactor "
                                      "of each material, never textures");
   return out;
+}
+
+// hemirad's own .glb (src/output/GltfWriter.h) carries each material's exact rho and E in
+// extras.hemirad, beside a lightmap as emissiveTexture that is not a light: read those instead,
+// so the file reloads as the scene it came from.
+void applyHemiradExtras(const tinygltf::Material& g, Material& out, const std::string& path) {
+  if (!g.extras.Has("hemirad")) return;
+  const tinygltf::Value& h = g.extras.Get("hemirad");
+  auto rgb = [&](const char* key, glm::dvec3& into) {
+    const tinygltf::Value& v = h.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 3) return;
+    for (int c = 0; c < 3; ++c)
+      into[c] = finiteFactor(v.Get(c).GetNumberAsDouble(), fmt::format("{}: material '{}'", path, out.name), key);
+  };
+  rgb("reflectance", out.reflectance);
+  rgb("emission", out.emission);
+  for (int c = 0; c < 3; ++c)
+    if (out.reflectance[c] < 0 || out.reflectance[c] > 1 || out.emission[c] < 0)
+      fail("{}: material '{}': extras.hemirad reflectance or emission out of range", path, out.name);
 }
 
 glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& path) {
@@ -258,8 +278,11 @@ Scene loadGltf(const std::string& path) {
   for (const tinygltf::Image& i : model.images)
     if (external(i.uri)) scene.sources.push_back({"an image the scene names", (folder / i.uri).string()});
   Loader loader{model, path, scene, {}};
-  for (std::size_t k = 0; k < model.materials.size(); ++k)
-    loader.materialIds.push_back(scene.addMaterial(toMaterial(model.materials[k], k, path, scene)));
+  for (std::size_t k = 0; k < model.materials.size(); ++k) {
+    Material material = toMaterial(model.materials[k], k, path, scene);
+    applyHemiradExtras(model.materials[k], material, path);
+    loader.materialIds.push_back(scene.addMaterial(material));
+  }
   std::vector<int> roots;
   if (!model.scenes.empty()) {
     const std::size_t s = model.defaultScene >= 0 && std::size_t(model.defaultScene) < model.scenes.size()
