@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "src/base/DataDir.h"
 #include "src/base/Error.h"
 #include "src/cli/CliDocs.h"
 #include "src/cli/Options.h"
@@ -21,6 +22,8 @@ void addScene(CLI::App* cmd, std::string& scene, LoadOptions& load, Discretisati
   cmd->add_option("scene", scene, "Wavefront OBJ (materials from its MTL) or glTF 2.0 (.gltf, .glb)")
       ->required()
       ->type_name("SCENE")
+      // The README's scenes/cornell/cornell.obj from any folder: the shipped one (base/DataDir.h).
+      ->transform(CLI::Validator([](std::string& path) { return path = findScene(path), std::string(); }, "", "shipped"))
       ->check(CLI::ExistingFile);
   add(cmd, "--emission", load.emission);
   CLI::Option* texelSize = add(cmd, "--texel-size", d.texelSize, "from --elements");

@@ -26,6 +26,9 @@ cmake --build "$tmp/cmake" >"$tmp/build.log" || { cat "$tmp/build.log"; exit 1; 
 got=$("$tmp/cmake/consumer" "$scene")
 echo "find_package consumer: $got"
 [ "$got" = "$expected" ]
+# A baker: solve and export a lightmap (the packer is stb's, the writer tinygltf's).
+"$tmp/cmake/consumer" "$scene" "$tmp/fp.glb" | grep '^lightmap'
+[ "$(head -c 4 "$tmp/fp.glb")" = glTF ]
 
 export PKG_CONFIG_PATH=$prefix/lib/pkgconfig
 flags=$(pkg-config --cflags --libs hemirad)
@@ -33,6 +36,8 @@ c++ -std=c++20 -O0 -o "$tmp/pc-consumer" "$src/tests/install/main.cpp" $flags
 got=$("$tmp/pc-consumer" "$scene")
 echo "pkg-config consumer ($(pkg-config --modversion hemirad)): $got"
 [ "$got" = "$expected" ]
+"$tmp/pc-consumer" "$scene" "$tmp/pc.glb" | grep '^lightmap'
+[ "$(head -c 4 "$tmp/pc.glb")" = glTF ]
 
 mkdir "$tmp/elsewhere"
 cd "$tmp/elsewhere"
@@ -40,3 +45,6 @@ cd "$tmp/elsewhere"
 grep -q "\"scene\": \"$prefix/share/hemirad/scenes/cornell/cornell.obj\"" bench.json ||
   { echo "bench did not use the installed scene:"; cat bench.json; exit 1; }
 echo "installed bench from $PWD: $(grep -c '"scene"' bench.json) row on $prefix/share/hemirad/scenes/cornell/cornell.obj"
+# The README's first example, as written, from an empty folder: the shipped scene.
+"$prefix/bin/hemirad" solve scenes/cornell/cornell.obj --elements 300 --shots 4 --image cornell.png --quiet
+[ -s cornell.png ] && echo "installed solve from $PWD: the README's scene path found in $prefix/share/hemirad"
