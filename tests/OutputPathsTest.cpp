@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "src/base/OutputPaths.h"
 #include "src/output/ImageFile.h"
 #include "tests/support/Files.h"
 #include "tests/support/Support.h"
@@ -122,4 +123,15 @@ TEST_CASE("The convergence history starts at exactly 0, has one entry per pass a
   }
   CHECK(h.back().first == 40);
   CHECK(h.back().second == Approx(r["convergence"].get<double>()));
+}
+
+TEST_CASE("A default output folder is always a new one: NAME, then NAME-2, NAME-3, never an earlier run's", "[cpu]") {
+  const std::string base = test::tempPath("fresh") + "/hemirad-experiment";
+  fs::create_directories(fs::path(base).parent_path());
+  CHECK(freshFolder(base) == base);
+  fs::create_directories(base);
+  CHECK(freshFolder(base) == base + "-2");
+  fs::create_directories(base + "-2");
+  std::ofstream(base + "-3");  // a file of that name is taken too
+  CHECK(freshFolder(base) == base + "-4");
 }

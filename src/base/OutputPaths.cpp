@@ -62,4 +62,11 @@ void checkOutputs(const std::vector<OutputPath>& outputs, const std::vector<Inpu
   }
 }
 
+std::string freshFolder(const std::string& name) {
+  std::error_code ec;
+  std::string path = name;
+  for (int k = 2; fs::exists(fs::symlink_status(path, ec)); ++k) path = name + "-" + std::to_string(k);
+  return path;
+}
+
 }  // namespace hemirad

@@ -22,4 +22,8 @@ struct InputPath {
 // any number), and no output on an input. Fails with one InputError naming both.
 void checkOutputs(const std::vector<OutputPath>& outputs, const std::vector<InputPath>& inputs);
 
+// An output folder's default, never an earlier run's: ./NAME, or NAME-2, NAME-3, ..., the first
+// that does not exist yet (a default of docs/experiments overwrote a checkout's shipped figures).
+std::string freshFolder(const std::string& name);
+
 }  // namespace hemirad

@@ -177,7 +177,7 @@ std::vector<Flag> deviceAndOutputFlags() {
        oneOf(std::map<std::string, bool>{{"on", true}, {"off", false}}, "on|off"), "on"},
       // Outputs.
       {"--out", "FILE", "Camera render: linear (.exr), or tone-mapped like --image (.png)", none},
-      {"--out-dir", "DIR", "Folder for the CSVs, summary and plots", none},
+      {"--out-dir", "DIR", "Folder for the CSVs, summary and plots (default: a new ./hemirad-COMMAND, never an earlier run's)", none},
       {"--image", "FILE", "Tone-mapped camera render (.png)", none},
       {"--atlas", "FILE", "Radiosity atlas, one texel per element (.exr)", none},
       {"--ply", "FILE", "Mesh with per-vertex radiosity (.ply)", none},

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "src/base/AtomicFile.h"
+#include "src/base/OutputPaths.h"
 #include "src/scene/Atlas.h"
 #include "src/base/Error.h"
 #include "src/base/DataDir.h"
@@ -159,6 +160,8 @@ void plotScene(Figures& figures, const std::string& out, const std::string& scen
 }  // namespace
 
 int runExperiment(ExperimentOptions o) {
+  if (o.out.empty()) o.out = freshFolder("hemirad-experiment");  // no --out-dir
+  fmt::print(stderr, "hemirad: writing into {}\n", o.out);
   std::filesystem::create_directories(o.out);
   checkWritable(o.out + "/summary.md", "--out-dir");
   o.backend.kind = gl::parseBackendKind(o.backendName);

@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "src/base/AtomicFile.h"
+#include "src/base/OutputPaths.h"
 #include "src/base/Clock.h"
 #include "src/walk/SolutionError.h"
 #include "src/base/DataDir.h"
@@ -57,6 +58,8 @@ PlotSeries series(const std::string& label, const std::vector<Sample>& samples) 
 }  // namespace
 
 int runMethodComparison(MethodComparisonOptions o) {
+  if (o.out.empty()) o.out = freshFolder("hemirad-compare-methods");  // no --out-dir
+  fmt::print(stderr, "hemirad: writing into {}\n", o.out);
   o.backend.kind = gl::parseBackendKind(o.backendName);
   for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
   checkPlotting();

@@ -20,7 +20,7 @@ struct MethodComparisonOptions {
   unsigned iterations = 1024;            // stochastic iterations; progressive gets the same solver time at most
   ProgressiveSettings progressive;       // item buffer, shooters per pass (also the stochastic K)
   std::uint32_t seed = 1;
-  std::string out = "docs/experiments/methods";
+  std::string out;  // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
   gl::BackendOptions backend;
   std::string backendName = "osmesa";
 };

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "src/base/AtomicFile.h"
+#include "src/base/OutputPaths.h"
 #include "src/output/Figure.h"
 #include "src/output/ImageFile.h"
 #include "src/output/InstantRenderer.h"
@@ -70,6 +71,8 @@ Image sideBySide(const Image& left, const Image& right) {
 }  // namespace
 
 int runVplError(VplErrorOptions o) {
+  if (o.out.empty()) o.out = freshFolder("hemirad-compare-vpls");  // no --out-dir
+  fmt::print(stderr, "hemirad: writing into {}\n", o.out);
   o.backend.kind = gl::parseBackendKind(o.backendName);
   checkPlotting();
   Scene scene = loadScene(o.scene, o.load);
