@@ -12,7 +12,8 @@ int runInfo(const InfoOptions& o) {
   Scene scene = loadScene(o.scene, o.load);
   double ts = chooseTexelSize(scene, o.discretisation);
   Atlas atlas = buildAtlas(scene, ts);
-  glm::dvec3 lo = scene.boundsMin(), hi = scene.boundsMax();
+  const double u = scene.unitScale;  // printed in the file's units
+  glm::dvec3 lo = scene.boundsMin() / u, hi = scene.boundsMax() / u;
 
   struct Row {
     int polygons = 0;
@@ -25,7 +26,7 @@ int runInfo(const InfoOptions& o) {
   for (const auto& p : scene.polygons()) {
     Row& r = rows[p.object];
     ++r.polygons;
-    r.area += p.area;
+    r.area += p.area / (u * u);
     ++r.materials[scene.materials[p.material].name];
     emitters += scene.materials[p.material].emissive();
   }
@@ -36,9 +37,9 @@ int runInfo(const InfoOptions& o) {
   fmt::print("bounds       ({:.4g}, {:.4g}, {:.4g}) to ({:.4g}, {:.4g}, {:.4g})\n", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
   fmt::print("objects      {}\npolygons     {}\nmaterials    {}\n", scene.objects.size(), scene.polygons().size(),
              scene.materials.size());
-  fmt::print("area         {:.6g}\n", scene.totalArea());
-  fmt::print("emitters     {} polygons, emitted power {:.6g} (luminance E*A)\n", emitters, scene.emittedPower());
-  fmt::print("texel size   {:.6g}\nelements     {}\natlas        {} x {}\n", ts, atlas.elements, atlas.width, atlas.height);
+  fmt::print("area         {:.6g}\n", scene.totalArea() / (u * u));
+  fmt::print("emitters     {} polygons, emitted power {:.6g} (luminance E*A)\n", emitters, scene.emittedPower() / (u * u));
+  fmt::print("texel size   {:.6g}\nelements     {}\natlas        {} x {}\n", ts / u, atlas.elements, atlas.width, atlas.height);
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);
   fmt::print("warnings     {}\n", scene.warnings.size());

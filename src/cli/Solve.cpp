@@ -61,7 +61,7 @@ Checkpoint takeCheckpoint(const SolverState& state, const Solver& solver, const 
 
 int runWalkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas, SolverState& state,
                    ProgressiveSolver& solver, const Camera& camera) {
-  const CameraPath path = readCameraPath(o.cameraPath, camera);
+  const CameraPath path = readCameraPath(o.cameraPath, camera, scene.unitScale);
   WalkthroughOptions w = o.walkthrough;
   w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient, w.exposure = o.exposure;
   w.writeFrame = writePng;
@@ -264,6 +264,8 @@ int runSolve(const SolveOptions& o) {
   run.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   run.radiosityHash = radiosityHash(atlas, B);
   run.objects = objectRadiosity(scene, atlas, B);
+  run.texelSize /= scene.unitScale;  // lengths and areas in the file's units
+  for (ObjectRadiosity& ob : run.objects) ob.area /= scene.unitScale * scene.unitScale;
   if (!o.report.empty()) outputs.add("--report", o.report, reportJson(run).dump(2) + "\n");
   outputs.commit();
   fmt::print(stderr, "{}", lightmapLine);

@@ -59,9 +59,10 @@ void addPolygon(Streams& s, const Scene& scene, const Atlas& atlas, const Lightm
   const auto first = std::uint32_t(s.position.size() / 3);
   for (const glm::dvec3& v : p.vertices) {
     const glm::dvec2 plane = chart.frame.project(v), uv = map.uv(atlas, id, atlas.atlasCoord(id, v));
-    s.position.insert(s.position.end(), {float(v.x), float(v.y), float(v.z)});
+    const glm::dvec3 at = v / scene.unitScale;  // in the file's units
+    s.position.insert(s.position.end(), {float(at.x), float(at.y), float(at.z)});
     s.normal.insert(s.normal.end(), {float(p.normal.x), float(p.normal.y), float(p.normal.z)});
-    s.uv0.insert(s.uv0.end(), {float(plane.x), float(plane.y)});
+    s.uv0.insert(s.uv0.end(), {float(plane.x / scene.unitScale), float(plane.y / scene.unitScale)});
     s.uv1.insert(s.uv1.end(), {float(uv.x), float(uv.y)});
   }
   for (std::uint32_t k = 1; k + 1 < p.vertices.size(); ++k) s.indices.insert(s.indices.end(), {first, first + k, first + k + 1});
@@ -128,14 +129,16 @@ void addCamera(tinygltf::Model& m, const Scene& scene, const Camera& camera, dou
     farthest = std::max(farthest, glm::length(glm::dvec3(k & 1 ? scene.boundsMax().x : scene.boundsMin().x,
                                                           k & 2 ? scene.boundsMax().y : scene.boundsMin().y,
                                                           k & 4 ? scene.boundsMax().z : scene.boundsMin().z) - camera.eye));
-  cam.perspective.zfar = std::max(2 * farthest, 2 * cam.perspective.znear);
+  cam.perspective.zfar = std::max(2 * farthest, 2 * cam.perspective.znear) / scene.unitScale;  // the file's units
+  cam.perspective.znear /= scene.unitScale;
   m.cameras.push_back(cam);
   const glm::dmat4 world = glm::inverse(glm::lookAt(camera.eye, camera.target, camera.up));
   const glm::dquat q = glm::normalize(glm::quat_cast(glm::dmat3(world)));
   tinygltf::Node node;
   node.name = "camera";
   node.camera = 0;
-  node.translation = {camera.eye.x, camera.eye.y, camera.eye.z};
+  const glm::dvec3 eye = camera.eye / scene.unitScale;
+  node.translation = {eye.x, eye.y, eye.z};
   node.rotation = {q.x, q.y, q.z, q.w};
   m.nodes.push_back(node);
 }

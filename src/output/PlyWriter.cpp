@@ -39,7 +39,8 @@ std::string encodePly(const Scene& scene, const Atlas& atlas, const std::vector<
           glm::vec3 b = atlas.sample(B, int(polygon), atlas.atlasCoord(int(polygon), p));
           Image one{1, 1, {b.x, b.y, b.z}};
           std::vector<unsigned char> c = toneMap(one, scale);
-          vertices.push_back({float(p.x), float(p.y), float(p.z), c[0], c[1], c[2], b.x, b.y, b.z});
+          const glm::dvec3 at = p / scene.unitScale;  // in the file's units
+          vertices.push_back({float(at.x), float(at.y), float(at.z), c[0], c[1], c[2], b.x, b.y, b.z});
         }
         if (face.empty() || face.back() != it->second) face.push_back(it->second);
       }

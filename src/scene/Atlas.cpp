@@ -129,7 +129,8 @@ double hostMemoryBytes() {
   double digits = std::pow(10.0, std::floor(std::log10(std::max(elements, 1.0))) - 1);  // two significant
   fail("texel size {:.4g} needs a {:.0f} x {:.0f} texel atlas, {}; use --texel-size {:.4g} or larger (or --elements {:.0f} "
        "or fewer)",
-       ts, l.width, l.height, limit, fit, std::max(1.0, std::floor(elements / digits) * digits));
+       ts / scene.unitScale, l.width, l.height, limit, fit / scene.unitScale,
+       std::max(1.0, std::floor(elements / digits) * digits));
 }
 
 }  // namespace
@@ -264,7 +265,7 @@ std::vector<ShooterBlock> Atlas::shooterBlocks(const std::vector<int>& polygonLe
 }
 
 double chooseTexelSize(const Scene& scene, const Discretisation& d) {
-  if (d.texelSize) return *d.texelSize;
+  if (d.texelSize) return *d.texelSize * scene.unitScale;  // given in the file's units
   return texelSizeForElements(scene, d.elements.value_or(Discretisation::kDefaultElements));
 }
 

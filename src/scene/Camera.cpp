@@ -1,5 +1,7 @@
 #include "src/scene/Camera.h"
 
+#include "src/scene/Units.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -106,7 +108,7 @@ std::string sidecarCameraPath(const std::string& objPath) {
 }
 
 Camera resolveCamera(const Scene& scene, const std::optional<std::string>& cameraFlag) {
-  Camera cam = frameScene(scene);
+  Camera cam = toFileUnits(scene, frameScene(scene));  // what the user writes is in the file's units
   if (!scene.camera.empty()) cam = parseCamera(scene.camera, cam, scene.path);
   std::string sidecar = sidecarCameraPath(scene.path);
   if (!scene.path.empty() && std::filesystem::is_regular_file(sidecar)) {
@@ -116,7 +118,7 @@ Camera resolveCamera(const Scene& scene, const std::optional<std::string>& camer
     cam = parseCamera(text.str(), cam, sidecar);
   }
   if (cameraFlag) cam = parseCamera(*cameraFlag, cam, "--camera");
-  return cam;
+  return toSceneUnits(scene, cam);
 }
 
 }  // namespace hemirad

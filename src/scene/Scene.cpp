@@ -44,6 +44,14 @@ int Scene::addObject(std::string name) {
   return int(objects.size()) - 1;
 }
 
+void Scene::rescale(double factor) {
+  for (ScenePolygon& p : polygons_) {
+    for (glm::dvec3& v : p.vertices) v *= factor;
+    p.area *= factor * factor;
+  }
+  for (Mesh::VertexHandle v : mesh_.vertices()) mesh_.set_point(v, mesh_.point(v) * factor);
+}
+
 double Scene::totalArea() const {
   double a = 0;
   for (auto& p : polygons_) a += p.area;

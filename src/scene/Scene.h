@@ -47,12 +47,15 @@ class Scene {
   // Every file the scene names (the scene, MTLs and their texture maps, glTF buffers and
   // images), with what it is: outputs may never be written over them.
   std::vector<InputPath> sources;
+  // Scene units per file unit: 1, or the power of two normalizeUnits (src/scene/Units.h) applied.
+  double unitScale = 1;
   std::string camera;  // the scene file's own camera (glTF) as --camera text; "" for none
 
   // Adds a polygon; returns false (and records nothing) if it has no area.
   bool addPolygon(const Poly3& vertices, int material, int object);
   int addMaterial(Material m);
   int addObject(std::string name);  // existing id if the name is known
+  void rescale(double factor);       // every vertex times `factor` (areas times its square)
 
   const std::vector<ScenePolygon>& polygons() const { return polygons_; }
   const Mesh& mesh() const { return mesh_; }

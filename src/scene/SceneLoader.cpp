@@ -17,6 +17,7 @@
 
 #include "src/base/Error.h"
 #include "src/scene/FaceRepair.h"
+#include "src/scene/Units.h"
 #include "src/scene/GltfLoader.h"
 
 namespace hemirad {
@@ -254,7 +255,8 @@ Poly3 facePolygon(const tinyobj::attrib_t& attrib, const tinyobj::mesh_t& mesh, 
 
 }  // namespace
 
-Scene loadScene(const std::string& path, const LoadOptions& options) {
+// The file as it is, in its own units.
+static Scene readSceneFile(const std::string& path, const LoadOptions& options) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(path, ec)) fail("{}: no such file", path);
@@ -298,6 +300,12 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
       addFace(scene, poly, material, object, where);
     }
   }
+  return scene;
+}
+
+Scene loadScene(const std::string& path, const LoadOptions& options) {
+  Scene scene = readSceneFile(path, options);
+  normalizeUnits(scene);
   return scene;
 }
 

@@ -23,11 +23,12 @@ Camera CameraPath::at(double time) const {
   return c;
 }
 
-CameraPath readCameraPath(const std::string& path, const Camera& base) {
+CameraPath readCameraPath(const std::string& path, const Camera& base, double unitScale) {
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("--camera-path {}: cannot be read", path));
   CameraPath out;
-  Camera previous = base;
+  Camera previous = base;  // in the file's units while parsing
+  previous.eye /= unitScale, previous.target /= unitScale;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     std::string text = line.substr(0, line.find('#'));
@@ -44,7 +45,9 @@ CameraPath readCameraPath(const std::string& path, const Camera& base) {
     std::string rest;
     std::getline(fields, rest);
     previous = parseCamera(rest, previous, where);
-    out.keys.push_back({time, previous});
+    Camera key = previous;
+    key.eye *= unitScale, key.target *= unitScale;
+    out.keys.push_back({time, key});
   }
   if (out.keys.empty()) throw InputError(fmt::format("--camera-path {}: no keyframes", path));
   return out;

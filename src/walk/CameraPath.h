@@ -25,6 +25,7 @@ struct CameraPath {
 };
 
 // Throws InputError naming the file and line.
-CameraPath readCameraPath(const std::string& path, const Camera& base);
+// Keyframes are in the scene file's units: times `unitScale` (the scene's Scene::unitScale).
+CameraPath readCameraPath(const std::string& path, const Camera& base, double unitScale = 1);
 
 }  // namespace hemirad

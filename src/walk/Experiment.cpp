@@ -177,7 +177,7 @@ int runExperiment(ExperimentOptions o) {
     const std::string pathFile =
         o.cameraPath.empty() ? std::filesystem::path(path).replace_extension(".path").string() : o.cameraPath;
     if (!std::filesystem::exists(pathFile)) throw InputError(fmt::format("{}: no camera path {} beside it", path, pathFile));
-    const CameraPath cameraPath = readCameraPath(pathFile, resolveCamera(scene, std::nullopt));
+    const CameraPath cameraPath = readCameraPath(pathFile, resolveCamera(scene, std::nullopt), scene.unitScale);
     const Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, o.elements), backend->maxTextureSize());
     ConvergedViews converged(scene, atlas, o.progressive, o.referenceConvergence);
     names.push_back(name);

@@ -56,8 +56,9 @@ int runAnimation(AnimationOptions o) {
   double exposure = 0;  // frame 0's, kept: a moving light changes the picture, not its exposure
   for (unsigned f = 0; f < frames; ++f) {
     const double time = f / o.fps;
-    const Scene scene = withLightsMoved(base, path.at(time));
-    const Atlas atlas = withLightsMoved(baseAtlas, base, path.at(time));
+    const glm::dvec3 offset = path.at(time) * base.unitScale;  // the path is in the file's units
+    const Scene scene = withLightsMoved(base, offset);
+    const Atlas atlas = withLightsMoved(baseAtlas, base, offset);
     SolverState state(scene, atlas);
     StochasticSettings settings = o.stochastic;
     settings.stop.maxShots = (f + 1) * o.frameIterations;

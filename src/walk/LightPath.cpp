@@ -52,6 +52,7 @@ Scene withLightsMoved(const Scene& scene, const glm::dvec3& offset) {
   out.path = scene.path;
   out.materials = scene.materials;
   out.objects = scene.objects;
+  out.unitScale = scene.unitScale;
   for (const ScenePolygon& p : scene.polygons()) {
     Poly3 v = p.vertices;
     if (scene.materials[std::size_t(p.material)].emissive())
