@@ -34,7 +34,7 @@ TEST_CASE("Before the first shot the ambient term shows a furnace box at E / (1 
 }
 
 TEST_CASE("The ambient term brings early images closer to the converged one, fades, and never enters B",
-          "[gl][ambient]") {
+          "[heavy][gl][ambient]") {
   // A grey box (rho 0.5) lit by a black lamp ceiling. After the lamp's shots half the light is
   // still unshot; the ambient term estimates it.
   test::backend();

@@ -80,7 +80,7 @@ TEST_CASE("Moving the lights translates only the emitters and keeps the atlas la
   CHECK(b.charts[1].frame.origin == rebuilt.charts[1].frame.origin);
 }
 
-TEST_CASE("animate carries the solution across frames and its window forgets the light's old place", "[cli][gl]") {
+TEST_CASE("animate carries the solution across frames and its window forgets the light's old place", "[heavy][cli][gl]") {
   // The light drops 150 mm in the first 0.1 s and stays. With a window of 16 iterations the
   // mean forgets where the light was: two frames (48 iterations) after the move its error is
   // back at a short solve's (measured 0.10 before the move, 0.11 after); the plain mean of all

@@ -13,7 +13,7 @@ using Catch::Contains;
 namespace fs = std::filesystem;
 
 TEST_CASE("bench and experiment run from an empty folder, finding the shipped scenes beside the binary; experiment's "
-          "default output is a new folder, never an earlier run's", "[gl][cli]") {
+          "default output is a new folder, never an earlier run's", "[heavy][gl][cli]") {
   const std::string dir = test::tempPath("elsewhere");
   fs::create_directories(dir);
   test::Run bench = test::shell("cd " + dir + " && $HEMIRAD bench --elements 300 --split-shots 4 --json bench.json");

@@ -55,7 +55,7 @@ double insideBy(const std::vector<glm::dvec2>& corners, glm::dvec2 q) {
 
 }  // namespace
 
-TEST_CASE("A light hung 0.5 mm below the ceiling carries its emission in every pixel it covers, seen from 5 m", "[gl][camera]") {
+TEST_CASE("A light hung 0.5 mm below the ceiling carries its emission in every pixel it covers, seen from 5 m", "[heavy][gl][camera]") {
   test::backend();
   Scene scene = hungLightCornell();
   Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, 2000));

@@ -45,7 +45,7 @@ nlohmann::json resume(const std::string& checkpoint) {
 }  // namespace
 
 TEST_CASE("A solve stopped by SIGTERM checkpoints and resumes to the bitwise result of an uninterrupted solve",
-          "[cli][checkpoint]") {
+          "[heavy][cli][checkpoint]") {
   std::string ck = test::tempPath("term.ckpt");
   // Signal the solve once its first periodic checkpoint exists: it is then well under way.
   test::Run run = test::shell("$HEMIRAD " + solveArgs() + " --checkpoint " + ck +
@@ -63,7 +63,7 @@ TEST_CASE("A solve stopped by SIGTERM checkpoints and resumes to the bitwise res
 }
 
 TEST_CASE("A kill in the middle of a checkpoint write leaves the previous checkpoint whole and resumable",
-          "[cli][checkpoint]") {
+          "[heavy][cli][checkpoint]") {
   std::string ck = test::tempPath("killed.ckpt");
   // The test hook SIGKILLs the process half way through its third checkpoint write.
   test::Run run = test::hemirad(solveArgs() + " --checkpoint " + ck + " --checkpoint-every 100",
@@ -79,7 +79,7 @@ TEST_CASE("A kill in the middle of a checkpoint write leaves the previous checkp
       CHECK_THAT(f.path().stem().string(), Contains(".tmp"));
 }
 
-TEST_CASE("A finished solve's checkpoint resumes to the same result with no more shots", "[cli][checkpoint]") {
+TEST_CASE("A finished solve's checkpoint resumes to the same result with no more shots", "[heavy][cli][checkpoint]") {
   std::string ck = test::tempPath("final.ckpt");
   test::Run run = test::hemirad(solveArgs() + " --checkpoint " + ck);
   INFO(run.output);

@@ -74,7 +74,7 @@ TEST_CASE("Help lists the solve flags", "[cli]") {
 }
 
 TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same across runs and llvmpipe thread counts",
-          "[cli]") {
+          "[heavy][cli]") {
   // Every solver path: the default (16 shooters a pass), one shooter a pass, the hemicube.
   auto hashOf = [](const std::string& flags, const std::string& env) {
     std::string report = test::tempPath("det" + std::to_string(std::hash<std::string>{}(flags + env)) + ".json");
@@ -98,7 +98,7 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
   }
 }
 
-TEST_CASE("OSMesa and EGL on llvmpipe give bitwise-identical radiosity", "[cli]") {
+TEST_CASE("OSMesa and EGL on llvmpipe give bitwise-identical radiosity", "[heavy][cli]") {
   auto run = [](const std::string& backend) {
     std::string report = test::tempPath("backend-" + backend + ".json");
     test::Run r = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +

@@ -39,7 +39,7 @@ Scene twoPatches(const Poly3& emitter, const Poly3& receiver) {
 }
 }  // namespace
 
-TEST_CASE("GPU form factor between parallel opposed rectangles matches Howell C-11 within 0.3%", "[gl]") {
+TEST_CASE("GPU form factor between parallel opposed rectangles matches Howell C-11 within 0.3%", "[heavy][gl]") {
   // a x b rectangles at distance c: (a, b, c) of several aspect ratios.
   for (auto [a, b, c] : {std::tuple{1.0, 1.0, 1.0}, {2.0, 1.0, 1.0}, {1.0, 1.0, 0.5}, {3.0, 1.0, 2.0}}) {
     Scene s = twoPatches(test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, a, b),
@@ -51,7 +51,7 @@ TEST_CASE("GPU form factor between parallel opposed rectangles matches Howell C-
   }
 }
 
-TEST_CASE("GPU form factor between perpendicular rectangles sharing an edge matches Howell C-14 within 0.3%", "[gl]") {
+TEST_CASE("GPU form factor between perpendicular rectangles sharing an edge matches Howell C-14 within 0.3%", "[heavy][gl]") {
   // The disc form factor was 0.6-0.9% low here (1x1x1: 0.19823 for 0.20004).
   // Emitter on the floor (l along x, w along z), receiver wall (l along x, h along y).
   for (auto [l, w, h] : {std::tuple{1.0, 1.0, 1.0}, {2.0, 1.0, 1.0}, {1.0, 2.0, 0.5}}) {
@@ -91,7 +91,7 @@ TEST_CASE("Shooting blocks of 1, 4, 16 or 64 elements gives the same form factor
 }
 
 TEST_CASE("GPU form factor between parallel plates with a plate between them matches the exact shadowed one within 0.3%",
-          "[gl]") {
+          "[heavy][gl]") {
   // Unit squares at z = 0 (emitter, facing +z) and z = 1 (receiver), an occluder [o0, o1] at
   // height zo between them. From a receiver point x the occluder hides its central projection
   // onto the emitter's plane, x + (O - x) / (1 - zo), so the shadowed form factor is exact:

@@ -104,7 +104,7 @@ TEST_CASE("glTF node transforms (TRS and matrix, nested) place meshes and emissi
   CHECK(glm::length(s.materials[0].reflectance - glm::dvec3(0.5)) < 1e-12);
 }
 
-TEST_CASE("The glTF Cornell box solves to the OBJ's radiosity", "[cli]") {
+TEST_CASE("The glTF Cornell box solves to the OBJ's radiosity", "[heavy][cli]") {
   auto report = [](const std::string& scene) {
     const std::string path = test::tempPath("gltf-vs-obj-" + fs::path(scene).extension().string().substr(1) + ".json");
     test::Run run = test::hemirad("solve " + test::sourcePath(scene) + " --elements 600 --shots 48 --quiet --report " + path);

@@ -49,7 +49,7 @@ TEST_CASE("Direct importance is the view's pixels per element: inside a closed r
 }
 
 TEST_CASE("Importance propagates as radiosity does: in a closed grey box it sums to R / (1 - rho sigma)",
-          "[gl][importance]") {
+          "[heavy][gl][importance]") {
   // The furnace cube (rho 0.5) seen from inside. Importance is shot like radiosity and reflected
   // by rho, so once it is all shot sum I A = sum R A / (1 - rho sigma), sigma the share of a shot
   // that the exact form factors hand on (computed on the CPU; 1 up to the centroid rule). B's
@@ -104,7 +104,7 @@ TEST_CASE("A camera move changes dI by exactly the change in direct importance, 
 
 TEST_CASE("Camera in one room of a 16-room building: view-driven shooting reaches progressive refinement's view error "
           "in a quarter of the shots",
-          "[gl][importance][perspective]") {
+          "[heavy][gl][importance][perspective]") {
   // Issue 19 (seed 004 §6.2): the camera in room 0 of scenes/building/building_16 sees mostly
   // that room. Plain progressive refinement lights all rooms alike; importance-driven shooting
   // spends its shots on the light that reaches the view, so N / 4 of them leave the view at
@@ -136,7 +136,7 @@ TEST_CASE("Camera in one room of a 16-room building: view-driven shooting reache
   CHECK(localError <= plainError);
 }
 
-TEST_CASE("Importance-driven and plain progressive refinement converge to the same solution", "[gl][importance]") {
+TEST_CASE("Importance-driven and plain progressive refinement converge to the same solution", "[heavy][gl][importance]") {
   // To 0.99 the two differ only in the order of the shots: object means agree to 1 %.
   Scene s = load("scenes/cornell/cornell.obj");
   Camera c = sceneCamera("scenes/cornell/cornell.obj");

@@ -180,7 +180,7 @@ TEST_CASE("Instant radiosity: one seed gives bitwise the same image, another see
   CHECK(interleaved != first);
 }
 
-TEST_CASE("solve --method instant writes the camera images and a report, and refuses atlas outputs", "[instant][cli]") {
+TEST_CASE("solve --method instant writes the camera images and a report, and refuses atlas outputs", "[heavy][instant][cli]") {
   const std::string png = test::tempPath("instant.png"), exr = test::tempPath("instant.exr"),
                     report = test::tempPath("instant.json");
   const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");

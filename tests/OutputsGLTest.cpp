@@ -77,7 +77,7 @@ TEST_CASE("The shipped Cornell box has about 10,000 elements at the default texe
   CHECK_THAT(run.output, Contains("warnings     0"));
 }
 
-TEST_CASE("validate writes its report and figures, and bench its table and JSON", "[gl][cli]") {
+TEST_CASE("validate writes its report and figures, and bench its table and JSON", "[heavy][gl][cli]") {
   std::string dir = test::tempPath("validate");
   test::Run v = test::hemirad("validate " + test::sourcePath("scenes/cornell/cornell.obj") +
                               " --elements 1500 --levels 0,2 --shooters 4 --hemisphere stereographic,hemicube"

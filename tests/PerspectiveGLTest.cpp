@@ -60,7 +60,7 @@ FacePower facePower(const Scene& s, const Atlas& a, const SolverState& state) {
 }  // namespace
 
 TEST_CASE("Out of view nothing is received, and the table hands it all over once the view covers the scene",
-          "[gl][perspective]") {
+          "[heavy][gl][perspective]") {
   test::backend();
   Scene s = test::cube(kRho, 0.0, 1);
   Atlas atlas = buildAtlas(s, 0.1);
@@ -89,7 +89,7 @@ TEST_CASE("Out of view nothing is received, and the table hands it all over once
 }
 
 TEST_CASE("A camera move hands the surfaces entering the view their stored entries, a pass in turn with a shot",
-          "[gl][perspective]") {
+          "[heavy][gl][perspective]") {
   // Looking at the floor, then at the wall z = 0 (polygon 2): the wall gets all the shots held
   // for it, and the shots taken meanwhile, exactly once; the floor, out of the camera's view
   // for less than the decay interval, stays in the area of interest; the other walls hold nothing.
@@ -120,7 +120,7 @@ TEST_CASE("A camera move hands the surfaces entering the view their stored entri
   CHECK(moved.held[0] == Approx(moved.shotAt[0]).epsilon(1e-4));
   for (int face : {3, 4, 5}) CHECK(moved.held[face] == 0.0);
 }
-TEST_CASE("Perspective-driven and plain progressive refinement converge to the same solution", "[gl][perspective]") {
+TEST_CASE("Perspective-driven and plain progressive refinement converge to the same solution", "[heavy][gl][perspective]") {
   // Per face of the lamp-lit box, to convergence 0.998: only the order of the shots differs.
   test::backend();
   Scene s = test::cube(kRho, 0.0, 1);

@@ -32,7 +32,7 @@ TEST_CASE("Test furnace faces all point into the box", "[cpu]") {
   }
 }
 
-TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho) within 0.1%", "[gl]") {
+TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho) within 0.1%", "[heavy][gl]") {
   // Exact form factors hand on everything a shooter emits in a closed box (row sum 1), so every
   // wall settles at E / (1 - rho); the disc approximation (docs/design.md#form-factor) lost 2.3% here (rho 0.5:
   // 1.953 for 2). Batched passes (16 shooters from one unshot state), shooting blocks and the
@@ -93,7 +93,7 @@ TEST_CASE("Energy is conserved: in a closed box every shot delivers what its for
   CHECK(r.status.convergence == Approx(convergenceOf(s, r)).margin(1e-5));
 }
 
-TEST_CASE("Two solves of the same scene are bitwise identical, one shooter a pass or 16", "[gl]") {
+TEST_CASE("Two solves of the same scene are bitwise identical, one shooter a pass or 16", "[heavy][gl]") {
   ProgressiveSettings settings;
   settings.shootLevel = 0;  // element by element
   settings.shootersPerPass = GENERATE(1, 16);
@@ -142,7 +142,7 @@ TEST_CASE("Substructured shooting converges to the per-texel solution", "[gl]") 
   CHECK(rb == Approx(ra).epsilon(0.02));
 }
 
-TEST_CASE("Scenes with many shooter blocks reduce in parallel levels and pick the same shooters", "[gl]") {
+TEST_CASE("Scenes with many shooter blocks reduce in parallel levels and pick the same shooters", "[heavy][gl]") {
   // 6,480 blocks at shoot level 0 (over the 1,024 that select.comp ranks alone): a lamp of 400
   // elements at E 3 over a floor of 6,080 must still shoot every lamp element first, also 16 a
   // pass, where each level's groups must hand on their best 16, not their best one.

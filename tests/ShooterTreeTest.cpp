@@ -46,7 +46,7 @@ TEST_CASE("A block's quadtree tiles it: every element lies in one leaf, and chil
 
 TEST_CASE("Coarse blocks shoot their lit parts: the planned shooting stays within 1.5% of element-by-element on the "
           "Cornell box",
-          "[gl]") {
+          "[heavy][gl]") {
   // Blocks of 8 x 8 elements next to the boxes lie partly under them and across their shadows.
   // Shot whole, their mean unshot radiosity spreads over the dark part, which the boxes' faces
   // see only in part: the boxes come out 2-4 % dark. Cut where the radiosity is not uniform,

@@ -71,7 +71,7 @@ double relativeRmsError(const Atlas& atlas, const std::vector<glm::vec4>& B, con
 
 }  // namespace
 
-TEST_CASE("The stochastic operator is unbiased: the mean of many applications is the dense exact T B", "[gl]") {
+TEST_CASE("The stochastic operator is unbiased: the mean of many applications is the dense exact T B", "[heavy][gl]") {
   const Scene s = boxWithBlock(0.6);
   test::backend();
   const Atlas atlas = buildAtlas(s, 1.0 / 8);
@@ -121,7 +121,7 @@ TEST_CASE("The stochastic operator is unbiased: the mean of many applications is
   CHECK(std::sqrt(var / double(N)) < 0.02 * exactPower);  // precise enough to see a 8 % bias
 }
 
-TEST_CASE("Stochastic iteration's error falls as iterations^-0.5 (log-log slope -0.5 +- 0.1)", "[gl]") {
+TEST_CASE("Stochastic iteration's error falls as iterations^-0.5 (log-log slope -0.5 +- 0.1)", "[heavy][gl]") {
   // Dark walls (rho 0.3): the chain forgets its start within a few iterations, so the error is
   // the running mean's noise, whose RMS falls as 1/sqrt(m).
   const Scene s = boxWithBlock(0.3);
@@ -191,7 +191,7 @@ test::Solved solveStochastic(const Scene& scene, double texelSize, const Stochas
 }
 }  // namespace
 
-TEST_CASE("Stochastic iteration: Cornell box object means within 1 % of progressive refinement", "[gl]") {
+TEST_CASE("Stochastic iteration: Cornell box object means within 1 % of progressive refinement", "[heavy][gl]") {
   // ~300 elements; the reference shoots element by element (level 0, as stochastic iteration
   // does) to 0.9995 (what is left unshot lowers B by < 0.1 %). Luminance of each object's
   // mean: the walls' weak channels are too faint to hold to 1 % of themselves. 2048 x 16

@@ -54,7 +54,7 @@ const std::pair<std::string, std::string>& localResults() {
 
 TEST_CASE("A sweep's tasks run as Slurm runs them (one stopped by SIGTERM mid-solve and run again) merge to the bytes "
           "of a local --jobs 2 run",
-          "[cli][sweep]") {
+          "[heavy][cli][sweep]") {
   const std::string dir = test::tempPath("sweep-tasks");
   test::Run made = test::hemirad("experiment " + cornellSpec("tasks.json") + " --slurm " + dir);
   INFO(made.output);
@@ -117,7 +117,7 @@ TEST_CASE("A sweep's tasks run as Slurm runs them (one stopped by SIGTERM mid-so
 }
 
 TEST_CASE("merge lists missing and failed configurations with their error lines and tabulates only complete ones",
-          "[cli][sweep]") {
+          "[heavy][cli][sweep]") {
   const std::string folder = test::tempPath("sweep-fail");
   fs::create_directories(folder);
   const std::string dark = test::writeScene(folder, "mtllib m.mtl\nusemtl grey\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",

@@ -39,7 +39,7 @@ std::string cornellMtl() {
 }  // namespace
 
 TEST_CASE("The same scene in mm, m, km and at 1e8, 1e20 and 1e-25 times its size solves to the same radiosity",
-          "[cli]") {
+          "[heavy][cli]") {
   std::vector<std::vector<double>> means;
   for (double scale : {1.0, 1e-3, 1e-6, 1e8, 1e20, 1e-25}) {
     const std::string obj = scaledCornell(fmt::format("scaled-{:g}", scale), scale, cornellMtl());

@@ -43,7 +43,7 @@ TEST_CASE("Exact reference: unoccluded pairs get the exact contour form factor, 
   CHECK(clear == 15);
 }
 
-TEST_CASE("Cornell box: item-buffer visibility agreement rises with the item-mesh level", "[gl]") {
+TEST_CASE("Cornell box: item-buffer visibility agreement rises with the item-mesh level", "[heavy][gl]") {
   test::backend();
   Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   Atlas atlas = buildAtlas(s, texelSizeForElements(s, 10000));
@@ -70,7 +70,7 @@ TEST_CASE("Cornell box: item-buffer visibility agreement rises with the item-mes
     if (f.from == "floor" && f.to == "back_wall") CHECK(f.gpu == Approx(f.exact).epsilon(0.02));
 }
 
-TEST_CASE("Hemicube baseline: straight edges stay straight, so it agrees well without subdivision", "[gl]") {
+TEST_CASE("Hemicube baseline: straight edges stay straight, so it agrees well without subdivision", "[heavy][gl]") {
   test::backend();
   Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   Atlas atlas = buildAtlas(s, texelSizeForElements(s, 10000));
@@ -135,7 +135,7 @@ std::vector<bool> contactBand(const Scene& s, const Atlas& atlas, double width) 
 
 TEST_CASE("Cornell box: visibility agrees with CGAL on 99.9% of pairs and 99% within two elements of contacts "
           "(stereographic L4, hemicube L0)",
-          "[gl]") {
+          "[heavy][gl]") {
   test::backend();
   Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2500));
@@ -167,7 +167,7 @@ TEST_CASE("Cornell box: visibility agrees with CGAL on 99.9% of pairs and 99% wi
   CHECK(contact >= 0.99);
 }
 
-TEST_CASE("A light hung 0.5 mm below the ceiling leaves the ceiling above it dark", "[gl]") {
+TEST_CASE("A light hung 0.5 mm below the ceiling leaves the ceiling above it dark", "[heavy][gl]") {
   // The Cornell box with the light lowered by 0.5 mm and the ceiling closed above it: no point
   // below the light's plane sees the ceiling piece it covers, so that piece receives only what
   // reaches it from the 0.5 mm gap (nothing at this element size). The old depth tolerance of

@@ -65,7 +65,7 @@ TEST_CASE("The viewer under Xvfb shows the same picture as solve after the same 
   CHECK(maxDiff <= 1.0f / 255 + 1e-6f);
 }
 
-TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-count shots", "[viewer]") {
+TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-count shots", "[heavy][viewer]") {
   for (std::string algorithm : {"progressive", "importance", "perspective"}) {
     const std::string shot = test::tempPath("viewer-" + algorithm + ".png");
     test::Run view = viewUnderXvfb(kScene + " --elements 600 --width 64 --height 48 --algorithm " + algorithm +
@@ -82,7 +82,7 @@ TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-cou
   }
 }
 
-TEST_CASE("The viewer shows instant radiosity as solve --method instant renders it, interleaved", "[viewer][instant]") {
+TEST_CASE("The viewer shows instant radiosity as solve --method instant renders it, interleaved", "[heavy][viewer][instant]") {
   const std::string common = kScene + " --method instant --vpls 64 --shadow-res 32 --interleave 2 --width 64 --height 48";
   const auto [a, b] = viewAndSolve(common + " --frame-count 3", common,
                                    "hemirad view: instant, 64 VPLs, deferred shading, interleave 2, 3 frames", "instant");

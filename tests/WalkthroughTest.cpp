@@ -59,7 +59,7 @@ TEST_CASE("Malformed camera paths name the file, the line and the problem", "[cp
 }
 
 TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly with shots per frame",
-          "[cli][walkthrough]") {
+          "[heavy][cli][walkthrough]") {
   const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
   const std::string path = test::writeTempFile("turn.path", "0 eye=278,273,-800 target=278,273,0 fov=39.3\n0.5 fov=39.3\n1 target=556,0,559.2 fov=20\n");
   for (const std::string algorithm : {"progressive", "importance", "perspective"}) {
@@ -104,7 +104,7 @@ TEST_CASE("Walkthrough flags come together: a path needs a frames folder and a b
 }
 
 TEST_CASE("hemirad-bench experiment, the lean binary for GPU machines, walks as hemirad experiment does, without figures",
-          "[cli][walkthrough]") {
+          "[heavy][cli][walkthrough]") {
   // Shots per frame make the runs reproducible: every column but the times must agree.
   const std::string flags = " experiment --scenes " + test::sourcePath("scenes/building/building_4.obj") +
                             " --algorithms perspective --elements 300 --camera-path " +
