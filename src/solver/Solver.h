@@ -10,7 +10,8 @@
 namespace hemirad {
 
 // The algorithms behind `--algorithm`. Importance- and perspective-driven shooting (seed 004)
-// run on the progressive solver; stochastic iteration and instant radiosity will join here.
+// run on the progressive solver. Stochastic iteration (--method stochastic) is a Solver of its
+// own and instant radiosity (--method instant) renders without one: see src/solver/Methods.h.
 enum class Algorithm { Progressive, Importance, Perspective };
 Algorithm parseAlgorithm(const std::string& name);  // throws InputError
 const char* algorithmName(Algorithm a);

@@ -6,7 +6,7 @@
 // shoots from K texels drawn with probability lum(B~) x area by descending a luminance sum
 // pyramid on the GPU (eq. 3), each through a stereographic item buffer and the exact
 // point-to-element form factor. The CPU never reads the atlas during a solve: it enqueues
-// passes and reads the iteration count between batches. docs/design.md#stochastic.
+// passes and reads the iteration count between batches. docs/design.md#stochastic-iteration.
 #pragma once
 #include <memory>
 
@@ -21,7 +21,7 @@ namespace hemirad {
 
 // What T* transports each iteration: the last iterate (a Markov chain whose mean converges at
 // 1/sqrt(m) with a bias that fades as 1/m), or the running mean (eq. 2 as printed: its bias
-// fades only as m^-(1 - lambda), lambda T's spectral radius; docs/design.md#stochastic).
+// fades only as m^-(1 - lambda), lambda T's spectral radius; docs/design.md#stochastic-iteration).
 enum class Source { Iterate, Mean };
 Source parseSource(const std::string& name);  // throws InputError
 const char* sourceName(Source s);
