@@ -89,6 +89,7 @@ TEST_CASE("validate writes its report and figures, and bench its table and JSON"
   for (const char* key : {"item_subdivision", "texel_pairs", "visibility_agreement", "false_visible", "false_hidden",
                           "ff_rel_error_median", "ff_rel_error_p95", "ff_rel_error_max", "item_triangles", "gpu_ms"})
     CHECK(r["levels"][0].contains(key));
+  CHECK(r["levels"][0]["hemisphere"] == "orthographic");  // asked for by its old name, stereographic
   CHECK(r["levels"][3]["hemisphere"] == "hemicube");
   // Every object holding a shooter, to each of the 8 objects.
   CHECK(r["object_form_factors"].size() % 8 == 0);
