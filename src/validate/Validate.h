@@ -38,7 +38,8 @@ struct LevelStats {
   int itemResolution = 0;
   int itemSubdivision = 0;
   std::size_t itemTriangles = 0, texelPairs = 0, falseVisible = 0, falseHidden = 0;
-  double visibilityAgreement = 0, ffRelErrorMedian = 0, ffRelErrorP95 = 0, ffRelErrorMax = 0, gpuMs = 0;
+  double visibilityAgreement = 0, ffRelErrorMedian = 0, ffRelErrorMean = 0, ffRelErrorP95 = 0, ffRelErrorMax = 0;
+  double gpuMs = 0;
 };
 
 struct ObjectFormFactor {
