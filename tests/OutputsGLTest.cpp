@@ -81,7 +81,8 @@ TEST_CASE("validate --hemisphere all compares the four projections in one table,
           "[gl][cli]") {
   std::string report = test::tempPath("validate_all.json");
   test::Run v = test::hemirad("validate " + test::sourcePath("scenes/cornell/cornell.obj") +
-                              " --elements 300 --levels 0,1 --shooters 2 --item-res 64 --hemisphere all --report " + report);
+                              " --elements 300 --levels 0,1 --shooters 2 --item-res 64 --hemisphere all --report " +
+                              report);
   INFO(v.output);
   REQUIRE(v.exitCode == 0);
   nlohmann::json r = test::readJson(report);
