@@ -20,13 +20,62 @@ vec3 shooterLocal(vec3 p, vec3 origin, vec3 n) {
   return vec3(dot(d, t), dot(d, b), dot(d, n));
 }
 
-// Seed 003's hemispherical projection (Listing 39-2): the direction is normalised onto the
-// unit hemisphere and its xy taken, so a direction at angle theta from the normal lands at
-// radius sin(theta): the normal at the centre, the horizon on the unit circle. Returns [-1,1]^2.
+// Seed 003's hemispherical projection (Listing 39-2), the orthographic (Nusselt) map: the
+// direction is normalised onto the unit hemisphere and its xy taken, so a direction at angle
+// theta from the normal lands at radius sin(theta): the normal at the centre, the horizon on the
+// unit circle. Returns [-1,1]^2.
 vec2 hemiProject(vec3 local) {
   float len = length(local);
   return len > 0.0 ? local.xy / len : vec2(0.0);
 }
+
+// Its inverse: the unit direction through disc point ndc; outside the disc the nearest horizon
+// direction.
+vec3 hemiDirection(vec2 ndc) {
+  float r2 = dot(ndc, ndc);
+  return r2 < 1.0 ? vec3(ndc, sqrt(1.0 - r2)) : vec3(ndc * inversesqrt(r2), 0.0);
+}
+
+// The further disc maps (src/solver/Projection.h), on the unit direction u = local / |local|.
+// Below the horizon (triangles the clip plane cuts) both grow past the rim instead of folding
+// back; the floor keeps the antipode of the normal finite.
+vec3 unitDirection(vec3 local) {
+  float len = length(local);
+  return len > 0.0 ? local / len : vec3(0.0, 0.0, 1.0);
+}
+
+// Conformal (true stereographic from the antipode, = the paraboloid map): r = tan(theta / 2).
+vec2 conformalProject(vec3 local) {
+  vec3 u = unitDirection(local);
+  return u.xy / max(1.0 + u.z, 1e-6);
+}
+vec3 conformalDirection(vec2 ndc) {
+  float r2 = dot(ndc, ndc);
+  return r2 < 1.0 ? vec3(2.0 * ndc, 1.0 - r2) / (1.0 + r2) : vec3(ndc * inversesqrt(r2), 0.0);
+}
+
+// Lambert's equal-area map: r = sqrt(2) sin(theta / 2) = sqrt(1 - cos(theta)).
+vec2 equalAreaProject(vec3 local) {
+  vec3 u = unitDirection(local);
+  return u.xy * inversesqrt(max(1.0 + u.z, 1e-12));
+}
+vec3 equalAreaDirection(vec2 ndc) {
+  float r2 = dot(ndc, ndc);
+  return r2 < 1.0 ? vec3(ndc * sqrt(2.0 - r2), 1.0 - r2) : vec3(ndc * inversesqrt(r2), 0.0);
+}
+
+// The disc map the item buffer uses: CONFORMAL or EQUAL_AREA defined (src/solver/ItemBuffer.cpp),
+// else seed 003's.
+#if defined(CONFORMAL)
+#define diskProject conformalProject
+#define diskDirection conformalDirection
+#elif defined(EQUAL_AREA)
+#define diskProject equalAreaProject
+#define diskDirection equalAreaDirection
+#else
+#define diskProject hemiProject
+#define diskDirection hemiDirection
+#endif
 
 // The disc form factor (docs/design.md#form-factor): receiving element j from a shooter of area A_s at distance r. Only
 // a fallback now (formfactor.glsl is exact), for shooter shapes over MAX_SHAPE_VERTICES vertices.
@@ -78,7 +127,7 @@ vec4 itemClipPosition(vec3 local, float farDistance, int face) {
   vec3 f = cubeFace(local, face);
   return vec4(f.xy, ITEM_NEAR * farDistance, f.z);
 #else
-  return vec4(hemiProject(local), 2.0 * length(local) / farDistance - 1.0, 1.0);
+  return vec4(diskProject(local), 2.0 * length(local) / farDistance - 1.0, 1.0);
 #endif
 }
 
@@ -94,8 +143,7 @@ vec3 itemDirection(vec2 ndc, int face) {
   if (face == 3) return vec3(-f.x, f.z, f.y);
   return vec3(f.x, -f.z, f.y);
 #else
-  float r2 = dot(ndc, ndc);
-  return r2 < 1.0 ? vec3(ndc, sqrt(1.0 - r2)) : vec3(ndc * inversesqrt(r2), 0.0);
+  return diskDirection(ndc);
 #endif
 }
 
@@ -107,7 +155,7 @@ ivec3 itemTexel(vec3 local, ivec2 size) {
   vec2 ndc = f.xy / f.z;
 #else
   int face = 0;
-  vec2 ndc = hemiProject(local);
+  vec2 ndc = diskProject(local);
 #endif
   ivec2 pixel = clamp(ivec2(floor((ndc * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1);
   return ivec3(pixel, face);

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "src/base/Error.h"
+#include "src/solver/Checkpoint.h"
 #include "tests/support/Files.h"
 #include "tests/support/Support.h"
 
@@ -114,6 +116,21 @@ TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint
   test::Run needs = test::hemirad(solveArgs() + " --checkpoint-every 10");
   CHECK(needs.exitCode == 2);
   CHECK_THAT(needs.output, Contains("--checkpoint"));
+}
+
+TEST_CASE("A checkpoint that names the orthographic projection by its old name stereographic resumes; another "
+          "projection is refused",
+          "[cpu][checkpoint]") {
+  const nlohmann::json current = {{"scene_hash", "00ff"}, {"projection", "orthographic"}, {"item_resolution", 128}};
+  nlohmann::json saved = current;
+  saved["projection"] = "stereographic";  // as written before issue 27: the same map, bitwise
+  CHECK_NOTHROW(checkResumable("old.ckpt", saved, current));
+  saved["projection"] = "hemisphere";
+  CHECK_NOTHROW(checkResumable("old.ckpt", saved, current));
+  saved["projection"] = "conformal";
+  CHECK_THROWS_WITH(checkResumable("c.ckpt", saved, current), Contains("projection = \"conformal\""));
+  saved["projection"] = "fisheye";
+  CHECK_THROWS_AS(checkResumable("c.ckpt", saved, current), InputError);
 }
 
 TEST_CASE("A stochastic solve resumed from a checkpoint gives the bitwise result of an uninterrupted one",

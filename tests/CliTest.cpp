@@ -98,6 +98,29 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
   }
 }
 
+TEST_CASE("The orthographic map's old name, --hemisphere stereographic, gives its bitwise result with a warning; "
+          "conformal and equal-area give others",
+          "[cli]") {
+  auto solve = [](const std::string& flags) {
+    std::string report = test::tempPath("proj" + std::to_string(std::hash<std::string>{}(flags)) + ".json");
+    test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                                  " --elements 1500 --shots 32 --item-res 128 --quiet " + flags + " --report " + report);
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    return std::pair{test::readJson(report)["radiosity_hash"].get<std::string>(), run.output};
+  };
+  const auto [orthographic, quiet] = solve("");
+  const auto [old, warned] = solve("--hemisphere stereographic");
+  CHECK(old == orthographic);
+  CHECK(solve("--hemisphere hemisphere").first == orthographic);
+  CHECK_THAT(warned, Contains("hemirad: warning: --hemisphere stereographic is seed 003's orthographic"));
+  CHECK_THAT(quiet, !Contains("warning"));
+  const std::string conformal = solve("--hemisphere conformal").first;
+  CHECK(conformal != orthographic);
+  CHECK(solve("--hemisphere paraboloid").first == conformal);
+  CHECK(solve("--hemisphere equal-area").first != orthographic);
+}
+
 TEST_CASE("OSMesa and EGL on llvmpipe give bitwise-identical radiosity", "[heavy][cli]") {
   auto run = [](const std::string& backend) {
     std::string report = test::tempPath("backend-" + backend + ".json");

@@ -9,9 +9,45 @@
 #include "cpu/Hemisphere.h"
 #include "gl/Shader.h"
 #include "gl/State.h"
+#include "src/solver/ItemBuffer.h"
+#include "src/solver/Projection.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
+
+namespace {
+// The C++ twin of hemisphere.glsl's item-buffer projection p: the point in [-1, 1]^2 of
+// shooter-frame point `local` and its layer (a hemicube face, else 0).
+glm::dvec2 twinProject(Projection p, const glm::dvec3& local, int& face) {
+  face = 0;
+  switch (p) {
+    case Projection::Orthographic: return cpu::hemiProject(local);
+    case Projection::Conformal: return cpu::conformalProject(local);
+    case Projection::EqualArea: return cpu::equalAreaProject(local);
+    case Projection::Hemicube: break;
+  }
+  face = cpu::cubeFaceOf(local);
+  const glm::dvec3 f = cpu::cubeFace(local, face);
+  return glm::dvec2(f) / f.z;
+}
+
+glm::dvec3 twinDirection(Projection p, const glm::dvec2& ndc, int face) {
+  switch (p) {
+    case Projection::Orthographic: return cpu::hemiDirection(ndc);
+    case Projection::Conformal: return cpu::conformalDirection(ndc);
+    case Projection::EqualArea: return cpu::equalAreaDirection(ndc);
+    case Projection::Hemicube: break;
+  }
+  return cpu::cubeDirection(ndc, face);
+}
+
+// The radius each disc map puts a direction at angle theta from the normal (Projection.h).
+double discRadius(Projection p, double theta) {
+  if (p == Projection::Conformal) return std::tan(theta / 2);
+  if (p == Projection::EqualArea) return std::sqrt(2.0) * std::sin(theta / 2);
+  return std::sin(theta);
+}
+}  // namespace
 
 TEST_CASE("Hemispherical projection puts the normal at the centre, theta at radius sin(theta), the horizon on the rim",
           "[cpu]") {
@@ -32,6 +68,32 @@ TEST_CASE("Hemispherical projection puts the normal at the centre, theta at radi
   }
   glm::dvec3 horizon = glm::normalize(t + b);
   CHECK(glm::length(cpu::hemiProject(cpu::shooterLocal(origin + horizon, origin, n))) == Approx(1.0));
+}
+
+TEST_CASE("Every item-buffer projection puts theta at its radius, keeps the azimuth, and its inverse undoes it",
+          "[cpu]") {
+  const glm::dvec3 origin(1, 2, 3), n = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
+  glm::dvec3 t, b;
+  cpu::shooterBasis(n, t, b);
+  for (Projection p : allProjections())
+    for (double theta : {0.0, 0.1, 0.5, 1.0, 1.4, M_PI / 2})
+      for (double phi : {0.0, 1.0, 2.5, 4.0}) {
+        const glm::dvec3 dir = std::cos(theta) * n + std::sin(theta) * (std::cos(phi) * t + std::sin(phi) * b);
+        const glm::dvec3 local = cpu::shooterLocal(origin + 7.0 * dir, origin, n);
+        int face = 0;
+        const glm::dvec2 q = twinProject(p, local, face);
+        INFO(projectionName(p) << " theta " << theta << " phi " << phi);
+        if (p != Projection::Hemicube) {
+          CHECK(glm::length(q) == Approx(discRadius(p, theta)).margin(1e-12));
+          if (theta > 0) CHECK(std::atan2(q.y, q.x) == Approx(std::remainder(phi, 2 * M_PI)).margin(1e-9));
+        }
+        CHECK(glm::length(glm::normalize(twinDirection(p, q, face)) - glm::normalize(local)) == Approx(0).margin(1e-9));
+      }
+  // The paraboloid map (Heidrich & Seidel 1998), (x, y) / (1 + z), is the conformal one.
+  const glm::dvec3 u = glm::normalize(glm::dvec3(0.3, -0.4, 0.5));
+  CHECK(glm::length(cpu::conformalProject(u) - glm::dvec2(u) / (1 + u.z)) == Approx(0).margin(1e-15));
+  CHECK(parseProjection("paraboloid") == Projection::Conformal);
+  CHECK(parseProjection("stereographic") == Projection::Orthographic);  // its old name, bitwise the same map
 }
 
 TEST_CASE("GLSL hemisphere maths equals its C++ mirror", "[gl]") {
@@ -62,6 +124,74 @@ TEST_CASE("GLSL hemisphere maths equals its C++ mirror", "[gl]") {
     CHECK(out[i].x == Approx(expect.x).margin(1e-5));
     CHECK(out[i].y == Approx(expect.y).margin(1e-5));
     CHECK(out[i].z == Approx(cpu::discFormFactor(0.8, 0.6, 2.0, 0.5)).epsilon(1e-5));
+  }
+}
+
+TEST_CASE("GLSL item-buffer projections (all four, the hemicube's faces included) equal their C++ twins", "[gl]") {
+  test::backend();
+  const Projection projection = GENERATE(from_range(allProjections()));
+  INFO(projectionName(projection));
+  gl::Program program = gl::computeProgram("projection_probe.comp", itemBufferDefines(projection));
+  // Directions over the whole hemisphere and a little below (what the clip plane cuts), and
+  // item-buffer points inside and outside the disc, on every hemicube face.
+  std::mt19937 rng(27);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<glm::vec4> dirs, points;
+  for (int i = 0; i < 256; ++i) {
+    const double theta = std::acos(0.475 + 0.525 * u(rng)), phi = M_PI * u(rng);  // cos theta in [-0.05, 1]
+    dirs.push_back(glm::vec4(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta), 0));
+    const int face = projection == Projection::Hemicube ? i % 5 : 0;
+    points.push_back(glm::vec4(1.1 * u(rng), face ? 0.999 * std::abs(u(rng)) : 1.1 * u(rng), float(face), 0));
+  }
+  const glm::vec3 n = glm::normalize(glm::vec3(-0.2f, 0.9f, 0.1f)), origin(3, -1, 2);
+  const float far = 20.0f;
+  const int size = 128;
+  gl::Buffer dirBuf{std::span<const glm::vec4>(dirs)}, pointBuf{std::span<const glm::vec4>(points)},
+      outBuf{3 * dirs.size() * sizeof(glm::vec4)};
+  dirBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
+  pointBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  program.set("normal", n.x, n.y, n.z);
+  program.set("origin", origin.x, origin.y, origin.z);
+  program.set("farDistance", far);
+  program.set("size", size);
+  program.use();
+  gl::Program::dispatch(unsigned(dirs.size()));
+  gl::barrier(gl::Barrier::BufferUpdate);
+  std::vector<glm::vec4> out(3 * dirs.size());
+  outBuf.read(0, out.size() * sizeof(glm::vec4), out.data());
+  glm::dvec3 t, b;
+  cpu::shooterBasis(glm::dvec3(n), t, b);
+  int texelsChecked = 0;
+  for (std::size_t i = 0; i < dirs.size(); ++i) {
+    const glm::dvec3 d(dirs[i]), o(origin);
+    const glm::dvec3 nd(n), local = cpu::shooterLocal(o + 4.0 * (d.x * t + d.y * b + d.z * nd), o, nd);
+    int face = 0;
+    const glm::dvec2 q = twinProject(projection, local, face);
+    const glm::dvec3 a = glm::abs(local);
+    const bool faceTie = std::abs(local.z - std::max(a.x, a.y)) < 1e-4 || std::abs(a.x - a.y) < 1e-4;
+    INFO("direction " << i << ": GLSL " << out[3 * i].x << ", " << out[3 * i].y << " face " << out[3 * i].w << "; C++ "
+                      << q.x << ", " << q.y << " face " << face);
+    if (projection == Projection::Hemicube && faceTie) continue;
+    CHECK(out[3 * i].w == float(face));
+    CHECK(out[3 * i].x == Approx(q.x).margin(2e-5));
+    CHECK(out[3 * i].y == Approx(q.y).margin(2e-5));
+    const double depth = projection == Projection::Hemicube ? 1e-6 * far / cpu::cubeFace(local, face).z
+                                                            : 2 * glm::length(local) / far - 1;
+    CHECK(out[3 * i].z == Approx(depth).epsilon(1e-4).margin(1e-6));
+    // The texel, where the pixel edge is not within float rounding of the point.
+    const glm::dvec2 pixel = glm::clamp((q * 0.5 + 0.5) * double(size), 0.0, size - 1e-9);
+    const glm::dvec2 frac = pixel - glm::floor(pixel);
+    if (glm::any(glm::lessThan(glm::min(frac, 1.0 - frac), glm::dvec2(1e-3)))) continue;
+    ++texelsChecked;
+    CHECK(out[3 * i + 1].x == float(std::floor(pixel.x)));
+    CHECK(out[3 * i + 1].y == float(std::floor(pixel.y)));
+  }
+  CHECK(texelsChecked > 200);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const glm::dvec3 expect = glm::normalize(twinDirection(projection, glm::dvec2(points[i]), int(points[i].z)));
+    INFO("point " << i << " (" << points[i].x << ", " << points[i].y << ", face " << points[i].z << ")");
+    CHECK(glm::length(glm::dvec3(out[3 * i + 2]) - expect) == Approx(0).margin(2e-5));
   }
 }
 

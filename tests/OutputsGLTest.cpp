@@ -77,6 +77,22 @@ TEST_CASE("The shipped Cornell box has about 10,000 elements at the default texe
   CHECK_THAT(run.output, Contains("warnings     0"));
 }
 
+TEST_CASE("validate --hemisphere all compares the four projections in one table, errors in significant digits",
+          "[gl][cli]") {
+  std::string report = test::tempPath("validate_all.json");
+  test::Run v = test::hemirad("validate " + test::sourcePath("scenes/cornell/cornell.obj") +
+                              " --elements 300 --levels 0,1 --shooters 2 --item-res 64 --hemisphere all --report " +
+                              report);
+  INFO(v.output);
+  REQUIRE(v.exitCode == 0);
+  nlohmann::json r = test::readJson(report);
+  REQUIRE(r["levels"].size() == 8);  // four projections x two levels, in allProjections() order
+  const char* names[] = {"orthographic", "hemicube", "conformal", "equal-area"};
+  for (std::size_t k = 0; k < 8; ++k) CHECK(r["levels"][k]["hemisphere"] == names[k / 2]);
+  CHECK_THAT(v.output, Contains("| equal-area 64^2 | 1 |"));
+  CHECK_THAT(v.output, !Contains("0.0000 |"));  // a small error is printed as 1.97e-05, not as zero
+}
+
 TEST_CASE("validate writes its report and figures, and bench its table and JSON", "[heavy][gl][cli]") {
   std::string dir = test::tempPath("validate");
   test::Run v = test::hemirad("validate " + test::sourcePath("scenes/cornell/cornell.obj") +
@@ -87,8 +103,10 @@ TEST_CASE("validate writes its report and figures, and bench its table and JSON"
   nlohmann::json r = test::readJson(dir + ".json");
   REQUIRE(r["levels"].size() == 4);  // two projections x two levels
   for (const char* key : {"item_subdivision", "texel_pairs", "visibility_agreement", "false_visible", "false_hidden",
-                          "ff_rel_error_median", "ff_rel_error_p95", "ff_rel_error_max", "item_triangles", "gpu_ms"})
+                          "ff_rel_error_median", "ff_rel_error_mean", "ff_rel_error_p95", "ff_rel_error_max",
+                          "item_triangles", "gpu_ms"})
     CHECK(r["levels"][0].contains(key));
+  CHECK(r["levels"][0]["hemisphere"] == "orthographic");  // asked for by its old name, stereographic
   CHECK(r["levels"][3]["hemisphere"] == "hemicube");
   // Every object holding a shooter, to each of the 8 objects.
   CHECK(r["object_form_factors"].size() % 8 == 0);

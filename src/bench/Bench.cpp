@@ -315,7 +315,7 @@ int runBench(BenchOptions o) {
   if (!o.markdown.empty()) checkWritable(o.markdown, "--markdown");
   o.backend.kind = gl::parseBackendKind(o.backendName);
   for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
-  o.progressive.projection = parseProjection(o.projection);
+  o.progressive.projection = parseProjectionFlag(o.projection);
   auto backend = gl::createBackend(o.backend);
   std::time_t now = std::time(nullptr);
   char date[32];

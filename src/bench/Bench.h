@@ -27,7 +27,7 @@ struct BenchOptions {
   unsigned splitShots = 64;         // shots timed pass by pass (synchronised) for the split
   gl::BackendOptions backend;
   std::string backendName = "osmesa";
-  std::string projection = "stereographic";  // --hemisphere, parsed into progressive.projection
+  std::string projection = "orthographic";  // --hemisphere, parsed into progressive.projection
   std::string json;
   std::string markdown;  // the printed tables, as a markdown file
   bool ceiling = false;  // also measure the device's compute and raster ceilings

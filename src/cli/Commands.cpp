@@ -9,6 +9,7 @@
 #include "src/output/ImageFile.h"
 #include "src/output/Provenance.h"
 #include "src/solver/Methods.h"
+#include "src/solver/Projection.h"
 #include "src/walk/ExperimentFlags.h"
 
 namespace hemirad {
@@ -302,7 +303,7 @@ void Commands::settle() {
   if (!*shots && !*converge) p.stop.targetConvergence = solve.cameraPath.empty() ? 0.9 : 0.9999;
   if (syncTimings) p.timings = gl::TimerMode::Synchronous;
   solve.backend.kind = gl::parseBackendKind(solveBackend);
-  p.projection = parseProjection(solveProjection);
+  p.projection = parseProjectionFlag(solveProjection);
   settleStochastic();
   settleInstant();
   solve.progress = !quiet;
@@ -349,7 +350,10 @@ int Commands::run() {
   }
   validate.backend.kind = gl::parseBackendKind(validateBackend);
   validate.projections.clear();
-  for (const auto& name : validateProjections) validate.projections.push_back(parseProjection(name));
+  for (const auto& name : validateProjections) {
+    if (name != "all") validate.projections.push_back(parseProjectionFlag(name));
+    else for (Projection p : allProjections()) validate.projections.push_back(p);
+  }
   validate.shooters = shooters == "all" ? std::nullopt : std::optional<std::size_t>(std::stoul(shooters));
   return runValidate(validate);
 }

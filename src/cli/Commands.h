@@ -56,9 +56,9 @@ struct Commands {
   void settleInstant();
 
   // Flags read into text, turned into the options after parsing.
-  std::string shading = "deferred", viewShading = "deferred", solveBackend = "osmesa", solveProjection = "stereographic", validateBackend = "osmesa", transport = "iterate",
+  std::string shading = "deferred", viewShading = "deferred", solveBackend = "osmesa", solveProjection = "orthographic", validateBackend = "osmesa", transport = "iterate",
               shooters = "16";
-  std::vector<std::string> validateProjections{"stereographic"};
+  std::vector<std::string> validateProjections{"orthographic"};
   bool quiet = false, syncTimings = false;
   std::string docs;
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,

@@ -12,6 +12,7 @@
 #include "src/scene/SceneLoader.h"
 #include "src/solver/Control.h"
 #include "src/solver/Methods.h"
+#include "src/solver/Projection.h"
 #include "src/solver/ShootingPlan.h"
 
 namespace hemirad::options {
@@ -37,6 +38,15 @@ CLI::Validator oneOf(const std::map<std::string, T>& names, const std::string& d
 
 CLI::Validator names(const std::vector<std::string>& names) {
   return CLI::Validator(CLI::IsMember(names)).description(fmt::format("{}", fmt::join(names, "|")));
+}
+
+// --hemisphere: the canonical names and their aliases, and validate's `all`.
+CLI::Validator projectionChoice() {
+  std::vector<std::string> accepted = projectionNames();
+  accepted.push_back("all");
+  std::vector<std::string> canonical;
+  for (Projection p : allProjections()) canonical.push_back(projectionName(p));
+  return CLI::Validator(CLI::IsMember(accepted)).description(fmt::format("{}|all", fmt::join(canonical, "|")));
 }
 
 std::map<std::string, Algorithm> algorithms() {
@@ -115,9 +125,12 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--item-res", "PIXELS|auto", "Item buffer resolution in pixels (the pixel budget's side), or auto: from the element size (the "
        "hemicube, which resolves occluders only, a quarter of that)",
        autoOr(kAutoItemResolution, 16, 16384)},
-      {"--hemisphere", "NAME", "Item buffer: stereographic (seed 003; its curved edges need --item-subdiv 3-4) or hemicube (exact "
-       "at --item-subdiv 0; equal pixel budgets)",
-       names({"stereographic", "hemicube"})},
+      {"--hemisphere", "NAME",
+       "Item buffer: orthographic (seed 003's r = sin theta, the Nusselt analog; `stereographic` and `hemisphere` are "
+       "its old names), hemicube (exact at --item-subdiv 0; equal pixel budgets), conformal (the true stereographic "
+       "map r = tan theta/2, = `paraboloid`) or equal-area (Lambert); the disc maps' curved edges need --item-subdiv "
+       "3-4; validate: a list, or all",
+       projectionChoice()},
       {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
        "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, 0, 8)},
       {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass; stochastic "

@@ -12,6 +12,7 @@
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
 #include "src/base/Hash.h"
+#include "src/solver/Projection.h"
 
 namespace hemirad {
 
@@ -124,7 +125,23 @@ Checkpoint readCheckpoint(const std::string& path) {
   return c;
 }
 
-void checkResumable(const std::string& path, const nlohmann::json& saved, const nlohmann::json& current) {
+namespace {
+// A checkpoint written before the projections were renamed says "stereographic" for what is now
+// "orthographic": the same map, bitwise, so it must still resume.
+nlohmann::json canonicalProjection(nlohmann::json identity) {
+  auto it = identity.find("projection");
+  if (it != identity.end() && it->is_string()) {
+    try {
+      *it = projectionName(parseProjection(it->get<std::string>()));
+    } catch (const InputError&) {  // an unknown name: compared as written, and refused below
+    }
+  }
+  return identity;
+}
+}  // namespace
+
+void checkResumable(const std::string& path, const nlohmann::json& savedAsWritten, const nlohmann::json& current) {
+  const nlohmann::json saved = canonicalProjection(savedAsWritten);
   if (saved.value("scene_hash", "") != current.value("scene_hash", ""))
     fail("--resume {}: the checkpoint was made for another scene (scene hash {}, this scene {})", path,
          saved.value("scene_hash", "(none)"), current.value("scene_hash", "(none)"));

@@ -14,10 +14,18 @@ namespace {
 int faceSide(int resolution, Projection p) {
   return p == Projection::Hemicube ? std::max(1, int(std::lround(resolution / std::sqrt(3.0)))) : resolution;
 }
-gl::Defines projectionDefines(Projection p) {
-  return p == Projection::Hemicube ? gl::Defines{{"HEMICUBE", "1"}} : gl::Defines{};
-}
 }  // namespace
+
+// hemisphere.glsl's switch; the orthographic map (seed 003's) is the one with none.
+gl::Defines itemBufferDefines(Projection p) {
+  switch (p) {
+    case Projection::Hemicube: return {{"HEMICUBE", "1"}};
+    case Projection::Conformal: return {{"CONFORMAL", "1"}};
+    case Projection::EqualArea: return {{"EQUAL_AREA", "1"}};
+    case Projection::Orthographic: break;
+  }
+  return {};
+}
 
 ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance, Projection projection,
                        int shooters)
@@ -25,7 +33,7 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
       faceResolution_(faceSide(resolution, projection)),
       faces_(projection == Projection::Hemicube ? 5 : 1),
       shooters_(shooters),
-      defines_(projectionDefines(projection)),
+      defines_(itemBufferDefines(projection)),
       program_(gl::renderProgram("itembuffer.vert", "itembuffer.frag", defines_)),
       id_(GL_R32UI, faceResolution_, faceResolution_, faces_ * shooters_),
       depth_(GL_DEPTH_COMPONENT32F, faceResolution_, faceResolution_, faces_ * shooters_) {

@@ -13,13 +13,16 @@
 
 namespace hemirad {
 
+// The shader defines that select projection p in shaders/hemisphere.glsl.
+gl::Defines itemBufferDefines(Projection p);
+
 class ItemBuffer {
  public:
   // `resolution` is the pixel budget's side: the hemisphere gets resolution^2 pixels, the
   // hemicube five faces of side resolution / sqrt(3) (top + four half faces = the same budget).
   // `shooters`: the most shooters one render() draws (layers are allocated for each).
   ItemBuffer(const Scene& scene, int subdivision, int resolution, double farDistance,
-             Projection projection = Projection::Stereographic, int shooters = 1);
+             Projection projection = Projection::Orthographic, int shooters = 1);
   // Shader defines that select the projection: every program that looks receivers up needs them.
   const gl::Defines& defines() const { return defines_; }
   // Draws from the shooters of the pass in `control` (SSBO 3); layers past its shooter count

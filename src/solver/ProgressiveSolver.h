@@ -23,7 +23,7 @@ namespace hemirad {
 struct ProgressiveSettings {
   int itemSubdivision = 3;   // 1-to-4 splits of the item mesh
   int itemResolution = 512;  // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
-  Projection projection = Projection::Stereographic;
+  Projection projection = Projection::Orthographic;
   int shootLevel = 1;        // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
   // A block whose elements' unshot radiosity spans more than uniformRatio (least / largest
   // luminance) shoots its brightest quadrant, down to splitDepth levels (ShooterTree.h).

@@ -22,6 +22,6 @@ struct ShootingPlan {
 
 // shootLevel >= 0 and itemResolution > 0 are taken as given; the auto values are planned.
 ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel, int itemResolution,
-                          Projection projection = Projection::Stereographic);
+                          Projection projection = Projection::Orthographic);
 
 }  // namespace hemirad

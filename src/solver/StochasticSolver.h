@@ -4,7 +4,7 @@
 // (eq. 2); B~ is SolverState::radiosity, L the deltaB atlas. Source::Mean instead transports
 // the mean itself, B~_m = (1 - 1/m) B~_{m-1} + (1/m)(E + T* B~_{m-1}), eq. 2 as printed. T*
 // shoots from K texels drawn with probability lum(B~) x area by descending a luminance sum
-// pyramid on the GPU (eq. 3), each through a stereographic item buffer and the exact
+// pyramid on the GPU (eq. 3), each through an item buffer (seed 003's orthographic by default) and the exact
 // point-to-element form factor. The CPU never reads the atlas during a solve: it enqueues
 // passes and reads the iteration count between batches. docs/design.md#stochastic-iteration.
 #pragma once
@@ -35,7 +35,7 @@ struct StochasticSettings {
   unsigned window = 0;
   int itemSubdivision = 3;
   int itemResolution = 256;    // item buffer pixels a side; kAutoItemResolution: planned as progressive
-  Projection projection = Projection::Stereographic;
+  Projection projection = Projection::Orthographic;
   gl::TimerMode timings = gl::TimerMode::Gpu;
   StopRule stop;               // maxShots: iterations (a convergence target does not apply)
 };

@@ -25,7 +25,7 @@ struct ValidateOptions {
   std::optional<std::size_t> shooters = 16;  // nullopt: every element
   // Every projection at every resolution is one configuration, compared at every level.
   std::vector<int> itemResolutions{512};
-  std::vector<Projection> projections{Projection::Stereographic};
+  std::vector<Projection> projections{Projection::Orthographic};  // --hemisphere all: allProjections()
   gl::BackendOptions backend;
   std::optional<std::string> camera;  // for the camera-view figures
   std::string report, figures;
@@ -34,11 +34,12 @@ struct ValidateOptions {
 };
 
 struct LevelStats {
-  Projection projection = Projection::Stereographic;
+  Projection projection = Projection::Orthographic;
   int itemResolution = 0;
   int itemSubdivision = 0;
   std::size_t itemTriangles = 0, texelPairs = 0, falseVisible = 0, falseHidden = 0;
-  double visibilityAgreement = 0, ffRelErrorMedian = 0, ffRelErrorP95 = 0, ffRelErrorMax = 0, gpuMs = 0;
+  double visibilityAgreement = 0, ffRelErrorMedian = 0, ffRelErrorMean = 0, ffRelErrorP95 = 0, ffRelErrorMax = 0;
+  double gpuMs = 0;
 };
 
 struct ObjectFormFactor {
@@ -75,7 +76,7 @@ int runValidate(const ValidateOptions& options);
 // The per-level table: its header and a row per level; as printed (markdown) and in index.html.
 std::vector<std::vector<std::string>> levelRows(const Validation& v);
 std::string levelTable(const Validation& v);
-std::string configName(const LevelStats& s);  // "stereographic 512^2"
+std::string configName(const LevelStats& s);  // "orthographic 512^2"
 
 // validate --figures (src/validate/ValidateFigures.cpp): plots (SVG, PDF) and CSV against L, heat
 // maps on the atlas and renders of the camera view for the figure shooter, and index.html showing

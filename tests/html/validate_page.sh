@@ -12,7 +12,7 @@ browser=$(command -v chromium || command -v chromium-browser || true)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 "$hemirad" validate "$src/scenes/cornell/cornell.obj" --elements 300 --levels 0,1 --shooters 2 \
-  --hemisphere stereographic,hemicube --report "$tmp/v.json" --figures "$tmp/fig" >"$tmp/validate.log" 2>&1 ||
+  --hemisphere orthographic,hemicube --report "$tmp/v.json" --figures "$tmp/fig" >"$tmp/validate.log" 2>&1 ||
   { cat "$tmp/validate.log"; exit 1; }
 cat >"$tmp/check.html" <<HTML
 <!doctype html><html><body><pre id="result">not loaded</pre>
