@@ -130,7 +130,7 @@ TEST_CASE("MTL: one Kd value is grey and texture maps are ignored with a warning
   CHECK(s.materials[0].reflectance == glm::dvec3(0.4));
   CHECK(s.materials[0].emission == glm::dvec3(2.0));
   REQUIRE(s.warnings.size() == 1);
-  CHECK_THAT(s.warnings[0], Contains("m.mtl:4: material 'a': map_Kd texture ignored"));
+  CHECK_THAT(s.warnings[0].text(), Contains("m.mtl:4: material 'a': map_Kd texture ignored"));
 }
 
 TEST_CASE("Bad input: broken glTF is one error line naming the file and what is wrong", "[cli][bad-input]") {

@@ -42,7 +42,7 @@ int runInfo(const InfoOptions& o) {
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);
   fmt::print("warnings     {}\n", scene.warnings.size());
-  for (const auto& w : scene.warnings) fmt::print("  {}\n", w);
+  for (const auto& line : warningLines(scene.warnings)) fmt::print("  {}\n", line);
   fmt::print("\n{:<20} {:>8} {:>12} {:>9}  materials\n", "object", "polygons", "area", "elements");
   for (size_t i = 0; i < rows.size(); ++i) {
     std::string mats;

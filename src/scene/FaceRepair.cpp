@@ -30,7 +30,7 @@ bool isPlanarConvex(const Poly3& poly) {
 void addFace(Scene& scene, const Poly3& poly, int material, int object, const FaceSite& where) {
   glm::dvec3 normal = poly.size() >= 3 ? newellNormal(poly) : glm::dvec3(0.0);
   if (!hasArea(poly, normal)) {
-    scene.warnings.push_back(fmt::format("{}: degenerate face with zero area skipped", where()));
+    scene.warnings.push_back({where(), "degenerate face with zero area skipped"});
     return;
   }
   bool planar = planarityError(poly) <= kPlanarTolerance * polygonSize(poly);
@@ -38,8 +38,8 @@ void addFace(Scene& scene, const Poly3& poly, int material, int object, const Fa
     scene.addPolygon(poly, material, object);
     return;
   }
-  scene.warnings.push_back(
-      fmt::format("{}: {} polygon split into triangles", where(), planar ? "non-convex" : "non-planar"));
+  const char* shape = planar ? "non-convex" : "non-planar";
+  scene.warnings.push_back({where(), fmt::format("{} polygon split into triangles", shape)});
   std::vector<int> tris = triangulate(poly, normal);
   for (size_t t = 0; t < tris.size(); t += 3)
     scene.addPolygon({poly[tris[t]], poly[tris[t + 1]], poly[tris[t + 2]]}, material, object);

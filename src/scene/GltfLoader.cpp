@@ -134,8 +134,8 @@ Material toMaterial(const tinygltf::Material& g, std::size_t index, const std::s
     if (out.emission[c] < 0.0) fail("{}: emission {} is negative", where, out.emission[c]);
   }
   if (g.pbrMetallicRoughness.baseColorTexture.index >= 0 || g.emissiveTexture.index >= 0)
-    scene.warnings.push_back(where + ": texture ignored: hemirad uses the constant baseColorFactor and emissiveFactor "
-                                     "of each material, never textures");
+    scene.warnings.push_back({where, "texture ignored: hemirad uses the constant baseColorFactor and emissiveFactor of "
+                                     "each material, never textures", "materials"});
   return out;
 }
 
@@ -185,14 +185,15 @@ struct Loader {
     if (index >= 0) fail("{}: a primitive refers to material {} of {}", path, index, materialIds.size());
     if (defaultMaterial < 0) {
       defaultMaterial = scene.addMaterial({"(default)", glm::dvec3(0.5), glm::dvec3(0.0)});
-      scene.warnings.push_back(fmt::format("{}: primitives without a material get reflectance 0.5", path));
+      scene.warnings.push_back({path, "primitives without a material get reflectance 0.5", "scenes"});
     }
     return defaultMaterial;
   }
 
   void primitive(const tinygltf::Primitive& p, const glm::dmat4& world, int object, const std::string& where) {
     if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
-      scene.warnings.push_back(fmt::format("{}: a primitive of mode {} (not triangles) skipped", where, p.mode));
+      scene.warnings.push_back(
+          {where, fmt::format("a primitive of mode {} (not triangles) skipped", p.mode), "primitives"});
       return;
     }
     auto pos = p.attributes.find("POSITION");

@@ -9,6 +9,7 @@
 
 #include "src/base/OutputPaths.h"
 #include "src/base/Polygon.h"
+#include "src/scene/Warnings.h"
 
 namespace hemirad {
 
@@ -43,7 +44,7 @@ class Scene {
   std::string path;  // the OBJ it came from ("" for scenes built in code)
   std::vector<Material> materials;
   std::vector<SceneObject> objects;
-  std::vector<std::string> warnings;  // what loading repaired or skipped
+  std::vector<SceneWarning> warnings;  // what loading repaired or skipped (printWarnings groups them)
   // Every file the scene names (the scene, MTLs and their texture maps, glTF buffers and
   // images), with what it is: outputs may never be written over them.
   std::vector<InputPath> sources;

@@ -128,7 +128,7 @@ struct MtlLines {
   std::map<std::string, std::vector<std::string>> newmtl;              // every definition of a name
   std::map<std::pair<std::string, std::string>, std::string> values;  // (name, key): its line
   std::set<std::pair<std::string, std::string>> grey;  // (name, key) given one value: r = g = b
-  std::vector<std::string> warnings;                   // texture maps, which are not used
+  std::vector<SceneWarning> warnings;                  // texture maps, which are not used
   std::string fallback;
   std::string at(const std::string& name, const std::string& key) const {
     if (auto v = values.find({name, key}); v != values.end()) return v->second;
@@ -171,9 +171,9 @@ MtlLines scanMaterialLines(const std::string& objPath, const ObjLines& lines) {
           std::string file, word;
           while (ss >> word) file = word;  // the map's options come first, its file last
           if (!file.empty()) out.files.push_back({"a texture the scene names", (mtlPath.parent_path() / file).string()});
-          out.warnings.push_back(fmt::format("{}: material '{}': {} texture ignored: hemirad uses the constant Kd/Ke "
-                                             "of each material, never textures",
-                                             where, current, key));
+          const std::string ignored = "texture ignored: hemirad uses the constant Kd/Ke of each material, never textures";
+          out.warnings.push_back({where, fmt::format("material '{}': {} {}", current, key, ignored), "texture maps",
+                                  ignored});
         }
       }
     }
@@ -291,7 +291,7 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
       if (material < 0) {
         if (defaultMaterial < 0) {
           defaultMaterial = scene.addMaterial({"(default)", glm::dvec3(0.5), glm::dvec3(0.0)});
-          scene.warnings.push_back(fmt::format("{}: faces without a material get reflectance 0.5", where()));
+          scene.warnings.push_back({where(), "faces without a material get reflectance 0.5", "scenes"});
         }
         material = defaultMaterial;
       }

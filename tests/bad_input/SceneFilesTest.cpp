@@ -133,6 +133,34 @@ TEST_CASE("Bad input: a non-planar polygon is split into triangles with a warnin
   CHECK(fs::exists(out.dir + "/r.json"));
 }
 
+TEST_CASE("Many warnings of one kind are one line: a scene of non-planar faces prints their count and first lines",
+          "[cli][bad-input]") {
+  // Lines 1-6 are kQuad; each bent quad is then four vertices and a face.
+  const int faces = 40;
+  std::string obj = kQuad;
+  std::vector<int> faceLines;
+  for (int k = 0; k < faces; ++k) {
+    obj += fmt::format("v {0} 0 0\nv {1} 0 0\nv {1} 1 0.5\nv {0} 1 0\nf -4 -3 -2 -1\n", 2 * k, 2 * k + 1);
+    faceLines.push_back(6 + 5 * (k + 1));
+  }
+  const std::string path = writeScene("many-non-planar", obj);
+  std::string expected = fmt::format("{} faces: non-planar polygon split into triangles (first at", faces);
+  for (std::size_t k = 0; k < kWarningPlaces; ++k)
+    expected += fmt::format("{} {}:{}", k ? "," : "", path, faceLines[k]);
+  expected += ", ...)";
+
+  Outputs out("many-non-planar");
+  test::Run run = test::hemirad(solve(path) + " --report " + out.dir + "/r.json");
+  INFO(run.output);
+  CHECK(run.exitCode == 0);
+  CHECK(count(run.output, "hemirad: warning:") == 1);
+  CHECK_THAT(run.output, Contains("hemirad: warning: " + expected + "\n"));
+  test::Run info = test::hemirad("info " + path);
+  INFO(info.output);
+  CHECK(info.exitCode == 0);
+  CHECK_THAT(info.output, Contains(fmt::format("warnings     {}\n  {}\n", faces, expected)));
+}
+
 // ---- materials
 
 TEST_CASE("Bad input: a material defined twice is one error naming the MTL file and line", "[cli][bad-input]") {
