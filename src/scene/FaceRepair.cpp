@@ -19,6 +19,20 @@ bool hasArea(const Poly3& poly, const glm::dvec3& normal) {
   const double size = polygonSize(poly);
   return poly.size() >= 3 && glm::length(normal) > 1e-12 * size * size;
 }
+
+// The shortest cycle `poly` repeats (`f 1 2 3 4 1 2 3 4`: 1 2 3 4), or `poly` itself. A repeated
+// cycle passes the convexity test corner by corner, but its Newell area counts every lap: an
+// emitter of twice its area creates energy (convergence below 0).
+Poly3 singleCycle(const Poly3& poly) {
+  const std::size_t n = poly.size();
+  for (std::size_t period = 3; period <= n / 2; ++period) {
+    if (n % period) continue;
+    bool repeats = true;
+    for (std::size_t k = period; k < n && repeats; ++k) repeats = poly[k] == poly[k - period];
+    if (repeats) return Poly3(poly.begin(), poly.begin() + std::ptrdiff_t(period));
+  }
+  return poly;
+}
 }  // namespace
 
 bool isPlanarConvex(const Poly3& poly) {
@@ -27,7 +41,10 @@ bool isPlanarConvex(const Poly3& poly) {
          isConvex(poly, normal);
 }
 
-void addFace(Scene& scene, const Poly3& poly, int material, int object, const FaceSite& where) {
+void addFace(Scene& scene, const Poly3& face, int material, int object, const FaceSite& where) {
+  const Poly3 poly = singleCycle(face);
+  if (poly.size() < face.size())
+    scene.warnings.push_back({where(), "face repeats its vertex cycle; read as the single cycle"});
   glm::dvec3 normal = poly.size() >= 3 ? newellNormal(poly) : glm::dvec3(0.0);
   if (!hasArea(poly, normal)) {
     scene.warnings.push_back({where(), "degenerate face with zero area skipped"});

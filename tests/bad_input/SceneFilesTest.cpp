@@ -3,6 +3,7 @@
 // out of range: one error line naming the file and line, exit code 2, no output. Repairs
 // (zero-area, non-planar faces) warn with the line and go on.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <filesystem>
 
 #include "src/scene/SceneLoader.h"
@@ -131,6 +132,46 @@ TEST_CASE("Bad input: a non-planar polygon is split into triangles with a warnin
   CHECK(run.exitCode == 0);
   CHECK_THAT(run.output, Contains("hemirad: warning: " + obj + ":7: non-planar polygon split into triangles"));
   CHECK(fs::exists(out.dir + "/r.json"));
+}
+
+TEST_CASE("A face repeating its vertex cycle is read once with one warning: the single cycle's area, and a solve's "
+          "convergence never goes negative",
+          "[cli][bad-input]") {
+  // A triangle given twice reads as the triangle.
+  const Scene triangle = loadScene(writeScene("cycle-triangle", kQuad + "f 1 2 3\n"));
+  const Scene twice = loadScene(writeScene("cycle-triangle-twice", kQuad + "f 1 2 3 1 2 3\n"));
+  CHECK(twice.totalArea() == Approx(triangle.totalArea()).epsilon(1e-12));
+  CHECK(twice.warnings.size() == 1);
+
+  // The Cornell box with the cycles of its floor and three walls given three times: read as they
+  // were, these big receivers counted their area thrice, and the solve created energy.
+  const std::string cornell = test::readText(test::sourcePath("scenes/cornell/cornell.obj"));
+  std::string repeated = cornell;
+  for (std::string face : {"f 1 2 3 4", "f 25 26 27 28", "f 29 30 31 32", "f 33 34 35 36"}) {
+    const std::string cycle = face.substr(1);
+    repeated.replace(repeated.find(face + "\n"), face.size(), face + cycle + cycle);
+  }
+  const std::string mtl = test::readText(test::sourcePath("scenes/cornell/cornell.mtl"));
+  const std::string once = test::writeScene("cycle-once", cornell, mtl, "s.obj", "cornell.mtl");
+  const std::string thrice = test::writeScene("cycle-thrice", repeated, mtl, "s.obj", "cornell.mtl");
+  const Scene a = loadScene(once), b = loadScene(thrice);
+  CHECK(b.polygons().size() == a.polygons().size());
+  CHECK(b.totalArea() == Approx(a.totalArea()).epsilon(1e-12));
+  CHECK(b.warnings.size() == 4);
+  if (!b.warnings.empty())
+    CHECK_THAT(b.warnings[0].text(), Contains("s.obj:10: face repeats its vertex cycle; read as the single cycle"));
+
+  auto convergence = [](const std::string& obj) {
+    const std::string report = fs::path(obj).parent_path().string() + "/r.json";
+    test::Run run = test::hemirad("solve " + obj + " --elements 600 --shots 150 --quiet --report " + report);
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    return test::readJson(report)["convergence_history"].get<std::vector<double>>();
+  };
+  const std::vector<double> history = convergence(thrice);
+  REQUIRE(!history.empty());
+  CHECK(*std::min_element(history.begin(), history.end()) >= 0);
+  CHECK(history == convergence(once));  // the repaired scene is the box itself
 }
 
 TEST_CASE("Many warnings of one kind are one line: a scene of non-planar faces prints their count and first lines",
