@@ -139,12 +139,22 @@ TEST_CASE("Bad input: broken glTF is one error line naming the file and what is 
   expectRefused("gltf-json", "solve " + scene("json", "{\"asset\":") + " --shots 2 --quiet", {"bad-json.gltf:"});
   expectRefused("gltf-past-buffer", "solve " + scene("past", gltf(R"({"mesh":0})", "0", kLamp, "", "60")) + " --shots 2 --quiet",
                 {"bad-past.gltf: indices: accessor 1 reaches past the end of its buffer"});
-  expectRefused("gltf-white", "solve " + scene("white", gltf(R"({"mesh":0})", "0",
-                R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1]},"emissiveFactor":[1,1,1]})")) + " --shots 2 --quiet",
-                {"material 'material 0': reflectance baseColorFactor 1 is >= 1"});
+  expectRefused("gltf-bright", "solve " + scene("bright", gltf(R"({"mesh":0})", "0",
+                R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1.25,1,1]},"emissiveFactor":[1,1,1]})")) +
+                    " --shots 2 --quiet",
+                {"material 'material 0': reflectance baseColorFactor 1.25 is above 1"});
   expectRefused("gltf-dark", "solve " + scene("dark", gltf(R"({"mesh":0})", "0", 
                 R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})")) + " --shots 2 --quiet",
                 {"no emitter"});
   expectRefused("gltf-node", "solve " + scene("node", gltf(R"({"mesh":0,"children":[7]})", "0", kLamp)) + " --shots 2 --quiet",
                 {"bad-node.gltf: node 7 does not exist (1 nodes)"});
+}
+
+TEST_CASE("A glTF material without baseColorFactor (reflectance 1) loads with one warning naming it", "[cpu]") {
+  const std::string paper = R"({"name":"paper","emissiveFactor":[1,1,1]})";
+  const Scene s = loadScene(writeGltf("rho-one", gltf(R"({"mesh":0})", "0", paper)));
+  REQUIRE(s.materials.size() == 1);
+  CHECK(s.materials[0].reflectance == glm::dvec3(1.0));  // glTF's default baseColorFactor
+  REQUIRE(s.warnings.size() == 1);
+  CHECK_THAT(s.warnings[0].text(), Contains("material 'paper': " + std::string(kReflectanceOne)));
 }

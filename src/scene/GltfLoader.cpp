@@ -128,11 +128,15 @@ Material toMaterial(const tinygltf::Material& g, std::size_t index, const std::s
   for (int c = 0; c < 3 && std::size_t(c) < g.emissiveFactor.size(); ++c)
     out.emission[c] = finiteFactor(g.emissiveFactor[std::size_t(c)], where, "emissiveFactor") * strength;
   for (int c = 0; c < 3; ++c) {
-    if (out.reflectance[c] >= 1.0)
-      fail("{}: reflectance baseColorFactor {} is >= 1 (no energy would ever be absorbed)", where, out.reflectance[c]);
+    if (out.reflectance[c] > 1.0)
+      fail("{}: reflectance baseColorFactor {} is above 1 (it would reflect more light than it receives)", where,
+           out.reflectance[c]);
     if (out.reflectance[c] < 0.0) fail("{}: reflectance baseColorFactor {} is negative", where, out.reflectance[c]);
     if (out.emission[c] < 0.0) fail("{}: emission {} is negative", where, out.emission[c]);
   }
+  // glTF's default baseColorFactor is 1: a material without one reflects everything.
+  if (glm::any(glm::equal(out.reflectance, glm::dvec3(1.0))))
+    scene.warnings.push_back({where, std::string(kReflectanceOne), "materials"});
   if (g.pbrMetallicRoughness.baseColorTexture.index >= 0 || g.emissiveTexture.index >= 0)
     scene.warnings.push_back({where, "texture ignored: hemirad uses the constant baseColorFactor and emissiveFactor of "
                                      "each material, never textures", "materials"});

@@ -26,6 +26,10 @@ struct Material {
   bool emissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
 };
 
+// The warning for a material with a reflectance channel of exactly 1 (above 1 is refused).
+inline constexpr const char* kReflectanceOne =
+    "reflectance 1: no energy is absorbed there; a closed scene of such materials never converges";
+
 struct SceneObject {
   std::string name;  // OBJ `o`/`g` name
 };

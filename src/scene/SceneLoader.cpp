@@ -183,7 +183,8 @@ MtlLines scanMaterialLines(const std::string& objPath, const ObjLines& lines) {
 
 bool finite3(const double* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
-Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, const MtlLines& mtl) {
+Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, const MtlLines& mtl,
+                    std::vector<SceneWarning>& warnings) {
   const double* e = options.emission == EmissionSource::Ka ? m.ambient : m.emission;
   Material out{m.name, {m.diffuse[0], m.diffuse[1], m.diffuse[2]}, {e[0], e[1], e[2]}};
   const char* eKey = options.emission == EmissionSource::Ka ? "Ka" : "Ke";
@@ -193,12 +194,15 @@ Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, co
   if (!finite3(m.diffuse)) fail("{}: material '{}': Kd is not a finite number", kd, m.name);
   if (!finite3(e)) fail("{}: material '{}': {} is not a finite number", ek, m.name, eKey);
   for (int c = 0; c < 3; ++c) {
-    if (out.reflectance[c] >= 1.0)
-      fail("{}: material '{}': reflectance Kd {} is >= 1 (no energy would ever be absorbed)", kd, m.name,
+    if (out.reflectance[c] > 1.0)
+      fail("{}: material '{}': reflectance Kd {} is above 1 (it would reflect more light than it receives)", kd, m.name,
            out.reflectance[c]);
     if (out.reflectance[c] < 0.0) fail("{}: material '{}': reflectance Kd {} is negative", kd, m.name, out.reflectance[c]);
     if (out.emission[c] < 0.0) fail("{}: material '{}': emission {} {} is negative", ek, m.name, eKey, out.emission[c]);
   }
+  // Exactly 1 (white paper in many models) is physical enough to solve: the light stays in play.
+  if (glm::any(glm::equal(out.reflectance, glm::dvec3(1.0))))
+    warnings.push_back({kd, fmt::format("material '{}': {}", m.name, kReflectanceOne), "materials", kReflectanceOne});
   return out;
 }
 
@@ -230,7 +234,7 @@ void addMaterials(Scene& scene, const tinyobj::ObjReader& reader, const LoadOpti
       fail("{}: material '{}' is defined twice{}", known ? d->second[1] : mtl.fallback, m.name,
            known ? " (first at " + d->second[0] + ")" : "");
     }
-    materialIds[m.name] = scene.addMaterial(toMaterial(m, options, mtl));
+    materialIds[m.name] = scene.addMaterial(toMaterial(m, options, mtl, scene.warnings));
   }
   for (const auto& [name, line] : lines.usemtl)
     if (!materialIds.count(name)) fail("{}:{}: unknown material '{}' (not in the MTL file)", path, line, name);

@@ -219,10 +219,30 @@ TEST_CASE("Bad input: a scene without emitters is one error saying so", "[cli][b
   expectRefused("dark", solve(obj), {"s.obj: no emitter"});
 }
 
-TEST_CASE("Bad input: reflectance of 1 or more or below 0 is one error naming the MTL file and line",
+TEST_CASE("Reflectance exactly 1 (Kd 1) is solved with one warning naming the material, and converges in an open "
+          "scene",
           "[cli][bad-input]") {
-  std::string high = writeScene("rho-high", kQuad + "f 1 2 3 4\n", "newmtl lamp\nKe 1 1 1\nKd 0.5 1 0.5\n");
-  expectRefused("rho-high", solve(high), {"m.mtl:3: material 'lamp': reflectance Kd 1 is >= 1"});
+  // The lamp quad at z = 0 facing +z, a white quad at z = 1 facing it.
+  const std::string obj = writeScene("rho-one", kQuad + "f 1 2 3 4\nv 0 0 1\nv 0 1 1\nv 1 1 1\nv 1 0 1\nusemtl white\n"
+                                                        "f 5 6 7 8\n",
+                                     kMtl + "newmtl white\nKd 1 1 1\n");
+  const Scene scene = loadScene(obj);
+  CHECK(scene.materials.back().reflectance == glm::dvec3(1.0));
+  Outputs out("rho-one");
+  const std::string report = out.dir + "/r.json";
+  test::Run run = test::hemirad("solve " + obj + " --converge 0.99 --quiet --report " + report);
+  INFO(run.output);
+  CHECK(run.exitCode == 0);
+  CHECK(count(run.output, "hemirad: warning:") == 1);
+  CHECK_THAT(run.output, Contains("m.mtl:7: material 'white': " + std::string(kReflectanceOne)));
+  const double convergence = test::readJson(report)["convergence"].get<double>();
+  CHECK(convergence >= 0.99);
+  CHECK(convergence <= 1.0);
+}
+
+TEST_CASE("Bad input: reflectance above 1 or below 0 is one error naming the MTL file and line", "[cli][bad-input]") {
+  std::string high = writeScene("rho-high", kQuad + "f 1 2 3 4\n", "newmtl lamp\nKe 1 1 1\nKd 0.5 1.001 0.5\n");
+  expectRefused("rho-high", solve(high), {"m.mtl:3: material 'lamp': reflectance Kd 1.001 is above 1"});
   std::string low = writeScene("rho-low", kQuad + "f 1 2 3 4\n", "newmtl lamp\nKe 1 1 1\nKd 0.5 -0.1 0.5\n");
   expectRefused("rho-low", solve(low), {"m.mtl:3: material 'lamp': reflectance Kd -0.1 is negative"});
 }
