@@ -13,6 +13,7 @@
 
 #include "src/base/Error.h"
 #include "src/scene/FaceRepair.h"
+#include "src/scene/SceneFormat.h"
 
 namespace hemirad {
 
@@ -42,6 +43,8 @@ tinygltf::Model readModel(const std::string& path) {
   const bool binary = lower(std::filesystem::path(path).extension().string()) == ".glb";
   const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warning, path)
                          : loader.LoadASCIIFromFile(&model, &err, &warning, path);
+  // tinygltf reads no version: a glTF 1.0 file fails its parse, or loads empty.
+  if (!binary) refuseGltf1(path, ok ? model.asset.version : "");
   if (!ok) fail("{}: {}", path, err.empty() ? std::string("not a glTF 2.0 file") : firstLine(err));
   return model;
 }

@@ -18,6 +18,7 @@
 #include "src/base/Error.h"
 #include "src/scene/FaceRepair.h"
 #include "src/scene/GltfLoader.h"
+#include "src/scene/SceneFormat.h"
 
 namespace hemirad {
 
@@ -264,8 +265,11 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
   if (!fs::exists(path, ec)) fail("{}: no such file", path);
   if (!fs::is_regular_file(path, ec)) fail("{}: is not a readable file (a folder?)", path);
   if (!std::ifstream(path)) fail("{}: cannot be read", path);
-  if (isGltfPath(path)) return loadGltf(path);
+  if (sceneFormat(path) == SceneFormat::Gltf) return loadGltf(path);
   ObjLines lines = scanLines(path);
+  if (lines.mtllib.empty() && !lines.usemtl.empty())
+    fail("{}:{}: usemtl '{}' but the file names no material library (mtllib)", path, lines.usemtl.front().second,
+         lines.usemtl.front().first);
   const MtlLines mtl = scanMaterialLines(path, lines);
   tinyobj::ObjReader reader;
   readObj(reader, path, lines);

@@ -4,6 +4,8 @@
 // (zero-area, non-planar faces) warn with the line and go on.
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <cctype>
+#include <cstdint>
 #include <filesystem>
 
 #include "src/scene/SceneLoader.h"
@@ -245,4 +247,62 @@ TEST_CASE("Bad input: reflectance above 1 or below 0 is one error naming the MTL
   expectRefused("rho-high", solve(high), {"m.mtl:3: material 'lamp': reflectance Kd 1.001 is above 1"});
   std::string low = writeScene("rho-low", kQuad + "f 1 2 3 4\n", "newmtl lamp\nKe 1 1 1\nKd 0.5 -0.1 0.5\n");
   expectRefused("rho-low", solve(low), {"m.mtl:3: material 'lamp': reflectance Kd -0.1 is negative"});
+}
+
+TEST_CASE("Bad input: usemtl in an OBJ naming no material library is one error naming the usemtl line",
+          "[cli][bad-input]") {
+  // kQuad without its mtllib line: usemtl moves to line 5.
+  const std::string obj = writeScene("usemtl-no-mtllib", kQuad.substr(kQuad.find('\n') + 1) + "f 1 2 3 4\n");
+  expectRefused("usemtl-no-mtllib", solve(obj),
+                {"s.obj:5: usemtl 'lamp' but the file names no material library (mtllib)"});
+}
+
+// ---- other formats and encodings
+
+TEST_CASE("Bad input: a scene file of another 3D format is one error naming the formats hemirad reads",
+          "[cli][bad-input]") {
+  for (std::string ext : {"ply", "fbx", "dae", "3ds", "stl", "FBX", "blend", "usdz"}) {
+    const std::string path = test::writeTempFile("format." + ext, "solid nothing\n");
+    std::string lower = ext;
+    for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+    expectRefused("format-" + ext, solve(path),
+                  {path + ": unsupported format ." + lower + ": hemirad reads OBJ (+MTL) and glTF 2.0 (.gltf, .glb)"});
+  }
+  const std::string mtl = fs::path(writeScene("mtl-as-scene", kQuad + "f 1 2 3 4\n")).parent_path().string() + "/m.mtl";
+  expectRefused("mtl-as-scene", solve(mtl), {mtl + ": is a material library (MTL); give the OBJ that names it"});
+}
+
+namespace {
+// `text` (ASCII) as UTF-16, little- or big-endian, with or without its byte order mark.
+std::string utf16(const std::string& text, bool little, bool bom) {
+  std::string out = bom ? (little ? "\xFF\xFE" : "\xFE\xFF") : "";
+  for (char c : text) out += little ? std::string{c, '\0'} : std::string{'\0', c};
+  return out;
+}
+}  // namespace
+
+TEST_CASE("Bad input: a UTF-16 OBJ is one error saying to save it as UTF-8 or ASCII", "[cli][bad-input]") {
+  for (auto [little, bom] : {std::pair{true, true}, std::pair{false, true}, std::pair{true, false}}) {
+    const std::string name = fmt::format("utf16-{}-{}", little ? "le" : "be", bom ? "bom" : "plain");
+    const std::string obj = writeScene(name, utf16(kQuad + "f 1 2 3 4\n", little, bom));
+    expectRefused(name, solve(obj), {obj + " is UTF-16 text; save it as UTF-8 or ASCII"});
+  }
+}
+
+TEST_CASE("Bad input: a glTF 1.0 file (.gltf or .glb) is one error saying to convert it to glTF 2.0",
+          "[cli][bad-input]") {
+  const std::string message = ": glTF 1.0 is not supported; convert it to glTF 2.0";
+  // glTF 1.0 keeps its objects in dictionaries keyed by id, and may leave out asset.
+  const std::string meshes = R"("meshes":{"quad":{"primitives":[{"attributes":{"POSITION":"pos"},"mode":4}]}})";
+  const std::string versioned = test::writeTempFile("gltf1.gltf", R"({"asset":{"version":"1.0"},)" + meshes + "}");
+  expectRefused("gltf1", solve(versioned), {versioned + message});
+  const std::string bare = test::writeTempFile("gltf1-bare.gltf", "{" + meshes + R"(,"scene":"defaultScene"})");
+  expectRefused("gltf1-bare", solve(bare), {bare + message});
+  // A 1.0 binary (KHR_binary_glTF): magic, version 1, length, then its JSON.
+  const std::string json = R"({"asset":{"version":"1.0"}})";
+  std::string glb = "glTF";
+  for (std::uint32_t word : {1u, std::uint32_t(20 + json.size()), std::uint32_t(json.size()), 0u})
+    glb.append(reinterpret_cast<const char*>(&word), 4);
+  const std::string binary = test::writeTempFile("gltf1.glb", glb + json);
+  expectRefused("gltf1-glb", solve(binary), {binary + message});
 }
