@@ -179,6 +179,34 @@ std::pair<Poly3, std::size_t> fanPolygon(const std::vector<glm::dvec3>& world, c
   return {poly, used};
 }
 
+// Strip and fan indices as a triangle list (glTF 2.0, 3.7.2.1). Strip triangle i is (v_i, v_i+1,
+// v_i+2) with the odd ones reversed, (v_i, v_i+2, v_i+1), so all keep the first one's winding;
+// those repeating an index only stitch strips together and are dropped. Fan triangle i is (v_0,
+// v_i+1, v_i+2), the spec's (v_i+1, v_i+2, v_0) rotated, which fanPolygon joins back into a polygon.
+std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_t>& idx) {
+  if (mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) return idx;
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i + 2 < idx.size(); ++i) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      out.insert(out.end(), {idx[0], idx[i + 1], idx[i + 2]});
+      continue;
+    }
+    const std::uint32_t a = idx[i], b = idx[i + 1 + i % 2], c = idx[i + 2 - i % 2];
+    if (a != b && b != c && a != c) out.insert(out.end(), {a, b, c});
+  }
+  return out;
+}
+
+const char* modeName(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "points";
+    case TINYGLTF_MODE_LINE: return "lines";
+    case TINYGLTF_MODE_LINE_LOOP: return "a line loop";
+    case TINYGLTF_MODE_LINE_STRIP: return "a line strip";
+    default: return "an unknown mode";
+  }
+}
+
 struct Loader {
   const tinygltf::Model& m;
   const std::string& path;
@@ -198,16 +226,16 @@ struct Loader {
   }
 
   void primitive(const tinygltf::Primitive& p, const glm::dmat4& world, int object, const std::string& where) {
-    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
-      scene.warnings.push_back(
-          {where, fmt::format("a primitive of mode {} (not triangles) skipped", p.mode), "primitives"});
+    if (p.mode != -1 && (p.mode < TINYGLTF_MODE_TRIANGLES || p.mode > TINYGLTF_MODE_TRIANGLE_FAN)) {
+      scene.warnings.push_back({where, fmt::format("{} (mode {}) skipped: hemirad reads only surfaces (triangles, "
+                                                   "strips and fans)", modeName(p.mode), p.mode), "primitives"});
       return;
     }
     auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) fail("{}: a primitive has no POSITION", where);
     std::vector<glm::dvec3> points = positions(m, pos->second, path);
     for (auto& q : points) q = glm::dvec3(world * glm::dvec4(q, 1.0));
-    const std::vector<std::uint32_t> idx = indices(m, p, points.size(), path);
+    const std::vector<std::uint32_t> idx = triangleList(p.mode, indices(m, p, points.size(), path));
     if (idx.size() % 3) fail("{}: {} indices are not whole triangles", where, idx.size());
     const int mat = material(p.material);
     for (std::size_t t = 0; t < idx.size() / 3;) {
