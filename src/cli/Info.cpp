@@ -50,7 +50,7 @@ int runInfo(const InfoOptions& o) {
     fmt::print("{:<20} {:>8} {:>12.6g} {:>9}  {}\n", scene.objects[i].name, rows[i].polygons, rows[i].area,
                rows[i].elements, mats);
   }
-  if (!emitters) fmt::print("\nno emitter: `hemirad solve` needs a material with Ke > 0 (or Ka with --emission ka)\n");
+  if (!emitters) fmt::print("\nno emitter: {}: `hemirad solve` needs one\n", noEmitterReason(scene));
   return 0;
 }
 

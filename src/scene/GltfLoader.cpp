@@ -286,6 +286,7 @@ Scene loadGltf(const std::string& path) {
   const tinygltf::Model model = readModel(path);
   Scene scene;
   scene.path = path;
+  scene.emissionKey = "emissiveFactor";
   scene.sources = {{"the scene", path}};
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   auto external = [&](const std::string& uri) { return !uri.empty() && uri.rfind("data:", 0) != 0; };

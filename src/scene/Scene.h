@@ -49,6 +49,7 @@ class Scene {
   std::vector<Material> materials;
   std::vector<SceneObject> objects;
   std::vector<SceneWarning> warnings;  // what loading repaired or skipped (printWarnings groups them)
+  std::string emissionKey = "Ke";       // what E was read from: Ke, Ka (--emission ka), emissiveFactor (glTF)
   // Every file the scene names (the scene, MTLs and their texture maps, glTF buffers and
   // images), with what it is: outputs may never be written over them.
   std::vector<InputPath> sources;

@@ -277,6 +277,7 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
 
   Scene scene;
   scene.path = path;
+  scene.emissionKey = options.emission == EmissionSource::Ka ? "Ka" : "Ke";
   scene.warnings = mtl.warnings;
   scene.sources = mtl.files;
   scene.sources.insert(scene.sources.begin(), {"the scene", path});
@@ -309,10 +310,17 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
   return scene;
 }
 
+std::string noEmitterReason(const Scene& scene) {
+  if (scene.emissionKey == "emissiveFactor")
+    return "no material has a positive emissiveFactor (times KHR_materials_emissive_strength's emissiveStrength)";
+  if (scene.emissionKey == "Ka")
+    return "no material has a positive Ka (read for --emission ka; without it lights come from Ke)";
+  return "no material has a positive Ke (use --emission ka if lights are given by Ka)";
+}
+
 void validateSolvable(const Scene& scene) {
   if (scene.polygons().empty()) fail("{}: the scene has no faces with area", scene.path);
-  if (!(scene.emittedPower() > 0))
-    fail("{}: no emitter: no material has a positive Ke (use --emission ka if lights are given by Ka)", scene.path);
+  if (!(scene.emittedPower() > 0)) fail("{}: no emitter: {}", scene.path, noEmitterReason(scene));
 }
 
 }  // namespace hemirad

@@ -306,3 +306,28 @@ TEST_CASE("Bad input: a glTF 1.0 file (.gltf or .glb) is one error saying to con
   const std::string binary = test::writeTempFile("gltf1.glb", glb + json);
   expectRefused("gltf1-glb", solve(binary), {binary + message});
 }
+
+// ---- no emitter
+
+TEST_CASE("Bad input: the no-emitter error names glTF's emissiveFactor for glTF, and never suggests --emission ka "
+          "when it was given",
+          "[cli][bad-input]") {
+  // The glTF Cornell box with its light made dark: its emissiveFactor (and the comma after it) removed.
+  std::string text = test::readText(test::sourcePath("scenes/cornell/cornell.gltf"));
+  const std::size_t at = text.find("\"emissiveFactor\"");
+  REQUIRE(at != std::string::npos);
+  text.erase(at, text.find(']', at) + 2 - at);
+  const std::string gltf = test::writeTempFile("dark.gltf", text);
+  expectRefused("dark-gltf", solve(gltf),
+                {gltf + ": no emitter: no material has a positive emissiveFactor (times "
+                        "KHR_materials_emissive_strength"});
+  test::Run glRun = test::hemirad(solve(gltf));
+  CHECK_THAT(glRun.output, !Contains("--emission ka") && !Contains("positive Ke"));
+
+  const std::string obj = writeScene("dark-ka", kQuad + "usemtl grey\nf 1 2 3 4\n");
+  const std::string ka = solve(obj) + " --emission ka";
+  expectRefused("dark-ka", ka, {obj + ": no emitter: no material has a positive Ka"});
+  test::Run kaRun = test::hemirad(ka);
+  CHECK_THAT(kaRun.output, !Contains("use --emission ka"));
+  expectRefused("dark-ke", solve(obj), {obj + ": no emitter: no material has a positive Ke (use --emission ka"});
+}
