@@ -5,14 +5,17 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hemirad {
 
 struct SceneWarning {
+  SceneWarning(std::string where, std::string message, std::string counted = "faces", std::string kind = "")
+      : where(std::move(where)), message(std::move(message)), counted(std::move(counted)), kind(std::move(kind)) {}
   std::string where;    // "s.obj:7", "m.mtl:4", "s.gltf: mesh 0 primitive 1 triangle 5"
   std::string message;  // "non-planar polygon split into triangles"
-  std::string counted = "faces";  // what a group of them counts: "3,720 faces: ..."
+  std::string counted;  // what a group of them counts: "3,720 faces: ..."
   std::string kind;     // what warnings of one sort share, when the message names its material ("": message)
   std::string text() const { return where.empty() ? message : where + ": " + message; }
   const std::string& group() const { return kind.empty() ? message : kind; }
