@@ -51,7 +51,7 @@ TEST_CASE("Bad flags and bad scenes exit with code 2 and one error line, writing
                    "no emitter", out);
   expectInputError("solve " + test::writeScene("bright", quad + "usemtl grey\nf 1 2 3 4\n", "newmtl grey\nKd 1.2 0 0\nKe 1 1 1\n") +
                        " --out " + out,
-                   "reflectance Kd 1.2 is >= 1", out);
+                   "reflectance Kd 1.2 is above 1", out);
   expectInputError("solve " + test::writeScene("empty", "", mtl) + " --out " + out, "no faces", out);
 }
 

@@ -2,7 +2,10 @@
 // written as glTF (scenes/tools/obj_to_gltf.py) is the OBJ's scene and solves to its radiosity;
 // node transforms, emissive strength and cameras are applied; bad glTF is one error line. Also
 // the MTL's one-value `Kd` (grey) and its texture maps (a warning).
+#include <tiny_gltf.h>
+
 #include <catch2/catch.hpp>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 
@@ -130,7 +133,7 @@ TEST_CASE("MTL: one Kd value is grey and texture maps are ignored with a warning
   CHECK(s.materials[0].reflectance == glm::dvec3(0.4));
   CHECK(s.materials[0].emission == glm::dvec3(2.0));
   REQUIRE(s.warnings.size() == 1);
-  CHECK_THAT(s.warnings[0], Contains("m.mtl:4: material 'a': map_Kd texture ignored"));
+  CHECK_THAT(s.warnings[0].text(), Contains("m.mtl:4: material 'a': map_Kd texture ignored"));
 }
 
 TEST_CASE("Bad input: broken glTF is one error line naming the file and what is wrong", "[cli][bad-input]") {
@@ -139,12 +142,126 @@ TEST_CASE("Bad input: broken glTF is one error line naming the file and what is 
   expectRefused("gltf-json", "solve " + scene("json", "{\"asset\":") + " --shots 2 --quiet", {"bad-json.gltf:"});
   expectRefused("gltf-past-buffer", "solve " + scene("past", gltf(R"({"mesh":0})", "0", kLamp, "", "60")) + " --shots 2 --quiet",
                 {"bad-past.gltf: indices: accessor 1 reaches past the end of its buffer"});
-  expectRefused("gltf-white", "solve " + scene("white", gltf(R"({"mesh":0})", "0",
-                R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1]},"emissiveFactor":[1,1,1]})")) + " --shots 2 --quiet",
-                {"material 'material 0': reflectance baseColorFactor 1 is >= 1"});
+  expectRefused("gltf-bright", "solve " + scene("bright", gltf(R"({"mesh":0})", "0",
+                R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1.25,1,1]},"emissiveFactor":[1,1,1]})")) +
+                    " --shots 2 --quiet",
+                {"material 'material 0': reflectance baseColorFactor 1.25 is above 1"});
   expectRefused("gltf-dark", "solve " + scene("dark", gltf(R"({"mesh":0})", "0", 
                 R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})")) + " --shots 2 --quiet",
                 {"no emitter"});
   expectRefused("gltf-node", "solve " + scene("node", gltf(R"({"mesh":0,"children":[7]})", "0", kLamp)) + " --shots 2 --quiet",
                 {"bad-node.gltf: node 7 does not exist (1 nodes)"});
+}
+
+TEST_CASE("A glTF material without baseColorFactor (reflectance 1) loads with one warning naming it", "[cpu]") {
+  const std::string paper = R"({"name":"paper","emissiveFactor":[1,1,1]})";
+  const Scene s = loadScene(writeGltf("rho-one", gltf(R"({"mesh":0})", "0", paper)));
+  REQUIRE(s.materials.size() == 1);
+  CHECK(s.materials[0].reflectance == glm::dvec3(1.0));  // glTF's default baseColorFactor
+  REQUIRE(s.warnings.size() == 1);
+  CHECK_THAT(s.warnings[0].text(), Contains("material 'paper': " + std::string(kReflectanceOne)));
+}
+
+namespace {
+// Appends `values` to buffer 0 as a buffer view and an accessor of `count` elements; returns the accessor.
+template <class T>
+int addAccessor(tinygltf::Model& m, const std::vector<T>& values, int componentType, int type, std::size_t count) {
+  if (m.buffers.empty()) m.buffers.emplace_back();
+  std::vector<unsigned char>& data = m.buffers[0].data;
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = data.size();
+  view.byteLength = values.size() * sizeof(T);
+  const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+  data.insert(data.end(), bytes, bytes + view.byteLength);
+  while (data.size() % 4) data.push_back(0);
+  m.bufferViews.push_back(view);
+  tinygltf::Accessor a;
+  a.bufferView = int(m.bufferViews.size()) - 1;
+  a.componentType = componentType;
+  a.type = type;
+  a.count = count;
+  m.accessors.push_back(a);
+  return int(m.accessors.size()) - 1;
+}
+
+// A primitive of `mode` over `points`, indexed by `indices` when there are any.
+void addPrimitive(tinygltf::Model& m, int mode, const std::vector<glm::vec3>& points,
+                  const std::vector<std::uint16_t>& indices) {
+  tinygltf::Primitive p;
+  p.mode = mode;
+  p.material = 0;
+  p.attributes["POSITION"] =
+      addAccessor(m, points, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, points.size());
+  if (!indices.empty())
+    p.indices = addAccessor(m, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, indices.size());
+  m.meshes[0].primitives.push_back(p);
+}
+
+// The triangles of a strip or fan as the glTF 2.0 spec (3.7.2.1) defines them, zero-area ones left out.
+std::vector<Poly3> specTriangles(int mode, const std::vector<glm::vec3>& points, std::vector<std::uint16_t> indices) {
+  if (indices.empty())
+    for (std::size_t k = 0; k < points.size(); ++k) indices.push_back(std::uint16_t(k));
+  std::vector<Poly3> out;
+  for (std::size_t i = 0; i + 2 < indices.size(); ++i) {
+    const std::size_t a = mode == TINYGLTF_MODE_TRIANGLE_FAN ? i + 1 : i;
+    const std::size_t b = mode == TINYGLTF_MODE_TRIANGLE_FAN ? i + 2 : i + 1 + i % 2;
+    const std::size_t c = mode == TINYGLTF_MODE_TRIANGLE_FAN ? 0 : i + 2 - i % 2;
+    Poly3 t{glm::dvec3(points[indices[a]]), glm::dvec3(points[indices[b]]), glm::dvec3(points[indices[c]])};
+    if (area(t) > 0) out.push_back(t);
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("glTF triangle strips and fans, indexed or not, load as their triangles with the spec's winding; points and "
+          "lines are skipped with a warning",
+          "[cpu]") {
+  tinygltf::Model m;
+  m.asset.version = "2.0";
+  m.meshes.emplace_back();
+  tinygltf::Material lamp;
+  lamp.emissiveFactor = {1, 1, 1};
+  lamp.pbrMetallicRoughness.baseColorFactor = {0.5, 0.5, 0.5, 1};
+  m.materials.push_back(lamp);
+  // A planar strip of 4 triangles; two quads stitched into one strip by repeated indices; a fan
+  // round a pyramid's apex (non-planar, so its triangles stay triangles), plain and indexed.
+  std::vector<glm::vec3> strip, quads, pyramid{{0, 0, 1}, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}};
+  for (int k = 0; k < 3; ++k) strip.insert(strip.end(), {{k, 0, 0}, {k, 1, 0}});
+  for (float x : {3.f, 5.f}) quads.insert(quads.end(), {{x, 0, 0}, {x + 1, 0, 0}, {x, 1, 0}, {x + 1, 1, 0}});
+  const std::vector<std::uint16_t> stitched{0, 1, 2, 3, 3, 4, 4, 5, 6, 7}, ring{0, 5, 4, 3, 2, 1};
+  const struct { int mode; const std::vector<glm::vec3>& points; std::vector<std::uint16_t> indices; } prims[] = {
+      {TINYGLTF_MODE_TRIANGLE_STRIP, strip, {}},
+      {TINYGLTF_MODE_TRIANGLE_STRIP, quads, stitched},
+      {TINYGLTF_MODE_TRIANGLE_FAN, pyramid, {}},
+      {TINYGLTF_MODE_TRIANGLE_FAN, pyramid, ring}};
+  std::vector<Poly3> expected;
+  for (const auto& p : prims) {
+    addPrimitive(m, p.mode, p.points, p.indices);
+    for (const Poly3& t : specTriangles(p.mode, p.points, p.indices)) expected.push_back(t);
+  }
+  addPrimitive(m, TINYGLTF_MODE_POINTS, strip, {});
+  addPrimitive(m, TINYGLTF_MODE_LINE, strip, {});
+  tinygltf::Node node;
+  node.mesh = 0;
+  m.nodes.push_back(node);
+  m.scenes.emplace_back().nodes = {0};
+  m.defaultScene = 0;
+  const std::string path = test::tempPath("strips-fans.gltf");
+  REQUIRE(tinygltf::TinyGLTF().WriteGltfSceneToFile(&m, path, false, true, true, false));
+
+  const Scene s = loadScene(path);
+  REQUIRE(s.polygons().size() == expected.size());
+  double expectedArea = 0;
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    INFO("triangle " << k);
+    const ScenePolygon& p = s.polygons()[k];
+    expectedArea += area(expected[k]);
+    CHECK(p.area == Approx(area(expected[k])).epsilon(1e-6));
+    CHECK(glm::dot(p.normal, glm::normalize(newellNormal(expected[k]))) > 1 - 1e-9);  // the same winding
+  }
+  CHECK(s.totalArea() == Approx(expectedArea).epsilon(1e-9));
+  REQUIRE(s.warnings.size() == 2);
+  CHECK_THAT(s.warnings[0].text(), Contains("mesh 0 primitive 4: points (mode 0) skipped"));
+  CHECK_THAT(s.warnings[1].text(), Contains("mesh 0 primitive 5: lines (mode 1) skipped"));
 }

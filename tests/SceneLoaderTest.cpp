@@ -70,9 +70,9 @@ TEST_CASE("Bad scenes are refused with the file and line", "[cpu]") {
     obj.replace(obj.find("v 1 1 0"), 7, "v 1 inf 0");
     CHECK_THROWS_WITH(loadScene(writeScene("inf", obj)), Contains(":4: vertex coordinate is not a finite number"));
   }
-  SECTION("reflectance of 1 or more") {
-    CHECK_THROWS_WITH(loadScene(writeScene("rho", kQuads, "newmtl white\nKd 1 0.5 0.5\nnewmtl lamp\nKe 1 1 1\n")),
-                      Contains("material 'white': reflectance Kd 1 is >= 1"));
+  SECTION("reflectance above 1") {
+    CHECK_THROWS_WITH(loadScene(writeScene("rho", kQuads, "newmtl white\nKd 1.01 0.5 0.5\nnewmtl lamp\nKe 1 1 1\n")),
+                      Contains("material 'white': reflectance Kd 1.01 is above 1"));
   }
   SECTION("face indexing a missing vertex") {
     CHECK_THROWS_WITH(loadScene(writeScene("index", kQuads + "f 1 2 99\n")), Contains("vertex"));
@@ -86,9 +86,9 @@ TEST_CASE("Degenerate faces are skipped and non-planar ones triangulated, with w
                     "o junk\nusemtl white\nf 9 10 11\nf 12 13 14 15\nf 1 1 2\n";
   Scene s = loadScene(writeScene("repairs", obj));
   REQUIRE(s.warnings.size() == 3);
-  CHECK_THAT(s.warnings[0], Contains(":25: degenerate face"));
-  CHECK_THAT(s.warnings[1], Contains(":26: non-planar polygon split into triangles"));
-  CHECK_THAT(s.warnings[2], Contains(":27: degenerate face"));
+  CHECK_THAT(s.warnings[0].text(), Contains(":25: degenerate face"));
+  CHECK_THAT(s.warnings[1].text(), Contains(":26: non-planar polygon split into triangles"));
+  CHECK_THAT(s.warnings[2].text(), Contains(":27: degenerate face"));
   CHECK(s.polygons().size() == 4);  // floor, lamp, two triangles of the bent quad
 }
 
@@ -96,4 +96,35 @@ TEST_CASE("A scene without emitters is refused before solving", "[cpu]") {
   std::string obj = kQuads;
   obj.replace(obj.find("usemtl lamp"), 11, "usemtl white");
   CHECK_THROWS_AS(validateSolvable(loadScene(writeScene("dark", obj))), InputError);
+}
+
+TEST_CASE("Scene warnings print each of a rare kind, one line for a frequent kind, and at most kWarningLines lines "
+          "with the last counting what is left out",
+          "[cpu]") {
+  // Kind k is seen k % 6 + 1 times; 3 * kWarningLines kinds cannot all fit.
+  std::vector<SceneWarning> warnings;
+  const std::size_t kinds = 3 * kWarningLines;
+  for (std::size_t k = 0; k < kinds; ++k)
+    for (std::size_t i = 0; i <= k % 6; ++i)
+      warnings.push_back({fmt::format("s.obj:{}", 100 * k + i), fmt::format("kind {}", k)});
+  const std::vector<std::string> lines = warningLines(warnings);
+  REQUIRE(lines.size() == kWarningLines);
+  // Walk the kinds in order: each either as its warnings, or one grouped line.
+  std::size_t line = 0, shown = 0, kindsShown = 0;
+  for (std::size_t k = 0; k < kinds; ++k, ++kindsShown) {
+    const std::size_t n = k % 6 + 1, needed = n <= kWarningPlaces ? n : 1;
+    if (line + needed + 1 > kWarningLines) break;  // the last line is the count of the rest
+    if (n <= kWarningPlaces) {
+      for (std::size_t i = 0; i < n; ++i) CHECK(lines[line++] == fmt::format("s.obj:{}: kind {}", 100 * k + i, k));
+    } else {
+      CHECK(lines[line++] == fmt::format("{} faces: kind {} (first at s.obj:{}, s.obj:{}, s.obj:{}, ...)", n, k,
+                                         100 * k, 100 * k + 1, 100 * k + 2));
+    }
+    shown += n;
+  }
+  REQUIRE(line == lines.size() - 1);
+  CHECK(lines.back() == fmt::format("{} more warnings of {} other kinds not shown", warnings.size() - shown,
+                                    kinds - kindsShown));
+  CHECK(withThousands(87432) == "87,432");
+  CHECK(withThousands(999) == "999");
 }

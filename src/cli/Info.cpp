@@ -43,7 +43,7 @@ int runInfo(const InfoOptions& o) {
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);
   fmt::print("warnings     {}\n", scene.warnings.size());
-  for (const auto& w : scene.warnings) fmt::print("  {}\n", w);
+  for (const auto& line : warningLines(scene.warnings)) fmt::print("  {}\n", line);
   fmt::print("\n{:<20} {:>8} {:>12} {:>9}  materials\n", "object", "polygons", "area", "elements");
   for (size_t i = 0; i < rows.size(); ++i) {
     std::string mats;
@@ -51,7 +51,7 @@ int runInfo(const InfoOptions& o) {
     fmt::print("{:<20} {:>8} {:>12.6g} {:>9}  {}\n", scene.objects[i].name, rows[i].polygons, rows[i].area,
                rows[i].elements, mats);
   }
-  if (!emitters) fmt::print("\nno emitter: `hemirad solve` needs a material with Ke > 0 (or Ka with --emission ka)\n");
+  if (!emitters) fmt::print("\nno emitter: {}: `hemirad solve` needs one\n", noEmitterReason(scene));
   return 0;
 }
 

@@ -59,7 +59,7 @@ int runInstantSolve(const SolveOptions& o) {
   const auto start = Clock::now();
   checkInstantInputs(o);
   Scene scene = loadScene(o.scene, o.load);
-  for (const auto& w : scene.warnings) warn(w);
+  printWarnings(scene.warnings);
   checkSolveOutputs(o, scene.sources);
   validateSolvable(scene);
   const Camera camera = resolveCamera(scene, o.camera);

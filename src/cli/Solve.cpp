@@ -228,7 +228,7 @@ int runSolve(const SolveOptions& o) {
   if (!o.resume.empty()) resumed = readCheckpoint(o.resume);
 
   Scene scene = loadScene(o.scene, o.load);
-  for (const auto& w : scene.warnings) warn(w);
+  printWarnings(scene.warnings);
   checkSolveOutputs(o, scene.sources);
   validateSolvable(scene);
   Camera camera = resolveCamera(scene, o.camera);

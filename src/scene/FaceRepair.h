@@ -1,5 +1,6 @@
 // A face read from a scene file (OBJ or glTF) as scene polygons: kept whole when planar and
-// convex, split into triangles with a warning when not, skipped with a warning when degenerate.
+// convex, split into triangles with a warning when not, skipped with a warning when degenerate;
+// a face repeating its vertex cycle (`f 1 2 3 1 2 3`) is read as the single cycle, with a warning.
 #pragma once
 #include <functional>
 #include <string>

@@ -13,6 +13,7 @@
 
 #include "src/base/Error.h"
 #include "src/scene/FaceRepair.h"
+#include "src/scene/SceneFormat.h"
 
 namespace hemirad {
 
@@ -42,6 +43,8 @@ tinygltf::Model readModel(const std::string& path) {
   const bool binary = lower(std::filesystem::path(path).extension().string()) == ".glb";
   const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warning, path)
                          : loader.LoadASCIIFromFile(&model, &err, &warning, path);
+  // tinygltf reads no version: a glTF 1.0 file fails its parse, or loads empty.
+  if (!binary) refuseGltf1(path, ok ? model.asset.version : "");
   if (!ok) fail("{}: {}", path, err.empty() ? std::string("not a glTF 2.0 file") : firstLine(err));
   return model;
 }
@@ -128,15 +131,19 @@ Material toMaterial(const tinygltf::Material& g, std::size_t index, const std::s
   for (int c = 0; c < 3 && std::size_t(c) < g.emissiveFactor.size(); ++c)
     out.emission[c] = finiteFactor(g.emissiveFactor[std::size_t(c)], where, "emissiveFactor") * strength;
   for (int c = 0; c < 3; ++c) {
-    if (out.reflectance[c] >= 1.0)
-      fail("{}: reflectance baseColorFactor {} is >= 1 (no energy would ever be absorbed)", where, out.reflectance[c]);
+    if (out.reflectance[c] > 1.0)
+      fail("{}: reflectance baseColorFactor {} is above 1 (it would reflect more light than it receives)", where,
+           out.reflectance[c]);
     if (out.reflectance[c] < 0.0) fail("{}: reflectance baseColorFactor {} is negative", where, out.reflectance[c]);
     if (out.emission[c] < 0.0) fail("{}: emission {} is negative", where, out.emission[c]);
   }
+  // glTF's default baseColorFactor is 1: a material without one reflects everything.
+  if (glm::any(glm::equal(out.reflectance, glm::dvec3(1.0))))
+    scene.warnings.push_back({where, std::string(kReflectanceOne), "materials"});
   const bool hemiradLightmap = g.extras.Has("hemirad");  // its emissiveTexture is the baked solution
   if ((g.pbrMetallicRoughness.baseColorTexture.index >= 0 || g.emissiveTexture.index >= 0) && !hemiradLightmap)
-    scene.warnings.push_back(where + ": texture ignored: hemirad uses the constant baseColorFactor and emissiveFactor "
-                                     "of each material, never textures");
+    scene.warnings.push_back({where, "texture ignored: hemirad uses the constant baseColorFactor and emissiveFactor of "
+                                     "each material, never textures", "materials"});
   return out;
 }
 
@@ -192,6 +199,34 @@ std::pair<Poly3, std::size_t> fanPolygon(const std::vector<glm::dvec3>& world, c
   return {poly, used};
 }
 
+// Strip and fan indices as a triangle list (glTF 2.0, 3.7.2.1). Strip triangle i is (v_i, v_i+1,
+// v_i+2) with the odd ones reversed, (v_i, v_i+2, v_i+1), so all keep the first one's winding;
+// those repeating an index only stitch strips together and are dropped. Fan triangle i is (v_0,
+// v_i+1, v_i+2), the spec's (v_i+1, v_i+2, v_0) rotated, which fanPolygon joins back into a polygon.
+std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_t>& idx) {
+  if (mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) return idx;
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i + 2 < idx.size(); ++i) {
+    if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+      out.insert(out.end(), {idx[0], idx[i + 1], idx[i + 2]});
+      continue;
+    }
+    const std::uint32_t a = idx[i], b = idx[i + 1 + i % 2], c = idx[i + 2 - i % 2];
+    if (a != b && b != c && a != c) out.insert(out.end(), {a, b, c});
+  }
+  return out;
+}
+
+const char* modeName(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "points";
+    case TINYGLTF_MODE_LINE: return "lines";
+    case TINYGLTF_MODE_LINE_LOOP: return "a line loop";
+    case TINYGLTF_MODE_LINE_STRIP: return "a line strip";
+    default: return "an unknown mode";
+  }
+}
+
 struct Loader {
   const tinygltf::Model& m;
   const std::string& path;
@@ -205,21 +240,22 @@ struct Loader {
     if (index >= 0) fail("{}: a primitive refers to material {} of {}", path, index, materialIds.size());
     if (defaultMaterial < 0) {
       defaultMaterial = scene.addMaterial({"(default)", glm::dvec3(0.5), glm::dvec3(0.0)});
-      scene.warnings.push_back(fmt::format("{}: primitives without a material get reflectance 0.5", path));
+      scene.warnings.push_back({path, "primitives without a material get reflectance 0.5", "scenes"});
     }
     return defaultMaterial;
   }
 
   void primitive(const tinygltf::Primitive& p, const glm::dmat4& world, int object, const std::string& where) {
-    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
-      scene.warnings.push_back(fmt::format("{}: a primitive of mode {} (not triangles) skipped", where, p.mode));
+    if (p.mode != -1 && (p.mode < TINYGLTF_MODE_TRIANGLES || p.mode > TINYGLTF_MODE_TRIANGLE_FAN)) {
+      scene.warnings.push_back({where, fmt::format("{} (mode {}) skipped: hemirad reads only surfaces (triangles, "
+                                                   "strips and fans)", modeName(p.mode), p.mode), "primitives"});
       return;
     }
     auto pos = p.attributes.find("POSITION");
     if (pos == p.attributes.end()) fail("{}: a primitive has no POSITION", where);
     std::vector<glm::dvec3> points = positions(m, pos->second, path);
     for (auto& q : points) q = glm::dvec3(world * glm::dvec4(q, 1.0));
-    const std::vector<std::uint32_t> idx = indices(m, p, points.size(), path);
+    const std::vector<std::uint32_t> idx = triangleList(p.mode, indices(m, p, points.size(), path));
     if (idx.size() % 3) fail("{}: {} indices are not whole triangles", where, idx.size());
     const int mat = material(p.material);
     for (std::size_t t = 0; t < idx.size() / 3;) {
@@ -270,6 +306,7 @@ Scene loadGltf(const std::string& path) {
   const tinygltf::Model model = readModel(path);
   Scene scene;
   scene.path = path;
+  scene.emissionKey = "emissiveFactor";
   scene.sources = {{"the scene", path}};
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   auto external = [&](const std::string& uri) { return !uri.empty() && uri.rfind("data:", 0) != 0; };

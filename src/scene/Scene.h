@@ -9,6 +9,7 @@
 
 #include "src/base/OutputPaths.h"
 #include "src/base/Polygon.h"
+#include "src/scene/Warnings.h"
 
 namespace hemirad {
 
@@ -24,6 +25,10 @@ struct Material {
   glm::dvec3 emission{0.0};     // E, from Ke (or Ka with --emission ka)
   bool emissive() const { return emission.x > 0 || emission.y > 0 || emission.z > 0; }
 };
+
+// The warning for a material with a reflectance channel of exactly 1 (above 1 is refused).
+inline constexpr const char* kReflectanceOne =
+    "reflectance 1: no energy is absorbed there; a closed scene of such materials never converges";
 
 struct SceneObject {
   std::string name;  // OBJ `o`/`g` name
@@ -43,7 +48,8 @@ class Scene {
   std::string path;  // the OBJ it came from ("" for scenes built in code)
   std::vector<Material> materials;
   std::vector<SceneObject> objects;
-  std::vector<std::string> warnings;  // what loading repaired or skipped
+  std::vector<SceneWarning> warnings;  // what loading repaired or skipped (printWarnings groups them)
+  std::string emissionKey = "Ke";       // what E was read from: Ke, Ka (--emission ka), emissiveFactor (glTF)
   // Every file the scene names (the scene, MTLs and their texture maps, glTF buffers and
   // images), with what it is: outputs may never be written over them.
   std::vector<InputPath> sources;

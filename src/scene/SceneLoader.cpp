@@ -19,6 +19,7 @@
 #include "src/scene/FaceRepair.h"
 #include "src/scene/Units.h"
 #include "src/scene/GltfLoader.h"
+#include "src/scene/SceneFormat.h"
 
 namespace hemirad {
 
@@ -129,7 +130,7 @@ struct MtlLines {
   std::map<std::string, std::vector<std::string>> newmtl;              // every definition of a name
   std::map<std::pair<std::string, std::string>, std::string> values;  // (name, key): its line
   std::set<std::pair<std::string, std::string>> grey;  // (name, key) given one value: r = g = b
-  std::vector<std::string> warnings;                   // texture maps, which are not used
+  std::vector<SceneWarning> warnings;                  // texture maps, which are not used
   std::string fallback;
   std::string at(const std::string& name, const std::string& key) const {
     if (auto v = values.find({name, key}); v != values.end()) return v->second;
@@ -172,9 +173,9 @@ MtlLines scanMaterialLines(const std::string& objPath, const ObjLines& lines) {
           std::string file, word;
           while (ss >> word) file = word;  // the map's options come first, its file last
           if (!file.empty()) out.files.push_back({"a texture the scene names", (mtlPath.parent_path() / file).string()});
-          out.warnings.push_back(fmt::format("{}: material '{}': {} texture ignored: hemirad uses the constant Kd/Ke "
-                                             "of each material, never textures",
-                                             where, current, key));
+          const std::string ignored = "texture ignored: hemirad uses the constant Kd/Ke of each material, never textures";
+          out.warnings.push_back({where, fmt::format("material '{}': {} {}", current, key, ignored), "texture maps",
+                                  ignored});
         }
       }
     }
@@ -184,7 +185,8 @@ MtlLines scanMaterialLines(const std::string& objPath, const ObjLines& lines) {
 
 bool finite3(const double* v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
-Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, const MtlLines& mtl) {
+Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, const MtlLines& mtl,
+                    std::vector<SceneWarning>& warnings) {
   const double* e = options.emission == EmissionSource::Ka ? m.ambient : m.emission;
   Material out{m.name, {m.diffuse[0], m.diffuse[1], m.diffuse[2]}, {e[0], e[1], e[2]}};
   const char* eKey = options.emission == EmissionSource::Ka ? "Ka" : "Ke";
@@ -194,12 +196,15 @@ Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, co
   if (!finite3(m.diffuse)) fail("{}: material '{}': Kd is not a finite number", kd, m.name);
   if (!finite3(e)) fail("{}: material '{}': {} is not a finite number", ek, m.name, eKey);
   for (int c = 0; c < 3; ++c) {
-    if (out.reflectance[c] >= 1.0)
-      fail("{}: material '{}': reflectance Kd {} is >= 1 (no energy would ever be absorbed)", kd, m.name,
+    if (out.reflectance[c] > 1.0)
+      fail("{}: material '{}': reflectance Kd {} is above 1 (it would reflect more light than it receives)", kd, m.name,
            out.reflectance[c]);
     if (out.reflectance[c] < 0.0) fail("{}: material '{}': reflectance Kd {} is negative", kd, m.name, out.reflectance[c]);
     if (out.emission[c] < 0.0) fail("{}: material '{}': emission {} {} is negative", ek, m.name, eKey, out.emission[c]);
   }
+  // Exactly 1 (white paper in many models) is physical enough to solve: the light stays in play.
+  if (glm::any(glm::equal(out.reflectance, glm::dvec3(1.0))))
+    warnings.push_back({kd, fmt::format("material '{}': {}", m.name, kReflectanceOne), "materials", kReflectanceOne});
   return out;
 }
 
@@ -231,7 +236,7 @@ void addMaterials(Scene& scene, const tinyobj::ObjReader& reader, const LoadOpti
       fail("{}: material '{}' is defined twice{}", known ? d->second[1] : mtl.fallback, m.name,
            known ? " (first at " + d->second[0] + ")" : "");
     }
-    materialIds[m.name] = scene.addMaterial(toMaterial(m, options, mtl));
+    materialIds[m.name] = scene.addMaterial(toMaterial(m, options, mtl, scene.warnings));
   }
   for (const auto& [name, line] : lines.usemtl)
     if (!materialIds.count(name)) fail("{}:{}: unknown material '{}' (not in the MTL file)", path, line, name);
@@ -262,8 +267,11 @@ static Scene readSceneFile(const std::string& path, const LoadOptions& options) 
   if (!fs::exists(path, ec)) fail("{}: no such file", path);
   if (!fs::is_regular_file(path, ec)) fail("{}: is not a readable file (a folder?)", path);
   if (!std::ifstream(path)) fail("{}: cannot be read", path);
-  if (isGltfPath(path)) return loadGltf(path);
+  if (sceneFormat(path) == SceneFormat::Gltf) return loadGltf(path);
   ObjLines lines = scanLines(path);
+  if (lines.mtllib.empty() && !lines.usemtl.empty())
+    fail("{}:{}: usemtl '{}' but the file names no material library (mtllib)", path, lines.usemtl.front().second,
+         lines.usemtl.front().first);
   const MtlLines mtl = scanMaterialLines(path, lines);
   tinyobj::ObjReader reader;
   readObj(reader, path, lines);
@@ -271,6 +279,7 @@ static Scene readSceneFile(const std::string& path, const LoadOptions& options) 
 
   Scene scene;
   scene.path = path;
+  scene.emissionKey = options.emission == EmissionSource::Ka ? "Ka" : "Ke";
   scene.warnings = mtl.warnings;
   scene.sources = mtl.files;
   scene.sources.insert(scene.sources.begin(), {"the scene", path});
@@ -293,7 +302,7 @@ static Scene readSceneFile(const std::string& path, const LoadOptions& options) 
       if (material < 0) {
         if (defaultMaterial < 0) {
           defaultMaterial = scene.addMaterial({"(default)", glm::dvec3(0.5), glm::dvec3(0.0)});
-          scene.warnings.push_back(fmt::format("{}: faces without a material get reflectance 0.5", where()));
+          scene.warnings.push_back({where(), "faces without a material get reflectance 0.5", "scenes"});
         }
         material = defaultMaterial;
       }
@@ -309,10 +318,17 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
   return scene;
 }
 
+std::string noEmitterReason(const Scene& scene) {
+  if (scene.emissionKey == "emissiveFactor")
+    return "no material has a positive emissiveFactor (times KHR_materials_emissive_strength's emissiveStrength)";
+  if (scene.emissionKey == "Ka")
+    return "no material has a positive Ka (read for --emission ka; without it lights come from Ke)";
+  return "no material has a positive Ke (use --emission ka if lights are given by Ka)";
+}
+
 void validateSolvable(const Scene& scene) {
   if (scene.polygons().empty()) fail("{}: the scene has no faces with area", scene.path);
-  if (!(scene.emittedPower() > 0))
-    fail("{}: no emitter: no material has a positive Ke (use --emission ka if lights are given by Ka)", scene.path);
+  if (!(scene.emittedPower() > 0)) fail("{}: no emitter: {}", scene.path, noEmitterReason(scene));
 }
 
 }  // namespace hemirad

@@ -18,5 +18,7 @@ Scene loadScene(const std::string& objPath, const LoadOptions& options = {});
 
 // Checks that the scene can be solved: it has polygons and at least one emitter.
 void validateSolvable(const Scene& scene);
+// Why a scene has no emitter, in the terms of what its E was read from (Ke, Ka or glTF's emissiveFactor).
+std::string noEmitterReason(const Scene& scene);
 
 }  // namespace hemirad

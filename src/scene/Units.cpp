@@ -21,9 +21,9 @@ void normalizeUnits(Scene& scene) {
   const double factor = std::ldexp(1.0, -std::ilogb(diagonal));  // diagonal x factor in [1, 2)
   scene.rescale(factor);
   scene.unitScale *= factor;
-  scene.warnings.push_back(fmt::format("{}: the scene's size {:g} is far from 1: solved in units {:g} times the file's "
-                                       "(exact: a power of two); outputs are in the file's units",
-                                       scene.path, diagonal, factor));
+  scene.warnings.push_back({scene.path, fmt::format("the scene's size {:g} is far from 1: solved in units {:g} times "
+                                                    "the file's (exact: a power of two); outputs are in the file's units",
+                                                    diagonal, factor)});
 }
 
 Camera toSceneUnits(const Scene& scene, Camera c) {

@@ -207,7 +207,7 @@ int runValidate(const ValidateOptions& o) {
   if (!o.report.empty()) checkWritable(o.report, "--report");
   if (!o.figures.empty()) prepareFigureFolder(o.figures);
   Scene scene = loadScene(o.scene, o.load);
-  for (const auto& w : scene.warnings) warn(w);
+  printWarnings(scene.warnings);
   if (scene.polygons().empty()) fail("{}: the scene has no faces with area", o.scene);
   Camera camera = resolveCamera(scene, o.camera);
   auto backend = gl::createBackend(o.backend);

@@ -212,7 +212,7 @@ int runView(ViewerOptions o) {
   o.backend.kind = gl::parseBackendKind(o.backendName);
   // Bad input fails here, before any window, as it does for `solve`.
   Scene scene = loadScene(o.scene, o.load);
-  for (const auto& w : scene.warnings) warn(w);
+  printWarnings(scene.warnings);
   validateSolvable(scene);
   const Camera start = resolveCamera(scene, o.camera);
   const double speed = 0.3 * glm::length(scene.boundsMax() - scene.boundsMin());  // scene units per second
