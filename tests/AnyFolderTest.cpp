@@ -12,7 +12,7 @@ using namespace hemirad;
 using Catch::Contains;
 namespace fs = std::filesystem;
 
-TEST_CASE("bench and experiment run from an empty folder, finding the shipped scenes beside the binary; experiment's "
+TEST_CASE("bench and experiment run from an empty folder, finding the shipped scenes beside the binary, and experiment's "
           "default output is a new folder, never an earlier run's", "[heavy][gl][cli]") {
   const std::string dir = test::tempPath("elsewhere");
   fs::create_directories(dir);

@@ -118,7 +118,7 @@ TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint
   CHECK_THAT(needs.output, Contains("--checkpoint"));
 }
 
-TEST_CASE("A checkpoint that names the orthographic projection by its old name stereographic resumes; another "
+TEST_CASE("A checkpoint that names the orthographic projection by its old name stereographic resumes, and another "
           "projection is refused",
           "[cpu][checkpoint]") {
   const nlohmann::json current = {{"scene_hash", "00ff"}, {"projection", "orthographic"}, {"item_resolution", 128}};

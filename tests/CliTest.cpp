@@ -98,7 +98,7 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
   }
 }
 
-TEST_CASE("The orthographic map's old name, --hemisphere stereographic, gives its bitwise result with a warning; "
+TEST_CASE("The orthographic map's old name, --hemisphere stereographic, gives its bitwise result with a warning, and "
           "conformal and equal-area give others",
           "[cli]") {
   auto solve = [](const std::string& flags) {

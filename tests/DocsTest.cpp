@@ -65,3 +65,12 @@ TEST_CASE("Every NAME.md#anchor in the docs, the README and the code names a hea
     }
   CHECK(checked > 20);
 }
+
+TEST_CASE("No test name holds a semicolon, which ctest's discovery splits into two tests that both fail", "[cpu]") {
+  const auto& tests = Catch::getRegistryHub().getTestCaseRegistry().getAllTests();
+  CHECK(tests.size() > 100);
+  for (const Catch::TestCase& t : tests) {
+    INFO(t.name);
+    CHECK(t.name.find(';') == std::string::npos);
+  }
+}

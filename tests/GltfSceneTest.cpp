@@ -214,7 +214,7 @@ std::vector<Poly3> specTriangles(int mode, const std::vector<glm::vec3>& points,
 }
 }  // namespace
 
-TEST_CASE("glTF triangle strips and fans, indexed or not, load as their triangles with the spec's winding; points and "
+TEST_CASE("glTF triangle strips and fans, indexed or not, load as their triangles with the spec's winding, and points and "
           "lines are skipped with a warning",
           "[cpu]") {
   tinygltf::Model m;

@@ -21,11 +21,6 @@ using hemirad::test::count;
 namespace fs = std::filesystem;
 
 namespace {
-std::string bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 std::size_t entries(const std::string& dir) {
   return std::size_t(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
 }
@@ -43,7 +38,7 @@ TEST_CASE("Bad input: --checkpoint must end in .ckpt and never names the scene, 
           "[cli][bad-input]") {
   const std::string obj = writeScene("ckpt-input", kQuad + "f 1 2 3 4\n");
   const std::string dir = fs::path(obj).parent_path(), mtl = dir + "/m.mtl";
-  const std::string objBefore = bytes(obj), mtlBefore = bytes(mtl);
+  const std::string objBefore = test::readText(obj), mtlBefore = test::readText(mtl);
   fs::create_symlink(obj, dir + "/scene.ckpt");
   fs::create_symlink(mtl, dir + "/material.ckpt");
   for (auto [flags, message] :
@@ -57,8 +52,8 @@ TEST_CASE("Bad input: --checkpoint must end in .ckpt and never names the scene, 
     CHECK(run.exitCode == 2);
     CHECK(count(run.output, "hemirad: error:") == 1);
     CHECK_THAT(run.output, Contains(message));
-    CHECK(bytes(obj) == objBefore);
-    CHECK(bytes(mtl) == mtlBefore);
+    CHECK(test::readText(obj) == objBefore);
+    CHECK(test::readText(mtl) == mtlBefore);
     CHECK(!fs::exists(dir + "/x.exr"));
   }
   // Resuming from a checkpoint and writing it again is how a long run goes on: allowed.
@@ -135,7 +130,7 @@ TEST_CASE("--gltf to a stream writes the .glb alone, its lightmap inside, and no
   test::Run run = test::shell("$HEMIRAD " + solve(obj) + " --gltf /dev/stdout > " + got);
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
-  const std::string glb = bytes(got);
+  const std::string glb = test::readText(got);
   CHECK(glb.rfind("glTF", 0) == 0);
   CHECK(glb.find("\x89PNG") != std::string::npos);  // the lightmap, embedded
   CHECK(!fs::exists("/dev/stdout.lightmap.exr"));
