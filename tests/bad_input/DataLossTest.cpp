@@ -124,7 +124,7 @@ TEST_CASE("A run whose disk fills up leaves none of its outputs, not even the on
   CHECK(left == 0);
 }
 
-TEST_CASE("--gltf to a stream writes the .glb alone, its lightmap inside, and no sidecar file", "[cli]") {
+TEST_CASE("A --gltf to a stream writes the .glb alone, its lightmap inside, and no sidecar file", "[cli]") {
   const std::string obj = writeScene("gltf-stream", kQuad + "f 1 2 3 4\n");
   const std::string got = test::tempPath("stream.glb");
   test::Run run = test::shell("$HEMIRAD " + solve(obj) + " --gltf /dev/stdout > " + got);
