@@ -168,8 +168,9 @@ TEST_CASE("A face repeating its vertex cycle is read once with one warning: the 
     test::Run run = test::hemirad("solve " + obj + " --elements 600 --shots 150 --quiet --report " + report);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
+    const nlohmann::json r = test::readJson(report);
     std::vector<double> h;  // [shots, convergence] where each pass began
-    for (const auto& entry : test::readJson(report)["convergence_history"]) h.push_back(entry[1].get<double>());
+    for (const auto& entry : r["convergence_history"]) h.push_back(entry[1].get<double>());
     return h;
   };
   const std::vector<double> history = convergence(thrice);
