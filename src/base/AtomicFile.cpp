@@ -89,8 +89,7 @@ void writeThrough(const std::string& path, const std::function<void(const std::s
 }
 }  // namespace
 
-// The file a chain of symlinks names, even when it does not exist yet (a dangling link).
-static fs::path followLinks(fs::path p) {
+fs::path followLinks(fs::path p) {
   std::error_code ec;
   for (int hop = 0; hop < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++hop) {
     fs::path target = fs::read_symlink(p, ec);

@@ -5,6 +5,7 @@
 // and close is checked: a full disk is an error naming the path and the reason, never a
 // truncated file.
 #pragma once
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -53,6 +54,8 @@ void checkWritable(const std::string& path, const std::string& flag);
 // (isStream: /dev/stdout, a FIFO) always: it gets the flag's first format.
 void checkExtension(const std::string& path, const std::string& flag, const std::vector<std::string>& extensions,
                     bool stdoutOk = false);
+// The file a chain of symlinks names, even when it does not exist yet (a dangling link).
+std::filesystem::path followLinks(std::filesystem::path p);
 // True for an existing path that is not a regular file or folder: a FIFO, a device, a socket.
 bool isStream(const std::string& path);
 

@@ -32,13 +32,7 @@ std::optional<std::string> identity(const std::string& path) {
   }
   if (path == "-") return "stdout";
   std::error_code ec;
-  fs::path p = fs::absolute(path, ec);
-  for (int hop = 0; hop < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++hop) {  // a dangling link
-    const fs::path target = fs::read_symlink(p, ec);
-    if (ec) break;
-    p = target.is_absolute() ? target : p.parent_path() / target;
-  }
-  return "path " + fs::weakly_canonical(p, ec).string();
+  return "path " + fs::weakly_canonical(followLinks(fs::absolute(path, ec)), ec).string();  // a dangling link too
 }
 
 }  // namespace
