@@ -57,3 +57,37 @@ TEST_CASE("The progress bar line never exceeds the terminal width", "[cpu]") {
     if (columns >= 80) CHECK(line.find("ETA 1h02m") != std::string::npos);
   }
 }
+
+// A recorded run replayed with a 5 s warm-up (shader compiles in the first pass) and 10 ms a shot
+// after it: the ETA counts the shots' own rate, not the warm-up spread over them, and the shown
+// fraction never falls when the model revises the total up (as its raw share does on four_boxes).
+TEST_CASE("The ETA leaves the first pass's warm-up out and the progress fraction never goes backwards", "[cpu]") {
+  const char* file = GENERATE("tests/data/convergence_cornell_1500.json", "tests/data/convergence_four_boxes_1000.json");
+  INFO(file);
+  const nlohmann::json run = test::readJson(test::sourcePath(file));
+  const std::vector<double> h = run["convergence_history"].get<std::vector<double>>();
+  StopRule stop;
+  stop.targetConvergence = run["target_convergence"];
+  Progress progress(stop, false);
+  EtaModel raw;  // the model alone, for the raw share
+  const double total = double(h.size() - 1), warmUp = 5.0, perShot = 0.01;
+  double shown = 0, rawPrevious = 0, firstRatio = NAN;
+  bool rawFell = false;
+  for (std::size_t n = 16; n + 1 < h.size(); n += 16) {
+    const Progress::Estimate e = progress.observe({unsigned(n), h[n], false}, warmUp + perShot * double(n));
+    CHECK(e.fraction >= shown);
+    shown = e.fraction;
+    raw.add(unsigned(n), h[n]);
+    if (auto left = raw.shotsLeft(stop.targetConvergence)) {
+      const double share = double(n) / (double(n) + *left);
+      rawFell = rawFell || share < rawPrevious;
+      rawPrevious = share;
+    }
+    if (std::isnan(firstRatio) && double(n) >= 0.1 * total && std::isfinite(e.secondsLeft))
+      firstRatio = e.secondsLeft / (perShot * (total - double(n)));
+  }
+  INFO("first ETA after 10 % of the run / the real time left: " << firstRatio);
+  if (std::string(file).find("four_boxes") != std::string::npos) CHECK(rawFell);  // the clamp has work to do
+  CHECK(firstRatio > 0.5);
+  CHECK(firstRatio < 1.5);  // with the warm-up spread over the shots it was 5x
+}

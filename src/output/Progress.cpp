@@ -51,7 +51,9 @@ Progress::Estimate Progress::estimate(const SolveStatus& s, double elapsed) cons
     if (auto model = model_.shotsLeft(stop_.targetConvergence)) left = std::min(left, *model);
   if (!std::isfinite(left)) return {0.0, NAN};
   left = std::max(left, 0.0);
-  return {double(s.shots) / (s.shots + left), left * elapsed / s.shots};
+  const bool warmedUp = firstShots_ > 0 && s.shots > firstShots_;
+  const double perShot = warmedUp ? (elapsed - firstSeconds_) / double(s.shots - firstShots_) : elapsed / s.shots;
+  return {std::max(shownFraction_, double(s.shots) / (s.shots + left)), left * perShot};
 }
 
 std::string Progress::barLine(const SolveStatus& s, const Estimate& e, double elapsed, int columns) const {
@@ -65,17 +67,24 @@ std::string Progress::barLine(const SolveStatus& s, const Estimate& e, double el
   return "[" + std::string(std::size_t(filled), '#') + std::string(std::size_t(width - filled), '.') + "]" + tail;
 }
 
+Progress::Estimate Progress::observe(const SolveStatus& s, double elapsed) {
+  model_.add(s.shots, s.convergence);
+  if (firstShots_ == 0 && s.shots > 0) firstShots_ = s.shots, firstSeconds_ = elapsed;
+  const Estimate e = estimate(s, elapsed);
+  shownFraction_ = e.fraction;
+  return e;
+}
+
 void Progress::update(const SolveStatus& s) {
   if (!enabled_) return;
-  model_.add(s.shots, s.convergence);
+  const double t = elapsedSeconds();
+  const Estimate e = observe(s, t);
   auto now = std::chrono::steady_clock::now();
   if (now - lastDraw_ < (tty_ ? std::chrono::duration_cast<std::chrono::milliseconds>(kTtyInterval)
                               : std::chrono::duration_cast<std::chrono::milliseconds>(kPlainInterval)) &&
       !(tty_ && s.done && drawn_))
     return;
   lastDraw_ = now;
-  const double t = elapsedSeconds();
-  const Estimate e = estimate(s, t);
   if (tty_) {
     const int columns = terminalColumns();
     const std::string line = barLine(s, e, t, columns);

@@ -24,7 +24,13 @@ class Progress {
   struct Estimate {
     double fraction = 0, secondsLeft = NAN;
   };
+  // Seconds a shot takes are measured from the first status on: the first pass carries shader
+  // compiles and uploads (warm-up), which extrapolated over the run promised hours for minutes.
+  // The fraction never goes backwards: a model revising its total down shows no progress lost.
   Estimate estimate(const SolveStatus& status, double elapsed) const;
+  // Takes a status `elapsed` seconds into the run into the model; the estimate to show (update's
+  // first step, public for the tests).
+  Estimate observe(const SolveStatus& status, double elapsed);
   // The bar line for `columns` terminal columns (never wider).
   std::string barLine(const SolveStatus& status, const Estimate& e, double elapsed, int columns) const;
 
@@ -32,6 +38,8 @@ class Progress {
   StopRule stop_;
   bool enabled_, tty_;
   EtaModel model_;
+  unsigned firstShots_ = 0;  // the first status seen: shots and seconds, where the rate starts
+  double firstSeconds_ = 0, shownFraction_ = 0;
   std::chrono::steady_clock::time_point start_, lastDraw_;
   bool drawn_ = false;
 };
