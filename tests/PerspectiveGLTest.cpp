@@ -160,7 +160,7 @@ TEST_CASE("Along a walk through the doors of four rooms, perspective-driven shoo
   const Atlas atlas = buildAtlas(s, texelSizeForElements(s, 600), 4096);
   ProgressiveSettings settings;
   settings.shootersPerPass = 8, settings.itemSubdivision = 1, settings.itemResolution = 64;
-  ConvergedViews converged(s, atlas, settings, 0.95);
+  ConvergedViews converged(s, atlas, settings, 0.95, false);
   WalkthroughOptions w;
   w.fps = 0.5, w.frameShots = 16, w.width = w.height = 32, w.ambient = false;
   std::vector<FrameRecord> frames[2];

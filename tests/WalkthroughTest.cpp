@@ -58,7 +58,7 @@ TEST_CASE("Malformed camera paths name the file, the line and the problem", "[cp
   CHECK_THROWS_AS(readCameraPath("/no/such.path", base), InputError);
 }
 
-TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly with shots per frame",
+TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly with shots per frame, and shows its progress",
           "[heavy][cli][walkthrough]") {
   const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
   const std::string path = test::writeTempFile("turn.path", "0 eye=278,273,-800 target=278,273,0 fov=39.3\n0.5 fov=39.3\n1 target=556,0,559.2 fov=20\n");
@@ -69,7 +69,7 @@ TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly wi
     const std::string a = test::tempPath("walk_a_" + algorithm), b = test::tempPath("walk_b_" + algorithm);
     const std::string flags = " --elements 600 --algorithm " + algorithm + " --camera-path " + path +
                               " --fps 4 --frame-shots 12 --shooters-per-pass 4 --item-res 128 --width 48 --height 48 "
-                              "--reference-convergence 0.9 --quiet";
+                              "--reference-convergence 0.9" + std::string(twice ? " --quiet" : "");
     test::Run run = test::shell("$HEMIRAD solve " + scene + flags + " --frames " + a +
                                 (twice ? " && $HEMIRAD solve " + scene + flags + " --frames " + b : std::string()));
     INFO(run.output);
@@ -84,6 +84,10 @@ TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly wi
       for (std::size_t c : kReproducibleColumns) CHECK(rows[f + 1][c] == again[f + 1][c]);
     }
     CHECK(std::stoul(rows[5][3]) > std::stoul(rows[1][3]));
+    if (!twice) {  // not silent for minutes: the reference solve and the frames report progress
+      CHECK(run.output.find("hemirad: the reference solve, to convergence 0.9") != std::string::npos);
+      CHECK(run.output.find("hemirad: frame 5 of 5") != std::string::npos);
+    }
     // While the camera stands still (0 to 0.5 s), more of the light it sees arrives.
     CHECK(std::stod(rows[3][7]) > std::stod(rows[1][7]));
     CHECK(std::stod(rows[3][8]) < std::stod(rows[1][8]));

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <ctime>
+#include <utility>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -17,6 +18,7 @@
 #include "src/cli/Options.h"
 #include "src/base/Error.h"
 #include "src/solver/Control.h"
+#include "src/output/Progress.h"
 #include "src/output/Provenance.h"
 #include "src/output/Report.h"
 #include "src/scene/SceneLoader.h"
@@ -39,12 +41,21 @@ struct BenchRow {
   std::vector<ObjectRadiosity> objects;  // for comparing backends (--compare)
 };
 
-// Runs to the stop rule; returns the wall time of the shots (setup excluded).
-double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveStatus& status) {
+// Runs to the stop rule; returns the wall time of the shots (setup excluded). Given the stop rule,
+// shows the bar (or a line every few seconds) after each batch: a row can take many minutes.
+double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveStatus& status,
+                 const StopRule* progress = nullptr) {
   backend.finish();
+  Progress bar(progress ? *progress : StopRule{}, progress != nullptr);
   auto t0 = Clock::now();
-  status = advanceToStop(solver, status);
+  unsigned batch = 1;
+  while (!status.done) {  // one batch at a time, sized as advanceWhile sizes them
+    bool once = true;
+    status = advanceWhile(solver, status, batch, [&] { return std::exchange(once, false); });
+    bar.update(status);
+  }
   backend.finish();
+  bar.finish();
   return msSince(t0);
 }
 
@@ -79,7 +90,7 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   ProgressiveSolver solver(state, settings);
   if (solver.viewDriven()) solver.look(camera, 1.0);
   SolveStatus status;
-  row.solveMs = runToStop(backend, solver, status);
+  row.solveMs = runToStop(backend, solver, status, &settings.stop);
   if (const std::optional<double> freeAfter = backend.freeMemoryMiB(); freeBefore && freeAfter)
     row.gpuMemoryMiB = *freeBefore - *freeAfter;
   row.shots = status.shots;

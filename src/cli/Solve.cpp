@@ -65,7 +65,8 @@ int runWalkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas
   WalkthroughOptions w = o.walkthrough;
   w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient, w.exposure = o.exposure;
   w.writeFrame = writePng;
-  ConvergedViews converged(scene, atlas, o.progressive, o.referenceConvergence);
+  w.progress = o.progress;
+  ConvergedViews converged(scene, atlas, o.progressive, o.referenceConvergence, o.progress);
   const std::vector<FrameRecord> frames = walk(solver, state, path, converged, w);
   writeFramesCsv(w.framesDir + "/frames.csv", frames);
   const FrameRecord& last = frames.back();

@@ -3,22 +3,52 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 #include <fmt/format.h>
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
+#include "src/output/Progress.h"
 
 namespace hemirad {
 
-ConvergedViews::ConvergedViews(const Scene& scene, const Atlas& atlas, ProgressiveSettings settings, double convergence)
+ConvergedViews::ConvergedViews(const Scene& scene, const Atlas& atlas, ProgressiveSettings settings, double convergence,
+                               bool progress)
     : state_(scene, atlas), renderer_(state_) {
   settings.algorithm = Algorithm::Progressive;
   settings.stop = {0, convergence};
   ProgressiveSolver solver(state_, settings);
+  if (progress) fmt::print(stderr, "hemirad: the reference solve, to convergence {}\n", convergence);
+  Progress bar(settings.stop, progress);
   SolveStatus status;
-  while (!status.done) status = solver.advance(1024);
+  unsigned batch = 1;
+  while (!status.done) {  // one batch at a time (sized as advanceWhile sizes them), the bar after each
+    bool once = true;
+    status = advanceWhile(solver, status, batch, [&] { return std::exchange(once, false); });
+    bar.update(status);
+  }
+  bar.finish();
   shots_ = status.shots;
 }
+
+namespace {
+// "frame k of n" on stderr, at most every few seconds: a walkthrough of minutes is not silent.
+class FrameProgress {
+ public:
+  FrameProgress(int frames, bool enabled) : frames_(frames), enabled_(enabled) {}
+  void frameDone(int frame) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!enabled_ || (now - last_ < std::chrono::seconds(3) && frame + 1 < frames_)) return;
+    last_ = now;
+    fmt::print(stderr, "hemirad: frame {} of {}\n", frame + 1, frames_);
+  }
+
+ private:
+  int frames_;
+  bool enabled_;
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+}  // namespace
 
 std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, const CameraPath& path,
                               ConvergedViews& converged, const WalkthroughOptions& o) {
@@ -29,6 +59,7 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
   const double aspect = double(o.width) / o.height;
   const int frames = int(std::floor(path.duration() * o.fps + 1e-9)) + 1;
   std::vector<FrameRecord> records;
+  FrameProgress progress(frames, o.progress);
   double solveMs = 0, scale = 0;
   SolveStatus status = solver.advance(0);
   Camera last;
@@ -74,6 +105,7 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
       o.writeFrame(fmt::format("{}/frame_{:04d}.png", o.framesDir, f), shown, scale);
     }
     records.push_back(r);
+    progress.frameDone(f);
   }
   return records;
 }

@@ -22,6 +22,7 @@ struct WalkthroughOptions {
   bool ambient = true;         // seed 004's display-only ambient term on the frames
   double exposure = 0;         // stops over the automatic exposure of the first converged frame
   std::string framesDir;       // frame_NNNN.png per frame (empty: none), written by writeFrame
+  bool progress = false;       // a line on stderr every few seconds: frame k of n
   // (writePng of output/ImageFile.h: passed in, so walkthroughs need no image library).
   std::function<void(const std::string& path, const Image& image, double exposureScale)> writeFrame;
 };
@@ -43,7 +44,9 @@ struct FrameRecord {
 // The converged solution (progressive refinement), rendered from any camera: the reference.
 class ConvergedViews {
  public:
-  ConvergedViews(const Scene& scene, const Atlas& atlas, ProgressiveSettings settings, double convergence);
+  // The reference solve shows the progress bar when `progress` (it can take minutes).
+  ConvergedViews(const Scene& scene, const Atlas& atlas, ProgressiveSettings settings, double convergence,
+                 bool progress);
   Image render(const Camera& camera, int width, int height, int supersample) { return renderer_.render(camera, width, height, supersample); }
   unsigned shots() const { return shots_; }
 
