@@ -3,7 +3,9 @@
 
 hemirad computes the data and runs this script (installed as share/hemirad/python/plot.py); the
 figures are drawn by matplotlib (Debian python3-matplotlib). Output is deterministic: fixed SVG
-hash salt, no dates, so the same data gives the same bytes. Every figure carries the run's
+hash salt, no dates, so the same data gives the same bytes. Fonts travel with the figure (SVG text
+as outlines, TrueType embedded in the PDF), and the title lives only in the metadata: a paper's
+caption names the figure. Every figure carries the run's
 provenance (version, git hash, command line, backend, renderer) in its SVG and PDF metadata.
 
   plot.py --check        exits 0 if matplotlib imports (hemirad's check before long work)
@@ -21,7 +23,7 @@ import sys
 def setup():
     import matplotlib
     matplotlib.use("svg")  # no display; PDF comes from the same figure
-    matplotlib.rcParams.update({"svg.hashsalt": "hemirad", "svg.fonttype": "none", "pdf.fonttype": 42,
+    matplotlib.rcParams.update({"svg.hashsalt": "hemirad", "svg.fonttype": "path", "pdf.fonttype": 42,
                                 "font.family": "DejaVu Sans", "font.size": 9, "figure.dpi": 100,
                                 "path.simplify": False})
     return matplotlib
@@ -77,8 +79,7 @@ def draw(spec):
     from matplotlib.figure import Figure
     width, height = spec.get("size", [6.4, 4.2])
     fig = Figure(figsize=(width, height), layout="constrained")
-    (lines if spec["kind"] == "lines" else heatmap)(fig, spec)
-    fig.suptitle(spec["title"], fontsize=10)
+    (lines if spec["kind"] == "lines" else heatmap)(fig, spec)  # no title drawn: the caption's job
     meta = {"Title": spec["title"], "Creator": "hemirad", "Description": spec["provenance"]}
     fig.savefig(spec["svg"], format="svg", metadata={**meta, "Date": None})
     fig.savefig(spec["pdf"], format="pdf", metadata={"Title": spec["title"], "Creator": "hemirad",

@@ -117,6 +117,7 @@ void Commands::addValidate() {
   add(v, "--shooters", shooters);
   add(v, "--item-res", validate.itemResolutions);
   add(v, "--figures", validate.figures);
+  add(v, "--figure-size", validate.figureSize);
   add(v, "--camera", validate.camera);
   add(v, "--hemisphere", validateProjections);
   add(v, "--backend", validateBackend);
@@ -207,6 +208,7 @@ void Commands::addComparison() {
   add(c, "--item-subdiv", m.progressive.itemSubdivision);
   add(c, "--seed", m.seed);
   add(c, "--out-dir", m.out);
+  add(c, "--figure-size", m.figureSize);
   add(c, "--backend", m.backendName);
   add(c, "--gpu", m.backend.gpu);
 }
@@ -251,6 +253,7 @@ void Commands::addVplError() {
   add(c, "--width", v.width);
   add(c, "--height", v.height);
   add(c, "--out-dir", v.out);
+  add(c, "--figure-size", v.figureSize);
   add(c, "--image", v.sideBySide);  // instant (the largest VPL count) | progressive, side by side
   add(c, "--backend", v.backendName);
   add(c, "--gpu", v.backend.gpu);

@@ -254,6 +254,10 @@ std::vector<Flag> frameAndCommandFlags() {
            },
            "")},
       {"--figures", "DIR", "Write plots, CSV, heat maps and index.html into this folder", none},
+      {"--figure-size", "SIZE",
+       "Figures for papers: column (3.5 x 2.6 in), page (7 x 4.2 in) or W,H in inches; fonts embedded, titles in "
+       "the metadata, not drawn",
+       none, "6.4,4.2 (maps 6.4,5.4)"},
       {"--solution", "", "Also compare a converged GPU solution with the dense exact one (up to 5,000 elements)",
        none},
       // bench.

@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <cstdlib>
 #include <filesystem>
@@ -63,6 +64,18 @@ std::string tempName(const std::string& path) {
 
 }  // namespace
 
+FigureSize parseFigureSize(const std::string& text) {
+  if (text.empty()) return {};
+  if (text == "column") return {3.5, 2.6};
+  if (text == "page") return {7.0, 4.2};
+  double w = 0, h = 0;
+  char comma = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%lf %c %lf %c", &w, &comma, &h, &extra) == 3 && comma == ',' && w >= 1 && h >= 1 &&
+      w <= 40 && h <= 40)
+    return {w, h};
+  fail("--figure-size {}: give column, page or W,H in inches (each 1 to 40)", text);
+}
+
 void checkPlotting() {
   static bool checked = false;
   if (checked) return;
@@ -92,7 +105,7 @@ void Figures::add(const std::string& stem, const HeatMap& map) {
     rows.push_back(std::move(row));
   }
   nlohmann::json spec{{"kind", "heatmap"}, {"title", map.title}, {"values", rows}, {"colour_label", map.colourLabel},
-                      {"log", map.log}, {"vmin", map.vmin}, {"vmax", map.vmax}, {"size", {6.4, 5.4}}};
+                      {"log", map.log}, {"vmin", map.vmin}, {"vmax", map.vmax}};
   if (!map.classes.empty()) {
     spec["classes"] = nlohmann::json::array();
     for (const auto& [label, colour] : map.classes) spec["classes"].push_back({{"label", label}, {"colour", colour}});
@@ -110,6 +123,8 @@ void Figures::write() {
   for (std::size_t i = 0; i < stems_.size(); ++i) {
     nlohmann::json& spec = specs_[i];
     spec["provenance"] = provenance;
+    if (size_.width > 0) spec["size"] = {size_.width, size_.height};
+    else spec["size"] = spec["kind"] == "heatmap" ? nlohmann::json{6.4, 5.4} : nlohmann::json{6.4, 4.2};
     for (const char* ext : {"svg", "pdf"}) {
       const std::string path = stems_[i] + "." + ext;
       renames.emplace_back(tempName(path), path);

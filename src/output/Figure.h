@@ -40,10 +40,19 @@ struct HeatMap {
 // (default: the system's python3, where Debian's python3-matplotlib lives).
 void checkPlotting();
 
+// A figure's size in inches (`--figure-size`): `column` (3.5 x 2.6, one column of a two-column
+// paper), `page` (7 x 4.2, the full text width) or `W,H`. Unset: 6.4 x 4.2 (plots), 6.4 x 5.4 (maps).
+struct FigureSize {
+  double width = 0, height = 0;  // 0: each kind's default
+};
+// InputError (naming --figure-size) for anything else; "" is the default.
+FigureSize parseFigureSize(const std::string& text);
+
 // A batch of figures drawn by one run of the script (matplotlib's import is most of its cost).
+// Figures carry no title inside (a paper's caption says it): the title is in the file's metadata.
 class Figures {
  public:
-  explicit Figures(Provenance provenance) : provenance_(std::move(provenance)) {}
+  explicit Figures(Provenance provenance, FigureSize size = {}) : provenance_(std::move(provenance)), size_(size) {}
   void add(const std::string& stem, const LinePlot& plot);
   void add(const std::string& stem, const HeatMap& map);
   // Draws them all; every STEM.svg and STEM.pdf appears whole or not at all.
@@ -51,6 +60,7 @@ class Figures {
 
  private:
   Provenance provenance_;
+  FigureSize size_;
   std::vector<std::string> stems_;
   std::vector<nlohmann::json> specs_;  // each figure, without its output paths
 };

@@ -1,5 +1,7 @@
 #include "src/validate/Validate.h"
 
+#include "src/output/Figure.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/base/AtomicFile.h"
+#include "src/output/Figure.h"
 #include "src/output/Provenance.h"
 #include "src/scene/Camera.h"
 #include "src/validate/DenseSolver.h"
@@ -206,6 +209,7 @@ std::string configName(const LevelStats& s) {
 int runValidate(const ValidateOptions& o) {
   if (!o.report.empty()) checkWritable(o.report, "--report");
   if (!o.figures.empty()) prepareFigureFolder(o.figures);
+  parseFigureSize(o.figureSize);  // a bad size fails before the reference
   Scene scene = loadScene(o.scene, o.load);
   printWarnings(scene.warnings);
   if (scene.polygons().empty()) fail("{}: the scene has no faces with area", o.scene);

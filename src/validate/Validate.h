@@ -29,6 +29,7 @@ struct ValidateOptions {
   gl::BackendOptions backend;
   std::optional<std::string> camera;  // for the camera-view figures
   std::string report, figures;
+  std::string figureSize;  // --figure-size (parseFigureSize)
   bool solution = false;           // also compare a converged GPU solve with the dense solution
   double solutionConvergence = 0.999;
 };

@@ -124,7 +124,7 @@ void writeFigures(const std::string& dir, const Scene& scene, const Atlas& atlas
                   const Camera& camera, const ValidateOptions& o, const Validation& v, const Provenance& provenance) {
   const std::string title = std::filesystem::path(o.scene).filename().string();
   const int low = o.levels.front(), high = o.levels.back();
-  Figures figures(provenance);
+  Figures figures(provenance, parseFigureSize(o.figureSize));
   addLevelPlots(figures, dir, title, v);
   const std::vector<int> lowClasses = classify(atlas, v, 0), highClasses = classify(atlas, v, 1);
   figures.add(dir + fmt::format("/atlas_visibility_L{}", low),

@@ -167,6 +167,7 @@ int runExperiment(ExperimentOptions o) {
   o.backend.kind = gl::parseBackendKind(o.backendName);
   for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
   if (o.figures) checkPlotting();
+  parseFigureSize(o.figureSize);  // a bad size fails before the solves
   auto backend = gl::createBackend(o.backend);
   std::vector<Run> runs;
   std::vector<std::string> names;
@@ -208,7 +209,7 @@ int runExperiment(ExperimentOptions o) {
     }
   writeTextFile(o.out + "/events.csv", csv);
   if (o.figures) {
-    Figures figures(provenance(backend->name(), backend->renderer()));
+    Figures figures(provenance(backend->name(), backend->renderer()), parseFigureSize(o.figureSize));
     for (const std::string& name : names) plotScene(figures, o.out, name, runs);
     figures.write();
   }

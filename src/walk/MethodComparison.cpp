@@ -64,7 +64,7 @@ int runMethodComparison(MethodComparisonOptions o) {
   for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
   checkPlotting();
   auto backend = gl::createBackend(o.backend);
-  Figures figures(provenance(backend->name(), backend->renderer()));
+  Figures figures(provenance(backend->name(), backend->renderer()), parseFigureSize(o.figureSize));
   std::filesystem::create_directories(o.out);
   std::string summary = fmt::format("# Error against solver time: progressive vs stochastic ({}, {})\n\n"
                                     "| scene | elements | method | shots / iterations | solver ms | RMS error / mean (non-emitters) |\n"

@@ -21,6 +21,7 @@ struct MethodComparisonOptions {
   ProgressiveSettings progressive;       // item buffer, shooters per pass (also the stochastic K)
   std::uint32_t seed = 1;
   std::string out;  // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
+  std::string figureSize;  // --figure-size (parseFigureSize)
   gl::BackendOptions backend;
   std::string backendName = "osmesa";
 };

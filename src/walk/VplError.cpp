@@ -75,6 +75,7 @@ int runVplError(VplErrorOptions o) {
   fmt::print(stderr, "hemirad: writing into {}\n", o.out);
   o.backend.kind = gl::parseBackendKind(o.backendName);
   checkPlotting();
+  parseFigureSize(o.figureSize);  // a bad size fails before the solves
   Scene scene = loadScene(o.scene, o.load);
   validateSolvable(scene);
   const Camera camera = resolveCamera(scene, o.camera);
@@ -121,7 +122,7 @@ int runVplError(VplErrorOptions o) {
   }
   writeTextFile(o.out + "/" + name + "_vpl_error.csv", csv);
   writeTextFile(o.out + "/" + name + "_vpl_error.md", table);
-  Figures figures(provenance(backend->name(), backend->renderer()));
+  Figures figures(provenance(backend->name(), backend->renderer()), parseFigureSize(o.figureSize));
   figures.add(o.out + "/" + name + "_vpl_error",
               LinePlot{fmt::format("{}: instant radiosity vs progressive ({} x {} px)", name, o.width, o.height), "VPLs",
                        "mean relative luminance error per pixel", true, true, series});
