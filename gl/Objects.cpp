@@ -40,6 +40,8 @@ void checkAllocation(const std::function<std::string()>& what) {
 }  // namespace
 
 void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
+bool isBuffer(GLuint id) { return glIsBuffer(id) == GL_TRUE; }
+bool isTexture(GLuint id) { return glIsTexture(id) == GL_TRUE; }
 void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
 void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 void deleteProgram(GLuint id) { glDeleteProgram(id); }

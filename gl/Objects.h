@@ -43,6 +43,9 @@ void deleteFramebuffer(GLuint);
 void deleteProgram(GLuint);
 void deleteQuery(GLuint);
 void deleteVertexArray(GLuint);
+// Whether `id` names a live object of that kind (the handles' ownership tests).
+bool isBuffer(GLuint id);
+bool isTexture(GLuint id);
 
 class Buffer : public Handle<deleteBuffer> {
  public:

@@ -18,7 +18,7 @@ std::size_t occurrences(const std::string& text, const std::string& word) {
 }
 }  // namespace
 
-TEST_CASE("--figure-size column draws 3.5 x 2.6 inches, text as outlines, the title only in the metadata", "[cpu]") {
+TEST_CASE("Figure size column draws 3.5 x 2.6 inches, text as outlines, the title only in the metadata", "[cpu]") {
   const std::string stem = test::tempPath("figure_column");
   Figures figures(provenance("test", "none"), parseFigureSize("column"));
   LinePlot plot{"Form factor error against level", "item-mesh level L", "relative error", false, true, {}};
@@ -35,7 +35,7 @@ TEST_CASE("--figure-size column draws 3.5 x 2.6 inches, text as outlines, the ti
   CHECK(test::readText(stem + ".pdf").find("/FontFile2") != std::string::npos);  // TrueType embedded
 }
 
-TEST_CASE("--figure-size takes column, page or W,H inches and names itself when it refuses", "[cpu]") {
+TEST_CASE("Figure size: --figure-size takes column, page or W,H inches and names itself when it refuses", "[cpu]") {
   CHECK(parseFigureSize("page").width == 7.0);
   CHECK(parseFigureSize("page").height == 4.2);
   CHECK(parseFigureSize("5,3").width == 5.0);
