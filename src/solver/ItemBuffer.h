@@ -25,10 +25,10 @@ class ItemBuffer {
              Projection projection = Projection::Orthographic, int shooters = 1);
   // Shader defines that select the projection: every program that looks receivers up needs them.
   const gl::Defines& defines() const { return defines_; }
-  // Draws from the shooters of the pass in `control` (SSBO 3); layers past its shooter count
+  // Draws from the shooters of the pass in `control` (SSBO_CONTROL); layers past its shooter count
   // stay empty, and every triangle is clipped away once the GPU's stop rule has fired.
   void render(const gl::Buffer& control);
-  // Binds the id and depth targets to texture units 2 and 3.
+  // Binds the id target to SAMPLER_ITEM_ID (the depths are not read).
   void bindForLookup() const;
   std::size_t triangles() const { return indexCount_ / 3; }
   // Pixels one shooter's item buffer covers (all its faces): the fill work of a shot.
