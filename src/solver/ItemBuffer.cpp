@@ -75,6 +75,11 @@ void ItemBuffer::render(const gl::Buffer& control) {
   gl::drawIndexedTriangles(indexCount_, faces_ * shooters_);
 }
 
-void ItemBuffer::bindForLookup() const { id_.bindUnit(slot::SAMPLER_ITEM_ID); }
+void ItemBuffer::bindForLookup(const SolverState& state, const gl::Buffer& control, const gl::Buffer& shapes) const {
+  state.bindScene();
+  id_.bindUnit(slot::SAMPLER_ITEM_ID);
+  control.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
+  shapes.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
+}
 
 }  // namespace hemirad

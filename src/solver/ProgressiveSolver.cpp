@@ -208,16 +208,13 @@ void ProgressiveSolver::rankPass(Rank rank, bool importanceShooters) {
 }
 
 void ProgressiveSolver::gatherPass(Receivers receivers) {
-  state_.bindScene();
   if (perspective_) {
     perspective_->bind();
     gather_.set("viewMode", unsigned(receivers));
   }
   state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_WRITE);
   state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_READ_WRITE);
-  itemBuffer_->bindForLookup();
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
-  shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
+  itemBuffer_->bindForLookup(state_, control_, shapes_);
   gather_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
                         gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));

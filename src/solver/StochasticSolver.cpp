@@ -118,12 +118,9 @@ void StochasticSolver::samplePass(const gl::Texture& source, std::uint32_t key) 
 }
 
 void StochasticSolver::updatePass(float weight, float emission) {
-  state_.bindScene();
   state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_WRITE);
   state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_WRITE_ONLY);
-  itemBuffer_->bindForLookup();
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
-  shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
+  itemBuffer_->bindForLookup(state_, control_, shapes_);
   update_.use();
   update_.set("weight", weight);
   update_.set("emission", emission);

@@ -38,11 +38,8 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   gl::finish();
   auto t0 = std::chrono::steady_clock::now();
   itemBuffer_.render(control_);
-  state_.bindScene();
-  itemBuffer_.bindForLookup();
+  itemBuffer_.bindForLookup(state_, control_, shape_);
   result_.bindImage(slot::IMAGE_PROBE, GL_WRITE_ONLY);
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
-  shape_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
   program_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(a.width), 16), gl::groupsFor(unsigned(a.height), 16));
   gl::barrier(gl::Barrier::TextureUpdate);
