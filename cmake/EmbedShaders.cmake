@@ -1,11 +1,11 @@
-# cmake -P script: writes OUT, a .cpp defining hemirad::gl::embeddedShader(name).
-set(body "#include \"gl/EmbeddedShaders.h\"\n#include <map>\n#include <string>\n\nnamespace hemirad::gl {\n\nconst std::string* embeddedShader(std::string_view name) {\n  static const std::map<std::string, std::string, std::less<>> files = {\n")
+# cmake -P script: writes OUT, a .cpp defining hemirad::gl::embeddedShader(name) and embeddedShaderNames().
+set(body "#include \"gl/EmbeddedShaders.h\"\n#include <map>\n#include <string>\n#include <vector>\n\nnamespace hemirad::gl {\n\nnamespace {\nconst std::map<std::string, std::string, std::less<>>& shaderFiles() {\n  static const std::map<std::string, std::string, std::less<>> files = {\n")
 string(REPLACE "|" ";" FILES "${FILES}")
 foreach(f ${FILES})
   get_filename_component(name ${f} NAME)
   file(READ ${f} text)
   set(body "${body}    {\"${name}\", R\"hemirad_glsl(${text})hemirad_glsl\"},\n")
 endforeach()
-set(body "${body}  };\n  auto it = files.find(name);\n  return it == files.end() ? nullptr : &it->second;\n}\n\n}  // namespace hemirad::gl\n")
+set(body "${body}  };\n  return files;\n}\n}  // namespace\n\nconst std::string* embeddedShader(std::string_view name) {\n  auto it = shaderFiles().find(name);\n  return it == shaderFiles().end() ? nullptr : &it->second;\n}\n\nstd::vector<std::string> embeddedShaderNames() {\n  std::vector<std::string> names;\n  for (const auto& entry : shaderFiles()) names.push_back(entry.first);\n  return names;\n}\n\n}  // namespace hemirad::gl\n")
 file(WRITE ${OUT}.tmp "${body}")
 file(COPY_FILE ${OUT}.tmp ${OUT} ONLY_IF_DIFFERENT)

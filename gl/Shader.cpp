@@ -105,6 +105,16 @@ std::string shaderSource(const std::string& file, const Defines& defines, std::v
   return out;
 }
 
+void checkCompiles(const std::string& file, const Defines& defines) {
+  const auto endsWith = [&](const char* ext) { return file.ends_with(ext); };
+  const GLenum stage = endsWith(".comp")   ? GL_COMPUTE_SHADER
+                       : endsWith(".vert") ? GL_VERTEX_SHADER
+                       : endsWith(".frag") ? GL_FRAGMENT_SHADER
+                                           : 0;
+  if (!stage) throw Error(fmt::format("shader {}: not a stage (.comp, .vert or .frag)", file));
+  glDeleteShader(compile(stage, file, defines));
+}
+
 Program computeProgram(const std::string& file, const Defines& defines) {
   return link({compile(GL_COMPUTE_SHADER, file, defines)}, file);
 }

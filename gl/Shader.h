@@ -16,6 +16,10 @@ using Defines = std::vector<std::pair<std::string, std::string>>;
 Program computeProgram(const std::string& file, const Defines& defines = {});
 Program renderProgram(const std::string& vertexFile, const std::string& fragmentFile, const Defines& defines = {});
 
+// Compiles one stage (.comp, .vert or .frag, by its extension) without linking: throws gl::Error
+// with the driver's log if it fails (for tests that check every shader).
+void checkCompiles(const std::string& file, const Defines& defines);
+
 // The expanded source as the driver sees it (exposed for tests and error messages).
 std::string shaderSource(const std::string& file, const Defines& defines, std::vector<std::string>* sourceNames = nullptr);
 

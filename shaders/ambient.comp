@@ -9,9 +9,9 @@
 #include "scene.glsl"
 
 layout(local_size_x = 256) in;
-layout(binding = 0, rgba32f) readonly uniform image2D radiosity;  // a: received importance I - R
-layout(binding = 1, rgba32f) readonly uniform image2D deltaB;
-layout(std430, binding = 5) writeonly buffer Ambient { vec4 ambient; };
+layout(binding = IMAGE_RADIOSITY, rgba32f) readonly uniform image2D radiosity;  // a: received importance I - R
+layout(binding = IMAGE_DELTA_B, rgba32f) readonly uniform image2D deltaB;
+layout(std430, binding = SSBO_AMBIENT) writeonly buffer Ambient { vec4 ambient; };
 uniform vec3 interreflection;  // R
 uniform float totalArea;
 

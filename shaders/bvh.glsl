@@ -1,5 +1,5 @@
 // Nearest-hit ray traversal of the scene's BVH (src/solver/Bvh.h, which mirrors this walk on the
-// CPU for tests). SSBO 20 the nodes, 21 the triangles; every member a vec4 (seed 002 §4.1).
+// CPU for tests). SSBO_BVH_NODES the nodes, SSBO_BVH_TRIANGLES the triangles; every member a vec4 (seed 002 §4.1).
 
 struct BvhNode {
   vec4 lo;  // xyz box min; w (uint bits): inner node: its second child; leaf: first triangle
@@ -9,8 +9,8 @@ struct BvhTriangle {
   vec4 v0;  // w (uint bits): polygon id
   vec4 e1, e2;
 };
-layout(std430, binding = 20) readonly buffer BvhNodes { BvhNode bvhNode[]; };
-layout(std430, binding = 21) readonly buffer BvhTriangles { BvhTriangle bvhTriangle[]; };
+layout(std430, binding = SSBO_BVH_NODES) readonly buffer BvhNodes { BvhNode bvhNode[]; };
+layout(std430, binding = SSBO_BVH_TRIANGLES) readonly buffer BvhTriangles { BvhTriangle bvhTriangle[]; };
 
 const int BVH_STACK = 33;  // Bvh::kMaxDepth + 1
 const float BVH_MISS = 3.402823e38;

@@ -2,9 +2,9 @@
 // never bleed into each other and partial edge texels are used as they are.
 #include "scene.glsl"
 
-layout(binding = 2) uniform sampler2D radiosity;
+layout(binding = SAMPLER_ATLAS_VALUES) uniform sampler2D radiosity;
 // Seed 004's display-only ambient term (ambient.comp): rho_j A is added to what is shown.
-layout(std430, binding = 5) readonly buffer Ambient { vec4 ambient; };
+layout(std430, binding = SSBO_AMBIENT) readonly buffer Ambient { vec4 ambient; };
 uniform bool addAmbient;
 in vec2 vAtlas;
 flat in uint vPolygon;

@@ -1,9 +1,8 @@
 // The solver's state on the GPU: the shooters of the current pass and the stop rule, written by
 // the selection pass, so a shot needs no CPU round trip. Once `done` is set every later pass of
 // the batch returns at once (draws and dispatches stay direct: on NVIDIA, indirect arguments
-// written by the previous pass cost ~1 ms of latency a shot). Mirrored by src/solver/Control.h (std430).
-
-const uint MAX_PASS_SHOOTERS = 128u;  // 64 radiosity and 64 importance shooters
+// written by the previous pass cost ~1 ms of latency a shot). Mirrored by src/solver/Control.h (std430);
+// SHOOTER_SLOTS (src/solver/ShaderContract.h): as many radiosity as importance shooters.
 
 // Slot s holds a shooter of this pass.
 #define activeShooter(s) ((s) < control.count || ((s) >= control.shootersPerPass && (s) < control.shootersPerPass + control.importanceCount))
@@ -20,7 +19,7 @@ struct Shooter {
   uint shape;         // the shooter-tree node it shoots from (shooter_tree.glsl): its shape
 };
 
-layout(std430, binding = 3) buffer Control {
+layout(std430, binding = SSBO_CONTROL) buffer Control {
   uint shots;
   uint maxShots;            // 0: unlimited
   uint done;
@@ -33,6 +32,6 @@ layout(std430, binding = 3) buffer Control {
   uint shootersPerPass;     // K: radiosity shooters are shooter[0, count), importance shooters
   uint importanceCount;     //    (importance-driven solves) shooter[K, K + importanceCount)
   uint importanceShots;     // importance shots so far
-  Shooter shooter[MAX_PASS_SHOOTERS];
+  Shooter shooter[SHOOTER_SLOTS];
   float history[];          // convergence after k shots, k = 0..shots (per pass: see select.comp)
 } control;

@@ -6,7 +6,7 @@
 #include "shooter_block.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 9) readonly buffer Deferred { uint deferredBlock[]; };
+layout(std430, binding = SSBO_DEFERRED_BLOCKS) readonly buffer Deferred { uint deferredBlock[]; };
 uniform uint first;
 uniform uint count;
 

@@ -1,13 +1,11 @@
 // Exact differential-area-to-polygon form factor (Lambert's contour formula), unoccluded. The
 // CPU twin is cpu::pointToPolygon (cpu/ExactFormFactor.cpp, double): the same clipped outline
 // (stored there, streamed here) and the same atan2 sum.
-// Needs hemisphere.glsl (PI). Shapes live in SSBO 11, SHAPE_STRIDE vec4s each: the vertex count
-// (x), then up to MAX_SHAPE_VERTICES vertices (the shooter tree's nodes, stochastic iteration's
-// texels, the tests' probe cases).
+// Needs hemisphere.glsl (PI). Shapes live in SSBO_SHOOTER_SHAPES, SHAPE_STRIDE vec4s each: the
+// vertex count (x), then up to MAX_SHAPE_VERTICES vertices (the shooter tree's nodes, stochastic
+// iteration's texels, the tests' probe cases). Both limits: src/solver/ShaderContract.h.
 
-const int MAX_SHAPE_VERTICES = 12;  // a convex polygon of <= 8 sides cut by a block's rectangle
-const uint SHAPE_STRIDE = uint(MAX_SHAPE_VERTICES) + 1u;
-layout(std430, binding = 11) buffer ShooterShapes { vec4 shooterShape[]; };
+layout(std430, binding = SSBO_SHOOTER_SHAPES) buffer ShooterShapes { vec4 shooterShape[]; };
 
 // F from dA at x (unit normal n) to convex shape `shape` (counter-clockwise around its front
 // normal nf); 0 when x lies behind its plane. The shape is clipped to x's front half-space and

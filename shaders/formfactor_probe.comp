@@ -8,7 +8,7 @@
 #include "visibility.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = 0, rgba32f) uniform writeonly image2D probe;
+layout(binding = IMAGE_PROBE, rgba32f) uniform writeonly image2D probe;
 uniform ivec2 atlasSize;
 
 void main() {

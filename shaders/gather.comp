@@ -19,8 +19,8 @@ uniform uint viewMode;
 #endif
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = 0, rgba32f) uniform image2D radiosity;
-layout(binding = 1, rgba32f) uniform image2D deltaB;
+layout(binding = IMAGE_RADIOSITY, rgba32f) uniform image2D radiosity;
+layout(binding = IMAGE_DELTA_B, rgba32f) uniform image2D deltaB;
 uniform ivec2 atlasSize;
 
 void main() {

@@ -83,7 +83,7 @@ float discFormFactor(float cosS, float cosR, float r2, float shooterArea) {
   return max(cosS, 0.0) * max(cosR, 0.0) * shooterArea / (PI * r2 + shooterArea);
 }
 
-float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+float luminance(vec3 c) { return dot(c, LUMINANCE); }
 
 // ---- Item-buffer projections. The item buffer is a 2D array texture: per shooter one layer
 // for the hemisphere, five for the hemicube (HEMICUBE defined), whose side faces use their

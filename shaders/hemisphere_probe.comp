@@ -3,8 +3,8 @@
 #include "hemisphere.glsl"
 
 layout(local_size_x = 1) in;
-layout(std430, binding = 0) readonly buffer In { vec4 dirs[]; };
-layout(std430, binding = 1) writeonly buffer Out { vec4 result[]; };
+layout(std430, binding = SSBO_PROBE_IN) readonly buffer In { vec4 dirs[]; };
+layout(std430, binding = SSBO_PROBE_OUT) writeonly buffer Out { vec4 result[]; };
 uniform vec3 normal;
 uniform vec3 origin;
 

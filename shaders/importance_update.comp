@@ -7,10 +7,10 @@
 #include "scene.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = 0, rgba32f) uniform image2D radiosity;
-layout(binding = 1, rgba32f) uniform image2D deltaB;
-layout(binding = 2, r32ui) uniform readonly uimage2D pixels;
-layout(binding = 3, r32f) uniform image2D direct;
+layout(binding = IMAGE_RADIOSITY, rgba32f) uniform image2D radiosity;
+layout(binding = IMAGE_DELTA_B, rgba32f) uniform image2D deltaB;
+layout(binding = IMAGE_VIEW_PIXELS, r32ui) uniform readonly uimage2D pixels;
+layout(binding = IMAGE_DIRECT, r32f) uniform image2D direct;
 uniform ivec2 atlasSize;
 uniform float viewPixels;
 

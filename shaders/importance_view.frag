@@ -4,7 +4,7 @@
 #include "scene.glsl"
 
 layout(early_fragment_tests) in;
-layout(binding = 0, r32ui) uniform uimage2D pixels;
+layout(binding = IMAGE_VIEW_PIXELS, r32ui) uniform uimage2D pixels;
 uniform bool countPixels;
 in vec2 vAtlas;
 flat in uint vPolygon;

@@ -5,8 +5,8 @@
 #include "scene.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = 0, rgba32f) uniform readonly image2D radiosity;
-layout(std430, binding = 9) writeonly buffer Seen { uint seen[]; };
+layout(binding = IMAGE_RADIOSITY, rgba32f) uniform readonly image2D radiosity;
+layout(std430, binding = SSBO_SEEN) writeonly buffer Seen { uint seen[]; };
 uniform float threshold;
 
 void main() {

@@ -6,8 +6,8 @@
 // instant_filter.comp reads the blocks back in image order.
 #include "instant_shade.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 6) uniform usampler2D gPolygon;  // polygon id + 1 (0: background)
-layout(rgba32f, binding = 0) uniform image2D shaded;  // de-interleaved: n x n blocks of sub
+layout(binding = SAMPLER_G_POLYGON) uniform usampler2D gPolygon;  // polygon id + 1 (0: background)
+layout(rgba32f, binding = IMAGE_SHADED) uniform image2D shaded;  // de-interleaved: n x n blocks of sub
 uniform uint interleave;
 uniform ivec2 sub;  // a block's size: ceil(image / n)
 

@@ -4,9 +4,9 @@
 // is an exact discontinuity test: light never blurs across an edge or onto another surface. A
 // pixel whose window leaves its polygon averages fewer subsets (each unbiased, noisier).
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 6) uniform usampler2D gPolygon;  // polygon id + 1 (0: background)
-layout(rgba32f, binding = 0) readonly uniform image2D shaded;
-layout(rgba32f, binding = 1) writeonly uniform image2D filtered;
+layout(binding = SAMPLER_G_POLYGON) uniform usampler2D gPolygon;  // polygon id + 1 (0: background)
+layout(rgba32f, binding = IMAGE_SHADED) readonly uniform image2D shaded;
+layout(rgba32f, binding = IMAGE_FILTERED) writeonly uniform image2D filtered;
 uniform uint interleave;
 uniform ivec2 sub;           // de-interleaved blocks' size
 uniform bool deinterleaved;  // `shaded` is in blocks (deferred) or image order (forward)

@@ -11,7 +11,7 @@
 #include "vpl.glsl"
 #include "segment.glsl"
 
-layout(binding = 4) uniform usampler2DArray shadowId;
+layout(binding = SAMPLER_SHADOW_ID) uniform usampler2DArray shadowId;
 uniform uint vplFirst, vplCount;
 uniform uint interleaveM;  // n^2 VPL subsets
 uniform float maxGeometry;

@@ -2,14 +2,14 @@
 // depth (distance / far): the vertex shader's depth is interpolated linearly over item-mesh
 // triangles, which under-estimates a curved projection's distances by far more than the gap
 // between, say, a ceiling and a light hung 0.5 mm below it. Exact depths order such surfaces
-// right in every pixel. Needs the polygon planes (SSBO 12: unit normal, offset n . p).
+// right in every pixel. Needs the polygon planes (SSBO_PLANES: unit normal, offset n . p).
 #include "hemisphere.glsl"
 #include "control.glsl"
 
 flat in uint vPolygon;
 flat in int vLayer;
 layout(location = 0) out uint itemId;
-layout(std430, binding = 12) readonly buffer Planes { vec4 plane[]; };
+layout(std430, binding = SSBO_PLANES) readonly buffer Planes { vec4 plane[]; };
 uniform float farDistance;
 uniform float faceSize;  // pixels on a side
 

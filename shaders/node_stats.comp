@@ -9,8 +9,8 @@
 #include "shooter_tree.glsl"
 
 layout(local_size_x = BLOCK_THREADS) in;
-layout(binding = 0, rgba32f) uniform readonly image2D radiosity;  // a: received importance I - R
-layout(binding = 1, rgba32f) uniform readonly image2D deltaB;     // a: unshot importance dI
+layout(binding = IMAGE_RADIOSITY, rgba32f) uniform readonly image2D radiosity;  // a: received importance I - R
+layout(binding = IMAGE_DELTA_B, rgba32f) uniform readonly image2D deltaB;     // a: unshot importance dI
 
 const float NONE = 3.4e38;
 const uint THREADS = uint(BLOCK_THREADS);

@@ -6,9 +6,9 @@
 #include "shooter_tree.glsl"
 
 layout(local_size_x = 256) in;
-layout(std430, binding = 8) readonly buffer Snapshots { vec4 snapshot[]; };
-layout(std430, binding = 9) writeonly buffer Pending { float pending[]; };
-layout(std430, binding = 10) readonly buffer Spans { uvec2 spans[]; };  // (start, end) epochs
+layout(std430, binding = SSBO_SNAPSHOTS) readonly buffer Snapshots { vec4 snapshot[]; };
+layout(std430, binding = SSBO_PENDING) writeonly buffer Pending { float pending[]; };
+layout(std430, binding = SSBO_SPANS) readonly buffer Spans { uvec2 spans[]; };  // (start, end) epochs
 uniform uint blockCount;
 uniform uint spanCount;
 

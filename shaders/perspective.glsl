@@ -7,10 +7,10 @@
 // came back into view at epoch f receives shots itself from then on and is owed
 // snapshot[f][i] - snapshot[e][i] until a delivery round hands it over.
 
-layout(std430, binding = 6) readonly buffer SurfaceView {
+layout(std430, binding = SSBO_SURFACE_VIEW) readonly buffer SurfaceView {
   uvec4 surfaceView[];  // per polygon: x 1 if in view; y, z 1 + the epochs its entries start and end at while
                         // a delivery round hands them over (else 0)
 };
-layout(std430, binding = 7) buffer ShotSoFar { vec4 shotSoFar[]; };        // per shooter block
-layout(std430, binding = 8) readonly buffer Snapshots { vec4 snapshot[]; };  // epoch * blocks + block
+layout(std430, binding = SSBO_SHOT_SO_FAR) buffer ShotSoFar { vec4 shotSoFar[]; };        // per shooter block
+layout(std430, binding = SSBO_SNAPSHOTS) readonly buffer Snapshots { vec4 snapshot[]; };  // epoch * blocks + block
 uniform uint blockCount;

@@ -4,9 +4,9 @@
 #include "hemisphere.glsl"
 
 layout(local_size_x = 1) in;
-layout(std430, binding = 0) readonly buffer In { vec4 dirs[]; };  // xyz: direction, w unused
-layout(std430, binding = 1) readonly buffer Points { vec4 points[]; };  // xy: ndc, z: layer
-layout(std430, binding = 2) writeonly buffer Out { vec4 result[]; };   // three per input
+layout(std430, binding = SSBO_PROBE_IN) readonly buffer In { vec4 dirs[]; };  // xyz: direction, w unused
+layout(std430, binding = SSBO_PROBE_POINTS) readonly buffer Points { vec4 points[]; };  // xy: ndc, z: layer
+layout(std430, binding = SSBO_PROBE_OUT) writeonly buffer Out { vec4 result[]; };   // three per input
 uniform vec3 normal;
 uniform vec3 origin;
 uniform float farDistance;

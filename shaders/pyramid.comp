@@ -7,7 +7,7 @@
 #include "pyramid.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = 0, rgba32f) readonly uniform image2D radiosity;
+layout(binding = IMAGE_RADIOSITY, rgba32f) readonly uniform image2D radiosity;
 uniform uint level;
 uniform ivec2 atlasSize;
 

@@ -1,6 +1,6 @@
 // The luminance sum pyramid's layout (pyramid.comp builds it, sample.comp descends it): level l
 // is (pyramidSide >> l)^2 floats, row-major, stored after the finer levels.
-layout(std430, binding = 5) buffer Pyramid { float pyramid[]; };
+layout(std430, binding = SSBO_PYRAMID) buffer Pyramid { float pyramid[]; };
 uniform uint pyramidSide;  // level 0's side, a power of two >= the atlas's sides
 
 uint pyramidOffset(uint level) {

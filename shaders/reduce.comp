@@ -6,7 +6,7 @@
 #include "reduce_entry.glsl"
 
 layout(local_size_x = 256) in;
-layout(std430, binding = 4) writeonly buffer Out { Entry dst[]; };
+layout(std430, binding = SSBO_REDUCE_OUT) writeonly buffer Out { Entry dst[]; };
 
 void main() {
   uint first = gl_WorkGroupID.x * GROUP_ENTRIES;

@@ -12,7 +12,7 @@ struct Entry {
   float pad;
 };
 
-layout(std430, binding = 2) readonly buffer In { Entry src[]; };
+layout(std430, binding = SSBO_REDUCE_IN) readonly buffer In { Entry src[]; };
 uniform uint count;       // entries (or blocks) to fold
 uniform bool fromBlocks;  // first level: compute the entries from the blocks
 uniform uint keep;        // entries kept per group: the shooters a pass takes

@@ -3,7 +3,7 @@
 // (sum of the four) from a fresh counter-based draw, so it ends at texel j with probability
 // P_j = lum(B_j) A_j / Phi. It then fills control slot k as a one-texel shooter with
 // shot = B_j / (P_j K): the K shots' sum is an unbiased estimate of T B (eq. 3), and its
-// shape (the texel's element) in SSBO 11 slot k for the exact form factor.
+// shape (the texel's element) in SSBO_SHOOTER_SHAPES slot k for the exact form factor.
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "control.glsl"
@@ -13,7 +13,7 @@
 #include "texel_shape.glsl"
 
 layout(local_size_x = 64) in;
-layout(binding = 0, rgba32f) readonly uniform image2D radiosity;
+layout(binding = IMAGE_RADIOSITY, rgba32f) readonly uniform image2D radiosity;
 uniform uint seed, iteration, shooters, topLevel;
 
 // The leaf texel reached from the root by shooter k's draws.
@@ -54,7 +54,7 @@ void main() {
   control.shooter[k].polygon = none ? NO_POLYGON : polygon;
   control.shooter[k].power = none ? 0.0 : leaf / phi;  // P_j
   control.shooter[k].block = k;
-  control.shooter[k].shape = k;  // its shape: slot k of SSBO 11
+  control.shooter[k].shape = k;  // its shape: slot k of SSBO_SHOOTER_SHAPES
   vec3 shape[CLIP_VERTICES];
   for (int i = 0; i < CLIP_VERTICES; ++i) shape[i] = vec3(0.0);
   int n = none ? 0 : texelShape(polygon, t, shape);

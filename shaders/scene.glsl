@@ -10,8 +10,8 @@ struct Polygon {
   uvec4 vertices;    // first, count in polygonVertex (convex, counter-clockwise around the normal)
 };
 
-layout(std430, binding = 0) readonly buffer Polygons { Polygon polygons[]; };
-layout(std430, binding = 10) readonly buffer PolygonVertices { vec4 polygonVertex[]; };
+layout(std430, binding = SSBO_POLYGONS) readonly buffer Polygons { Polygon polygons[]; };
+layout(std430, binding = SSBO_POLYGON_VERTICES) readonly buffer PolygonVertices { vec4 polygonVertex[]; };
 
-layout(binding = 0) uniform sampler2D atlasPositionArea;  // xyz element centre, w area (0: none)
-layout(binding = 1) uniform usampler2D atlasPolygon;      // polygon id or NO_POLYGON
+layout(binding = SAMPLER_ATLAS_POSITION_AREA) uniform sampler2D atlasPositionArea;  // xyz element centre, w area (0: none)
+layout(binding = SAMPLER_ATLAS_POLYGON) uniform usampler2D atlasPolygon;      // polygon id or NO_POLYGON

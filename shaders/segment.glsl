@@ -1,6 +1,6 @@
 // Exact segment-polygon occlusion, shared by the gather's visibility (visibility.glsl) and instant
-// radiosity's VPL shadows (instant_shade.glsl). Needs scene.glsl (the polygon table, SSBO 0, and
-// its vertices, SSBO 10).
+// radiosity's VPL shadows (instant_shade.glsl). Needs scene.glsl (the polygon table and its
+// vertices).
 
 // Whether polygon q blocks the segment from o to x: o and x lie strictly on opposite sides of
 // its plane (by more than eps, float rounding) and the crossing point lies inside it (convex,

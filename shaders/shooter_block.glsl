@@ -26,6 +26,6 @@ void describeUnshot(uint slot, uint node, bool importance) {
   vec4 centre = importance ? s.viewCentre : s.lightCentre;
   float area = nodes[node].centreArea.w;
   if (centre.w > 0.0) control.shooter[slot].positionArea.xyz = centre.xyz / centre.w;
-  float reflects = dot(polygons[nodes[node].polygon].reflectance.rgb, vec3(0.2126, 0.7152, 0.0722));  // luminance
+  float reflects = dot(polygons[nodes[node].polygon].reflectance.rgb, LUMINANCE);
   control.shooter[slot].shot = importance ? vec4(0.0, 0.0, 0.0, reflects * s.unshot.a / area) : vec4(s.unshot.rgb / area, 0.0);
 }

@@ -19,9 +19,9 @@ struct NodeStats {
   vec4 range;        // least and largest luminance(dB) of its elements, largest received importance I - R (alpha of B), 0
 };
 
-layout(std430, binding = 13) readonly buffer Nodes { Node nodes[]; };
+layout(std430, binding = SSBO_NODES) readonly buffer Nodes { Node nodes[]; };
 #ifdef WRITES_NODE_STATS
-layout(std430, binding = 14) writeonly buffer Stats { NodeStats stats[]; };
+layout(std430, binding = SSBO_NODE_STATS) writeonly buffer Stats { NodeStats stats[]; };
 #else
-layout(std430, binding = 14) readonly buffer Stats { NodeStats stats[]; };
+layout(std430, binding = SSBO_NODE_STATS) readonly buffer Stats { NodeStats stats[]; };
 #endif

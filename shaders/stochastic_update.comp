@@ -12,8 +12,8 @@
 #include "visibility.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = 0, rgba32f) uniform image2D radiosity;
-layout(binding = 1, rgba32f) writeonly uniform image2D iterate;
+layout(binding = IMAGE_RADIOSITY, rgba32f) uniform image2D radiosity;
+layout(binding = IMAGE_DELTA_B, rgba32f) writeonly uniform image2D iterate;
 uniform ivec2 atlasSize;
 uniform float weight, emission;
 

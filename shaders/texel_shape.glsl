@@ -1,9 +1,9 @@
 // The element of texel t as a 3D polygon: its polygon clipped to the texel's square in the
 // polygon's chart (what Atlas::elementShape computes in double on the CPU). Needs scene.glsl and
-// formfactor.glsl (MAX_SHAPE_VERTICES). SSBO 6: per polygon its chart frame, 4 vec4s: plane
+// formfactor.glsl (MAX_SHAPE_VERTICES). SSBO_CHARTS: per polygon its chart frame, 4 vec4s: plane
 // origin; u axis, w = texel size; v axis; lower-left corner of cell (0, 0) in plane coordinates
 // (xy) and the chart's atlas origin (zw).
-layout(std430, binding = 6) readonly buffer Charts { vec4 chart[]; };
+layout(std430, binding = SSBO_CHARTS) readonly buffer Charts { vec4 chart[]; };
 
 const int CLIP_VERTICES = MAX_SHAPE_VERTICES + 4;
 

@@ -3,8 +3,8 @@
 #include "scene.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = 0, r32ui) uniform readonly uimage2D ids;
-layout(std430, binding = 9) writeonly buffer Seen { uint seen[]; };
+layout(binding = IMAGE_VIEW_IDS, r32ui) uniform readonly uimage2D ids;
+layout(std430, binding = SSBO_SEEN) writeonly buffer Seen { uint seen[]; };
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);

@@ -1,9 +1,9 @@
 // Visibility and form factor of a receiver element from a shooter of the pass. Needs
-// hemisphere.glsl, scene.glsl, control.glsl and formfactor.glsl. Texture unit 2: polygon ids,
+// hemisphere.glsl, scene.glsl, control.glsl and formfactor.glsl. SAMPLER_ITEM_ID: polygon ids,
 // ITEM_FACES layers per shooter, each pixel the nearest surface by exact depth (itembuffer.frag;
-// the depths themselves are not read); SSBO 11 (formfactor.glsl) the shooters' shapes.
+// the depths themselves are not read). ItemBuffer::bindForLookup binds all of it.
 
-layout(binding = 2) uniform usampler2DArray itemId;
+layout(binding = SAMPLER_ITEM_ID) uniform usampler2DArray itemId;
 uniform float farDistance;
 
 #include "segment.glsl"

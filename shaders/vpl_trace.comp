@@ -17,12 +17,12 @@ struct Emitter {
   vec4 e2;
   vec4 flux;  // rgb: E W / lum(E), a light sample's flux times n[0] (W: total lum(E) A)
 };
-layout(std430, binding = 22) readonly buffer Emitters { Emitter emitter[]; };
+layout(std430, binding = SSBO_EMITTERS) readonly buffer Emitters { Emitter emitter[]; };
 struct PathEnd {
   vec4 escaped;  // rgb flux that left the scene; a: 1 if it did
   vec4 behind;   // rgb flux that hit a polygon's back (black) side; a: 1 if it did
 };
-layout(std430, binding = 24) writeonly buffer PathEnds { PathEnd pathEnd[]; };
+layout(std430, binding = SSBO_PATH_ENDS) writeonly buffer PathEnds { PathEnd pathEnd[]; };
 
 const int MAX_LEVELS = 16;
 uniform uint levelCount[MAX_LEVELS];   // n[j]: paths that reach level j (0 after the last)

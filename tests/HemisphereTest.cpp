@@ -11,6 +11,7 @@
 #include "gl/State.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/solver/Projection.h"
+#include "src/solver/ShaderContract.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
@@ -99,7 +100,7 @@ TEST_CASE("Every item-buffer projection puts theta at its radius, keeps the azim
 TEST_CASE("GLSL hemisphere maths equals its C++ mirror", "[gl]") {
   test::backend();
   // A compute shader runs hemisphere.glsl on test directions; the C++ mirror must agree.
-  gl::Program p = gl::computeProgram("hemisphere_probe.comp");
+  gl::Program p = computeProgram("hemisphere_probe.comp");
   std::vector<glm::vec4> in;
   for (int i = 0; i < 64; ++i) {
     double theta = 0.02 + 1.5 * i / 64.0, phi = 0.7 * i;
@@ -107,8 +108,8 @@ TEST_CASE("GLSL hemisphere maths equals its C++ mirror", "[gl]") {
   }
   const glm::vec3 n = glm::normalize(glm::vec3(-0.2f, 0.9f, 0.1f)), origin(3, -1, 2);
   gl::Buffer inBuf{std::span<const glm::vec4>(in)}, outBuf{in.size() * sizeof(glm::vec4)};
-  inBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  inBuf.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PROBE_IN);
+  outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PROBE_OUT);
   p.set("normal", n.x, n.y, n.z);
   p.set("origin", origin.x, origin.y, origin.z);
   p.use();
@@ -131,7 +132,7 @@ TEST_CASE("GLSL item-buffer projections (all four, the hemicube's faces included
   test::backend();
   const Projection projection = GENERATE(from_range(allProjections()));
   INFO(projectionName(projection));
-  gl::Program program = gl::computeProgram("projection_probe.comp", itemBufferDefines(projection));
+  gl::Program program = computeProgram("projection_probe.comp", itemBufferDefines(projection));
   // Directions over the whole hemisphere and a little below (what the clip plane cuts), and
   // item-buffer points inside and outside the disc, on every hemicube face.
   std::mt19937 rng(27);
@@ -148,9 +149,9 @@ TEST_CASE("GLSL item-buffer projections (all four, the hemicube's faces included
   const int size = 128;
   gl::Buffer dirBuf{std::span<const glm::vec4>(dirs)}, pointBuf{std::span<const glm::vec4>(points)},
       outBuf{3 * dirs.size() * sizeof(glm::vec4)};
-  dirBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  pointBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
-  outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+  dirBuf.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PROBE_IN);
+  pointBuf.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PROBE_POINTS);
+  outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PROBE_OUT);
   program.set("normal", n.x, n.y, n.z);
   program.set("origin", origin.x, origin.y, origin.z);
   program.set("farDistance", far);
@@ -203,7 +204,7 @@ TEST_CASE("A shader that fails to compile is reported with its file names and th
                                                "void main() { float x = undefined_thing; }\n";
   setenv("HEMIRAD_SHADER_DIR", dir.c_str(), 1);
   try {
-    gl::computeProgram("broken_probe.comp");
+    computeProgram("broken_probe.comp");
     FAIL("the broken shader compiled");
   } catch (const gl::Error& e) {
     std::string what = e.what();
@@ -218,7 +219,7 @@ TEST_CASE("GLSL exact form factor (formfactor.glsl) equals cpu::pointToPolygon o
   test::backend();
   // Convex 3- to 8-gons of radius 1 at distances 0.3 to 100 (F from ~0.5 down to ~1e-5), some
   // straddling the receiver's horizon (clipped), some behind it or facing away (F = 0).
-  gl::Program p = gl::computeProgram("formfactor_kernel_probe.comp");
+  gl::Program p = computeProgram("formfactor_kernel_probe.comp");
   std::mt19937 rng(14);
   std::uniform_real_distribution<double> u(-1, 1);
   auto unit = [&] {
@@ -245,14 +246,14 @@ TEST_CASE("GLSL exact form factor (formfactor.glsl) equals cpu::pointToPolygon o
     in.push_back(glm::vec4(glm::vec3(x), 0));
     in.push_back(glm::vec4(glm::vec3(n), 0));
     in.push_back(glm::vec4(glm::vec3(nf), 0));
-    shapes.push_back(glm::vec4(float(k), 0, 0, 0));  // formfactor.glsl's shape layout: count, 12 vertices
-    for (int j = 0; j < 12; ++j) shapes.push_back(j < k ? glm::vec4(glm::vec3(poly[size_t(j)]), 1) : glm::vec4(0.0f));
+    shapes.push_back(glm::vec4(float(k), 0, 0, 0));  // formfactor.glsl's shape layout: count, then vertices
+    for (int j = 0; j < kMaxShapeVertices; ++j) shapes.push_back(j < k ? glm::vec4(glm::vec3(poly[size_t(j)]), 1) : glm::vec4(0.0f));
   }
   gl::Buffer inBuf{std::span<const glm::vec4>(in)}, shapeBuf{std::span<const glm::vec4>(shapes)},
       outBuf{cases * sizeof(float)};
-  inBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  shapeBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 11);
-  outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, 1);
+  inBuf.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PROBE_IN);
+  shapeBuf.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
+  outBuf.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PROBE_OUT);
   p.use();
   gl::Program::dispatch(unsigned(cases));
   gl::barrier(gl::Barrier::BufferUpdate);

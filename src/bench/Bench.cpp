@@ -21,6 +21,7 @@
 #include "src/output/Progress.h"
 #include "src/output/Provenance.h"
 #include "src/output/Report.h"
+#include "src/scene/Scene.h"
 #include "src/scene/SceneLoader.h"
 
 namespace hemirad {
@@ -138,7 +139,7 @@ std::string comparisonTable(const nlohmann::json& rows, const std::string& other
   std::string out = fmt::format("\nagainst {} ({}): per-object relative difference of mean luminance\n\n", otherPath,
              other.value("renderer", "?"));
   out += "| scene | elements | shooters/pass | object | this | other | relative difference |\n|---|---|---|---|---|---|---|\n";
-  auto lum = [](const nlohmann::json& c) { return 0.2126 * double(c[0]) + 0.7152 * double(c[1]) + 0.0722 * double(c[2]); };
+  auto lum = [](const nlohmann::json& c) { return luminance(glm::dvec3(double(c[0]), double(c[1]), double(c[2]))); };
   for (const auto& a : rows)
     for (const auto& b : other.value("rows", nlohmann::json::array())) {
       if (a["scene"] != b["scene"] || a["elements"] != b["elements"] || !b.contains("objects") ||

@@ -5,11 +5,11 @@
 #include <functional>
 
 #include "gl/Objects.h"
-#include "gl/Shader.h"
 #include "gl/State.h"
 #include "src/solver/Control.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/scene/SceneLoader.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
@@ -37,9 +37,9 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
   const int side = 4096;
   {
     gl::Texture values(GL_RGBA32F, side, side);
-    gl::Program kernel = gl::computeProgram("ceiling.comp");
+    gl::Program kernel = computeProgram("ceiling.comp");
     kernel.use();
-    values.bindImage(0, GL_READ_WRITE);
+    values.bindImage(slot::IMAGE_CEILING_VALUES, GL_READ_WRITE);
     c.invocationsPerSecond = 10.0 * side * side / bestSeconds(backend, [&] {
       for (int k = 0; k < 10; ++k) {
         gl::Program::dispatch(side / 16, side / 16);
@@ -55,7 +55,7 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
     target.attach(GL_COLOR_ATTACHMENT0, id);
     target.attach(GL_DEPTH_ATTACHMENT, depth);
     target.checkComplete("fill ceiling");
-    gl::Program fill = gl::renderProgram("fill.vert", "fill.frag");
+    gl::Program fill = renderProgram("fill.vert", "fill.frag");
     fill.set("instances", layers);
     gl::VertexArray empty;
     c.fragmentsPerSecond = double(layers) * fillSide * fillSide / bestSeconds(backend, [&] {

@@ -5,13 +5,15 @@
 #include <stdexcept>
 
 #include "src/base/Error.h"
+#include "src/scene/Scene.h"  // kLuminanceWeights
 
 namespace hemirad {
 
 double exposureScale(const Image& image, double ev) {
   std::vector<float> lum;
   for (size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
-    float l = 0.2126f * image.rgb[i] + 0.7152f * image.rgb[i + 1] + 0.0722f * image.rgb[i + 2];
+    float l = float(kLuminanceWeights[0]) * image.rgb[i] + float(kLuminanceWeights[1]) * image.rgb[i + 1] +
+              float(kLuminanceWeights[2]) * image.rgb[i + 2];
     if (l > 0) lum.push_back(l);
   }
   double scale = 1.0;
@@ -25,7 +27,7 @@ double exposureScale(const Image& image, double ev) {
 
 namespace {
 double pixelLuminance(const std::vector<float>& rgb, std::size_t p) {
-  return 0.2126 * rgb[p] + 0.7152 * rgb[p + 1] + 0.0722 * rgb[p + 2];
+  return kLuminanceWeights[0] * rgb[p] + kLuminanceWeights[1] * rgb[p + 1] + kLuminanceWeights[2] * rgb[p + 2];
 }
 }  // namespace
 

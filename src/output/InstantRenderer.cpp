@@ -5,10 +5,10 @@
 #include <cstddef>
 
 #include "gl/Debug.h"
-#include "gl/Shader.h"
 #include "gl/State.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/ItemMesh.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
@@ -21,10 +21,10 @@ InstantRenderer::InstantRenderer(const Scene& scene, const VplTracer& tracer, co
       interleave_(std::max(1, settings.interleave)),
       boundsMin_(scene.boundsMin()),
       boundsMax_(scene.boundsMax()),
-      forward_(gl::renderProgram("instant.vert", "instant_forward.frag")),
-      gbuffer_(gl::renderProgram("instant.vert", "instant_gbuffer.frag")),
-      deferred_(gl::computeProgram("instant_deferred.comp")),
-      filter_(gl::computeProgram("instant_filter.comp")) {
+      forward_(renderProgram("instant.vert", "instant_forward.frag")),
+      gbuffer_(renderProgram("instant.vert", "instant_gbuffer.frag")),
+      deferred_(computeProgram("instant_deferred.comp")),
+      filter_(computeProgram("instant_filter.comp")) {
   const float far = float(2.0 * tracer.sceneDiagonal() + 1e-6);
   float maxGeometry = float(1.0 / std::pow(settings.clamp * tracer.sceneDiagonal(), 2.0));
   if (settings.clamp <= 0) maxGeometry = 3.4e38f;  // no clamp
@@ -89,7 +89,7 @@ void InstantRenderer::setBatch(const gl::Program& program, unsigned batch) const
   program.set("vplCount", std::min<unsigned>(kBatch, vpls_ - first));
   program.set("addEmission", int(batch == 0));
   tracer_.bind();
-  shadows_.bind(batch, 4);
+  shadows_.bind(batch, slot::SAMPLER_SHADOW_ID);
 }
 
 void InstantRenderer::shadeForward(const glm::mat4& vp, unsigned batch) {
@@ -106,8 +106,8 @@ void InstantRenderer::shadeForward(const glm::mat4& vp, unsigned batch) {
 
 void InstantRenderer::shadeDeferred(unsigned batch) {
   setBatch(deferred_, batch);
-  polygon_.bindUnit(6);
-  shaded_.bindImage(0, GL_READ_WRITE);
+  polygon_.bindUnit(slot::SAMPLER_G_POLYGON);
+  shaded_.bindImage(slot::IMAGE_SHADED, GL_READ_WRITE);
   deferred_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(shaded_.width()), 8), gl::groupsFor(unsigned(shaded_.height()), 8));
   gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch | gl::Barrier::TextureUpdate);
@@ -115,9 +115,9 @@ void InstantRenderer::shadeDeferred(unsigned batch) {
 
 void InstantRenderer::filter(Shading shading) {
   if (shading == Shading::Forward) gl::barrier(gl::Barrier::Image | gl::Barrier::Framebuffer);
-  polygon_.bindUnit(6);
-  (shading == Shading::Forward ? color_ : shaded_).bindImage(0, GL_READ_ONLY);
-  filtered_.bindImage(1, GL_WRITE_ONLY);
+  polygon_.bindUnit(slot::SAMPLER_G_POLYGON);
+  (shading == Shading::Forward ? color_ : shaded_).bindImage(slot::IMAGE_SHADED, GL_READ_ONLY);
+  filtered_.bindImage(slot::IMAGE_FILTERED, GL_WRITE_ONLY);
   filter_.set("deinterleaved", int(shading == Shading::Deferred));
   filter_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(width_), 8), gl::groupsFor(unsigned(height_), 8));

@@ -5,8 +5,8 @@
 
 #include "gl/Debug.h"
 #include "gl/Objects.h"
-#include "gl/Shader.h"
 #include "gl/State.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
@@ -57,7 +57,7 @@ LightmapRender downsample(const std::vector<float>& rgba, int width, int height,
 LightmapRender renderLightmapped(const std::vector<LightmapVertex>& triangles, const Image& lightmap,
                                  const Camera& camera, int width, int height, int supersample) {
   const int s = std::max(1, supersample), w = width * s, h = height * s;
-  gl::Program program = gl::renderProgram("lightmap.vert", "lightmap.frag");
+  gl::Program program = renderProgram("lightmap.vert", "lightmap.frag");
   gl::Texture texture = lightmapTexture(lightmap);
   gl::Buffer vertices{std::span<const LightmapVertex>(triangles)};
   gl::VertexArray vao;
@@ -76,7 +76,7 @@ LightmapRender renderLightmapped(const std::vector<LightmapVertex>& triangles, c
   const glm::mat4 vp = viewProjection(triangles, camera, double(width) / height);
   fbo.bind();
   gl::cameraView(w, h).apply();
-  texture.bindUnit(0);
+  texture.bindUnit(slot::SAMPLER_LIGHTMAP);
   program.set("viewProjection", &vp[0][0]);
   program.use();
   vao.bind();

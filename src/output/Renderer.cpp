@@ -1,15 +1,15 @@
 #include "src/output/Renderer.h"
 
 #include "gl/Debug.h"
-#include "gl/Shader.h"
 #include "gl/State.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
 Renderer::Renderer(const SolverState& state)
     : state_(state),
-      program_(gl::renderProgram("camera.vert", "camera.frag")),
-      ambientProgram_(gl::computeProgram("ambient.comp")),
+      program_(renderProgram("camera.vert", "camera.frag")),
+      ambientProgram_(computeProgram("ambient.comp")),
       ambientTerm_(sizeof(glm::vec4)),
       mesh_(state.scene, state.atlas) {
   // Seed 004: a unit of light meets rho_avg (area-weighted) at each bounce, so all of them
@@ -31,9 +31,9 @@ Renderer::Renderer(const SolverState& state)
 void Renderer::updateAmbient() {
   gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch);
   state_.bindScene();
-  state_.radiosity.bindImage(0, GL_READ_ONLY);  // importance I in alpha: view-driven weighting
-  state_.deltaB.bindImage(1, GL_READ_ONLY);
-  ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_ONLY);  // importance I in alpha: view-driven weighting
+  state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_READ_ONLY);
+  ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_AMBIENT);
   ambientProgram_.use();
   gl::Program::dispatch(1);
   gl::barrier(gl::Barrier::Storage | gl::Barrier::BufferUpdate);
@@ -65,10 +65,10 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   gl::cameraView(w, h).apply();
   gl::barrier(gl::Barrier::TextureFetch);
   state_.bindScene();
-  atlasValues.bindUnit(2);
+  atlasValues.bindUnit(slot::SAMPLER_ATLAS_VALUES);
   const bool ambient = ambient_ && &atlasValues == &state_.radiosity;
   if (ambient) updateAmbient();
-  ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_AMBIENT);
   program_.set("addAmbient", int(ambient));
   program_.set("viewProjection", &vp[0][0]);
   program_.use();

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "gl/Shader.h"
 #include "gl/State.h"
 #include "src/scene/ItemMesh.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
@@ -13,7 +13,7 @@ VplShadowMaps::VplShadowMaps(const Scene& scene, const VplTracer& tracer, const 
     : tracer_(tracer),
       vpls_(settings.vpls),
       size_(settings.shadowResolution),
-      program_(gl::renderProgram("vpl_shadow.vert", "vpl_shadow.frag")),
+      program_(renderProgram("vpl_shadow.vert", "vpl_shadow.frag")),
       depth_(GL_DEPTH_COMPONENT32F, size_, size_, kBatch) {
   const IndexedItemMesh item = indexItemMesh(buildItemMesh(scene, settings.itemSubdivision));
   indexCount_ = item.indices.size();

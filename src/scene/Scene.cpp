@@ -5,7 +5,9 @@
 
 namespace hemirad {
 
-double luminance(const glm::dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+double luminance(const glm::dvec3& c) {
+  return kLuminanceWeights[0] * c.x + kLuminanceWeights[1] * c.y + kLuminanceWeights[2] * c.z;
+}
 
 bool Scene::addPolygon(const Poly3& vertices, int material, int object) {
   glm::dvec3 n = newellNormal(vertices);

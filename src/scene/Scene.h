@@ -77,6 +77,8 @@ class Scene {
   bool propsAdded_ = false;
 };
 
+// Rec. 709 luminance weights, for every luminance on both sides (shaders get them as LUMINANCE).
+inline constexpr double kLuminanceWeights[3] = {0.2126, 0.7152, 0.0722};
 double luminance(const glm::dvec3& c);
 
 }  // namespace hemirad

@@ -3,10 +3,9 @@
 #pragma once
 #include <cstdint>
 
-namespace hemirad {
+#include "src/solver/ShaderContract.h"  // kMaxPassShooters, kShooterSlots
 
-inline constexpr unsigned kMaxPassShooters = 64;  // radiosity shooters a pass; as many importance ones
-inline constexpr unsigned kShooterSlots = 2 * kMaxPassShooters;  // MAX_PASS_SHOOTERS in control.glsl
+namespace hemirad {
 
 struct ShooterRecord {
   float positionArea[4];

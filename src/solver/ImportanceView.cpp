@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "gl/Debug.h"
-#include "gl/Shader.h"
 #include "gl/State.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
@@ -13,8 +13,8 @@ ImportanceView::ImportanceView(SolverState& state, int resolution)
     : state_(state),
       resolution_(resolution),
       mesh_(state.scene, state.atlas),
-      view_(gl::renderProgram("camera.vert", "importance_view.frag")),
-      update_(gl::computeProgram("importance_update.comp")),
+      view_(renderProgram("camera.vert", "importance_view.frag")),
+      update_(computeProgram("importance_update.comp")),
       pixels_(GL_R32UI, state.atlas.width, state.atlas.height),
       direct_(GL_R32F, state.atlas.width, state.atlas.height) {
   direct_.clear(0.0f);
@@ -36,7 +36,7 @@ bool ImportanceView::look(const Camera& camera, double aspect) {
   glm::mat4 vp = mesh_.viewProjection(camera, aspect);
   fbo.bind();
   state_.bindScene();
-  pixels_.bindImage(0, GL_READ_WRITE);
+  pixels_.bindImage(slot::IMAGE_VIEW_PIXELS, GL_READ_WRITE);
   view_.set("viewProjection", &vp[0][0]);
   view_.use();
   // Depth first, then count the pixels whose nearest surface each fragment is (same program,
@@ -54,10 +54,10 @@ bool ImportanceView::look(const Camera& camera, double aspect) {
 
   update_.use();
   update_.set("viewPixels", float(w) * float(h));
-  state_.radiosity.bindImage(0, GL_READ_WRITE);
-  state_.deltaB.bindImage(1, GL_READ_WRITE);
-  pixels_.bindImage(2, GL_READ_ONLY);
-  direct_.bindImage(3, GL_READ_WRITE);
+  state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_WRITE);
+  state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_READ_WRITE);
+  pixels_.bindImage(slot::IMAGE_VIEW_PIXELS, GL_READ_ONLY);
+  direct_.bindImage(slot::IMAGE_DIRECT, GL_READ_WRITE);
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16), gl::groupsFor(unsigned(state_.atlas.height), 16));
   gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch | gl::Barrier::Storage);
   gl::checkErrors("importance view");

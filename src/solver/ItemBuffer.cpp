@@ -1,10 +1,10 @@
 #include "src/solver/ItemBuffer.h"
 
-#include "gl/Shader.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/ItemMesh.h"
+#include "src/solver/ShaderContract.h"
 
 #include <cmath>
 
@@ -34,7 +34,7 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
       faces_(projection == Projection::Hemicube ? 5 : 1),
       shooters_(shooters),
       defines_(itemBufferDefines(projection)),
-      program_(gl::renderProgram("itembuffer.vert", "itembuffer.frag", defines_)),
+      program_(renderProgram("itembuffer.vert", "itembuffer.frag", defines_)),
       id_(GL_R32UI, faceResolution_, faceResolution_, faces_ * shooters_),
       depth_(GL_DEPTH_COMPONENT32F, faceResolution_, faceResolution_, faces_ * shooters_) {
   const IndexedItemMesh mesh = indexItemMesh(buildItemMesh(scene, subdivision));
@@ -65,8 +65,8 @@ void ItemBuffer::render(const gl::Buffer& control) {
                   .depthRange = reversed ? gl::DepthRange::Reversed : gl::DepthRange::Standard,
                   .clipDistance0 = true}
       .apply();
-  control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  planes_.bindBase(GL_SHADER_STORAGE_BUFFER, 12);
+  control.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
+  planes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PLANES);
   program_.use();
   vao_.bind();
   target_.clearColor(kNoPolygon);  // every layer
@@ -75,9 +75,11 @@ void ItemBuffer::render(const gl::Buffer& control) {
   gl::drawIndexedTriangles(indexCount_, faces_ * shooters_);
 }
 
-void ItemBuffer::bindForLookup() const {
-  id_.bindUnit(2);
-  depth_.bindUnit(3);
+void ItemBuffer::bindForLookup(const SolverState& state, const gl::Buffer& control, const gl::Buffer& shapes) const {
+  state.bindScene();
+  id_.bindUnit(slot::SAMPLER_ITEM_ID);
+  control.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
+  shapes.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
 }
 
 }  // namespace hemirad

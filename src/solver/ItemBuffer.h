@@ -10,6 +10,7 @@
 #include "gl/Shader.h"
 #include "src/scene/Scene.h"
 #include "src/solver/Projection.h"
+#include "src/solver/SolverState.h"
 
 namespace hemirad {
 
@@ -25,11 +26,12 @@ class ItemBuffer {
              Projection projection = Projection::Orthographic, int shooters = 1);
   // Shader defines that select the projection: every program that looks receivers up needs them.
   const gl::Defines& defines() const { return defines_; }
-  // Draws from the shooters of the pass in `control` (SSBO 3); layers past its shooter count
+  // Draws from the shooters of the pass in `control` (SSBO_CONTROL); layers past its shooter count
   // stay empty, and every triangle is clipped away once the GPU's stop rule has fired.
   void render(const gl::Buffer& control);
-  // Binds the id and depth targets to texture units 2 and 3.
-  void bindForLookup() const;
+  // Binds what shaders/visibility.glsl reads: the scene, the id target, the pass's `control`
+  // and the shooters' `shapes` (formfactor.glsl).
+  void bindForLookup(const SolverState& state, const gl::Buffer& control, const gl::Buffer& shapes) const;
   std::size_t triangles() const { return indexCount_ / 3; }
   // Pixels one shooter's item buffer covers (all its faces): the fill work of a shot.
   std::size_t pixelsPerShooter() const { return std::size_t(faces_) * faceResolution_ * faceResolution_; }

@@ -6,9 +6,9 @@
 #include <fmt/format.h>
 
 #include "gl/Debug.h"
-#include "gl/Shader.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
@@ -27,11 +27,11 @@ PerspectiveView::PerspectiveView(const SolverState& state, const gl::Buffer& nod
       byImportance_(interest > 0),
       resolution_(resolution),
       mesh_(state.scene, state.atlas),
-      ids_(gl::renderProgram("camera.vert", "view_id.frag")),
-      seenPass_(gl::computeProgram("view_surfaces.comp")),
-      importantPass_(gl::computeProgram("important_surfaces.comp")),
-      pendingPass_(gl::computeProgram("pending_blocks.comp")),
-      deferredPass_(gl::computeProgram("deferred_shooters.comp")),
+      ids_(renderProgram("camera.vert", "view_id.frag")),
+      seenPass_(computeProgram("view_surfaces.comp")),
+      importantPass_(computeProgram("important_surfaces.comp")),
+      pendingPass_(computeProgram("pending_blocks.comp")),
+      deferredPass_(computeProgram("deferred_shooters.comp")),
       surfaceView_(surfaces_ * sizeof(glm::uvec4)),
       shotSoFar_(blocks_ * kVec4),
       seen_(surfaces_ * sizeof(std::uint32_t)),
@@ -120,14 +120,14 @@ std::vector<std::uint8_t> PerspectiveView::renderSeen() {
   mesh_.draw();
   gl::barrier(gl::Barrier::Image | gl::Barrier::Framebuffer);
 
-  ids.bindImage(0, GL_READ_ONLY);
-  seen_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
+  ids.bindImage(slot::IMAGE_VIEW_IDS, GL_READ_ONLY);
+  seen_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SEEN);
   seenPass_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(w), 16), gl::groupsFor(unsigned(h), 16));
   gl::barrier(gl::Barrier::Storage);
   if (byImportance_) {
     state_.bindScene();
-    state_.radiosity.bindImage(0, GL_READ_ONLY);
+    state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_ONLY);
     importantPass_.use();
     gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16), gl::groupsFor(unsigned(state_.atlas.height), 16));
   }
@@ -189,9 +189,9 @@ void PerspectiveView::startRound() {
     spans_.upload(0, spans.size() * sizeof(glm::uvec2), spans.data());
     pendingPass_.set("spanCount", unsigned(spans.size()));
     bind();
-    nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, 13);
-    pending_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
-    spans_.bindBase(GL_SHADER_STORAGE_BUFFER, 10);
+    nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODES);
+    pending_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PENDING);
+    spans_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SPANS);
     pendingPass_.use();
     gl::Program::dispatch(gl::groupsFor(unsigned(blocks_), 256));
     gl::barrier(gl::Barrier::BufferUpdate);
@@ -212,9 +212,9 @@ void PerspectiveView::startRound() {
 void PerspectiveView::describeDeliveries(unsigned count, const gl::Buffer& control) {
   count = unsigned(std::min<std::size_t>(count, deliveriesLeft()));
   state_.bindScene();
-  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, 13);
-  control.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  deferredBlocks_.bindBase(GL_SHADER_STORAGE_BUFFER, 9);
+  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODES);
+  control.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
+  deferredBlocks_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_DEFERRED_BLOCKS);
   deferredPass_.set("first", unsigned(next_));
   deferredPass_.set("count", count);
   deferredPass_.use();
@@ -251,10 +251,10 @@ void PerspectiveView::uploadSurfaces() {
 }
 
 void PerspectiveView::bind() const {
-  surfaceView_.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
-  shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, 7);
-  if (snapshots_) snapshots_.bindBase(GL_SHADER_STORAGE_BUFFER, 8);
-  else shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, 8);  // no epoch yet: never read, but bound
+  surfaceView_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SURFACE_VIEW);
+  shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOT_SO_FAR);
+  if (snapshots_) snapshots_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SNAPSHOTS);
+  else shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SNAPSHOTS);  // no epoch yet: never read, but bound
 }
 
 }  // namespace hemirad

@@ -9,10 +9,10 @@
 #include <fmt/format.h>
 
 #include "gl/Debug.h"
-#include "gl/Shader.h"
 #include "gl/State.h"
 #include "src/solver/Control.h"
 #include "src/base/Error.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
@@ -53,7 +53,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   if (settings.importanceDriven()) view_ = std::make_unique<ImportanceView>(state);
   gl::Defines gatherDefines = itemBuffer_->defines();
   gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
-  gather_ = gl::computeProgram("gather.comp", gatherDefines);
+  gather_ = computeProgram("gather.comp", gatherDefines);
   if (perspective) {
     perspective_ = std::make_unique<PerspectiveView>(
         state, nodes_, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep),
@@ -81,14 +81,14 @@ void ProgressiveSolver::setUpTree(const std::vector<ShooterBlock>& blocks, const
   gl::Defines statsDefines = defines;
   statsDefines.push_back({"BLOCK_THREADS", std::to_string(threads)});
   if (settings_.importanceDriven()) statsDefines.push_back({"IMPORTANCE_DRIVEN", "1"});
-  stats_ = gl::computeProgram("node_stats.comp", statsDefines);
+  stats_ = computeProgram("node_stats.comp", statsDefines);
 }
 
 // The reduction levels above the blocks: each workgroup of a level ranks 1024 entries and
 // keeps its best `keep`, until select.comp's one workgroup can rank the rest.
 void ProgressiveSolver::setUpReduction(unsigned keep, const gl::Defines& defines) {
-  reduce_ = gl::computeProgram("reduce.comp");
-  select_ = gl::computeProgram("select.comp", defines);
+  reduce_ = computeProgram("reduce.comp");
+  select_ = computeProgram("select.comp", defines);
   unsigned left = unsigned(blockCount_);
   for (; left > kGroupEntries; left = gl::groupsFor(left, kGroupEntries) * keep)
     levels_.emplace_back(gl::groupsFor(left, kGroupEntries) * keep * sizeof(float[4]));
@@ -125,11 +125,11 @@ ProgressiveSolver::~ProgressiveSolver() = default;
 
 void ProgressiveSolver::selectPass(bool importanceOnly) {
   state_.bindScene();
-  state_.radiosity.bindImage(0, GL_READ_ONLY);
-  state_.deltaB.bindImage(1, GL_READ_ONLY);
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, 13);
-  nodeStats_.bindBase(GL_SHADER_STORAGE_BUFFER, 14);
+  state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_ONLY);
+  state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_READ_ONLY);
+  control_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
+  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODES);
+  nodeStats_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODE_STATS);
   if (perspective_) perspective_->bind();
   stats_.use();
   gl::Program::dispatch(unsigned(blockCount_));
@@ -191,12 +191,12 @@ void ProgressiveSolver::rankPass(Rank rank, bool importanceShooters) {
   reduce_.use();
   reduce_.set("rankBy", rankBy);
   for (gl::Buffer& level : levels_) {
-    level.bindBase(GL_SHADER_STORAGE_BUFFER, 4);
+    level.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_REDUCE_OUT);
     reduce_.set("count", n);
     reduce_.set("fromBlocks", int(fromBlocks));
     gl::Program::dispatch(gl::groupsFor(n, kGroupEntries));
     gl::barrier(gl::Barrier::Storage);
-    level.bindBase(GL_SHADER_STORAGE_BUFFER, 2);
+    level.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_REDUCE_IN);
     n = gl::groupsFor(n, kGroupEntries) * unsigned(settings_.shootersPerPass);
     fromBlocks = false;
   }
@@ -208,16 +208,13 @@ void ProgressiveSolver::rankPass(Rank rank, bool importanceShooters) {
 }
 
 void ProgressiveSolver::gatherPass(Receivers receivers) {
-  state_.bindScene();
   if (perspective_) {
     perspective_->bind();
     gather_.set("viewMode", unsigned(receivers));
   }
-  state_.radiosity.bindImage(0, GL_READ_WRITE);
-  state_.deltaB.bindImage(1, GL_READ_WRITE);
-  itemBuffer_->bindForLookup();
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, 11);
+  state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_WRITE);
+  state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_READ_WRITE);
+  itemBuffer_->bindForLookup(state_, control_, shapes_);
   gather_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
                         gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));

@@ -5,6 +5,7 @@
 
 #include "src/base/Error.h"
 #include "src/base/Hash.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
@@ -49,10 +50,10 @@ SolverState::SolverState(const Scene& s, const Atlas& a)
 }
 
 void SolverState::bindScene() const {
-  polygons.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  polygonVertices.bindBase(GL_SHADER_STORAGE_BUFFER, 10);
-  positionArea.bindUnit(0);
-  polygonOf.bindUnit(1);
+  polygons.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGONS);
+  polygonVertices.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGON_VERTICES);
+  positionArea.bindUnit(slot::SAMPLER_ATLAS_POSITION_AREA);
+  polygonOf.bindUnit(slot::SAMPLER_ATLAS_POLYGON);
 }
 
 std::vector<glm::vec4> shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects) {

@@ -10,6 +10,7 @@
 #include "gl/Objects.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/Scene.h"
+#include "src/solver/ShaderContract.h"  // kMaxShapeVertices, kShapeStride
 
 namespace hemirad {
 
@@ -29,7 +30,7 @@ class SolverState {
   double emittedPower = 0;   // sum over elements of luminance(E) * area
   double farDistance = 0;    // longer than any segment inside the scene
 
-  // Binds the polygon table (SSBO 0), its vertices (SSBO 10) and the atlas (units 0 and 1).
+  // Binds what scene.glsl reads: the polygon table, its vertices and the atlas.
   void bindScene() const;
   std::vector<glm::vec4> readRadiosity() const;  // atlas order, row 0 first
   std::vector<glm::vec4> readDeltaB() const;
@@ -40,8 +41,6 @@ class SolverState {
 // Shooter shapes for shaders/formfactor.glsl: per atlas rectangle (shooter block) kShapeStride
 // vec4s, the first holding the vertex count, then the vertices of Atlas::blockShape. A shape of
 // more than kMaxShapeVertices vertices gets count 0 (the gather then falls back to the disc).
-inline constexpr int kMaxShapeVertices = 12;  // MAX_SHAPE_VERTICES in formfactor.glsl
-inline constexpr int kShapeStride = kMaxShapeVertices + 1;
 std::vector<glm::vec4> shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects);
 
 // Area-weighted mean B per object (the report's `mean_radiosity`, docs/design.md#report), from a B readback.

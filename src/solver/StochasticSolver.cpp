@@ -11,6 +11,7 @@
 #include "gl/State.h"
 #include "src/base/Error.h"
 #include "src/solver/Control.h"
+#include "src/solver/ShaderContract.h"
 #include "src/solver/ShootingPlan.h"
 
 namespace hemirad {
@@ -68,9 +69,9 @@ StochasticSolver::StochasticSolver(SolverState& state, const StochasticSettings&
   const unsigned K = unsigned(settings.shooters);
   itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, itemResolution_, state.farDistance,
                                              settings.projection, settings.shooters);
-  pyramid_ = gl::computeProgram("pyramid.comp");
-  sample_ = gl::computeProgram("sample.comp");
-  update_ = gl::computeProgram("stochastic_update.comp", itemBuffer_->defines());
+  pyramid_ = computeProgram("pyramid.comp");
+  sample_ = computeProgram("sample.comp");
+  update_ = computeProgram("stochastic_update.comp", itemBuffer_->defines());
   pyramid_.set("pyramidSide", side_);
   pyramid_.set("atlasSize", state.atlas.width, state.atlas.height);
   sample_.set("pyramidSide", side_);
@@ -92,8 +93,8 @@ StochasticSolver::~StochasticSolver() = default;
 // Level 0 from B, then each level from the one below: log2(side) + 1 dispatches.
 void StochasticSolver::pyramidPass(const gl::Texture& source) {
   state_.bindScene();
-  source.bindImage(0, GL_READ_ONLY);
-  pyramidSums_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
+  source.bindImage(slot::IMAGE_RADIOSITY, GL_READ_ONLY);
+  pyramidSums_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PYRAMID);
   pyramid_.use();
   for (unsigned l = 0; l < levels_; ++l) {
     pyramid_.set("level", l);
@@ -105,11 +106,11 @@ void StochasticSolver::pyramidPass(const gl::Texture& source) {
 
 void StochasticSolver::samplePass(const gl::Texture& source, std::uint32_t key) {
   state_.bindScene();
-  source.bindImage(0, GL_READ_ONLY);
-  pyramidSums_.bindBase(GL_SHADER_STORAGE_BUFFER, 5);
-  charts_.bindBase(GL_SHADER_STORAGE_BUFFER, 6);
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, 11);
+  source.bindImage(slot::IMAGE_RADIOSITY, GL_READ_ONLY);
+  pyramidSums_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PYRAMID);
+  charts_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CHARTS);
+  control_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
+  shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
   sample_.use();
   sample_.set("iteration", unsigned(key));
   gl::Program::dispatch(gl::groupsFor(unsigned(settings_.shooters), kSampleGroup));
@@ -117,12 +118,9 @@ void StochasticSolver::samplePass(const gl::Texture& source, std::uint32_t key) 
 }
 
 void StochasticSolver::updatePass(float weight, float emission) {
-  state_.bindScene();
-  state_.radiosity.bindImage(0, GL_READ_WRITE);
-  state_.deltaB.bindImage(1, GL_WRITE_ONLY);
-  itemBuffer_->bindForLookup();
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, 11);
+  state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_WRITE);
+  state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_WRITE_ONLY);
+  itemBuffer_->bindForLookup(state_, control_, shapes_);
   update_.use();
   update_.set("weight", weight);
   update_.set("emission", emission);

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gl/Shader.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
@@ -89,7 +89,7 @@ VplLevels planLevels(unsigned vpls, double rhoAvg, int bounces) {
 }
 
 VplTracer::VplTracer(const Scene& scene, const InstantSettings& settings)
-    : scene_(scene), settings_(settings), bvh_(scene), program_(gl::computeProgram("vpl_trace.comp")) {
+    : scene_(scene), settings_(settings), bvh_(scene), program_(computeProgram("vpl_trace.comp")) {
   if (settings.vpls < 1) throw InputError("--vpls must be at least 1");
   rhoAvg_ = areaWeightedReflectance(scene);
   levels_ = planLevels(settings.vpls, rhoAvg_, settings.bounces);
@@ -118,18 +118,18 @@ VplTracer::VplTracer(const Scene& scene, const InstantSettings& settings)
 }
 
 void VplTracer::bind() const {
-  polygons_.bindBase(GL_SHADER_STORAGE_BUFFER, 0);
-  polygonVertices_.bindBase(GL_SHADER_STORAGE_BUFFER, 10);
-  vpls_.bindBase(GL_SHADER_STORAGE_BUFFER, 23);
+  polygons_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGONS);
+  polygonVertices_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGON_VERTICES);
+  vpls_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_VPLS);
 }
 
 void VplTracer::dispatch() {
   vpls_.clear(0u);  // slots of paths that ended early keep zero flux
   bind();
-  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, 20);
-  triangles_.bindBase(GL_SHADER_STORAGE_BUFFER, 21);
-  emitterTable_.bindBase(GL_SHADER_STORAGE_BUFFER, 22);
-  pathEnds_.bindBase(GL_SHADER_STORAGE_BUFFER, 24);
+  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_NODES);
+  triangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
+  emitterTable_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_EMITTERS);
+  pathEnds_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PATH_ENDS);
   program_.set("seed", settings_.seed);
   program_.use();
   gl::Program::dispatch(gl::groupsFor(levels_.count[0], 64));

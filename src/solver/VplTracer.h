@@ -61,11 +61,11 @@ class VplTracer {
  public:
   // Uploads the BVH, the polygon table and the emitters; throws InputError if nothing emits.
   VplTracer(const Scene& scene, const InstantSettings& settings);
-  // Traces the paths into the VPL buffer (SSBO 23) and reads the path ends back.
+  // Traces the paths into the VPL buffer (SSBO_VPLS) and reads the path ends back.
   VplStats trace();
   // The same trace without reading anything back (no wait for the GPU: the bench's full frame).
   void dispatch();
-  // Binds the polygon table (SSBO 0), its vertices (SSBO 10) and the VPLs (SSBO 23).
+  // Binds the polygon table, its vertices and the VPLs (scene.glsl, vpl.glsl).
   void bind() const;
   std::vector<GpuVpl> readVpls() const;
   const VplLevels& levels() const { return levels_; }

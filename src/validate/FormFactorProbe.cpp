@@ -3,16 +3,16 @@
 #include <chrono>
 
 #include "gl/Debug.h"
-#include "gl/Shader.h"
 #include "gl/State.h"
 #include "src/solver/Control.h"
+#include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
 FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int resolution, Projection projection)
     : state_(state),
       itemBuffer_(state.scene, subdivision, resolution, state.farDistance, projection),
-      program_(gl::computeProgram("formfactor_probe.comp", itemBuffer_.defines())),
+      program_(computeProgram("formfactor_probe.comp", itemBuffer_.defines())),
       control_(sizeof(ControlBlock)),
       result_(GL_RGBA32F, state.atlas.width, state.atlas.height) {
   program_.set("farDistance", float(state.farDistance));
@@ -38,11 +38,8 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   gl::finish();
   auto t0 = std::chrono::steady_clock::now();
   itemBuffer_.render(control_);
-  state_.bindScene();
-  itemBuffer_.bindForLookup();
-  result_.bindImage(0, GL_WRITE_ONLY);
-  control_.bindBase(GL_SHADER_STORAGE_BUFFER, 3);
-  shape_.bindBase(GL_SHADER_STORAGE_BUFFER, 11);
+  itemBuffer_.bindForLookup(state_, control_, shape_);
+  result_.bindImage(slot::IMAGE_PROBE, GL_WRITE_ONLY);
   program_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(a.width), 16), gl::groupsFor(unsigned(a.height), 16));
   gl::barrier(gl::Barrier::TextureUpdate);

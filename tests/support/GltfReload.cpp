@@ -7,6 +7,8 @@
 #include <cstring>
 #include <glm/gtc/quaternion.hpp>
 
+#include "src/scene/Scene.h"  // luminance
+
 namespace hemirad::test {
 
 namespace {
@@ -103,7 +105,7 @@ ReloadedGltf reloadGltf(const std::string& path) {
 
 Bands bandLuminance(const Image& image, const std::vector<int>& surface) {
   const int w = image.width, h = image.height;
-  auto lum = [&](std::size_t p) { return 0.2126 * image.rgb[p * 3] + 0.7152 * image.rgb[p * 3 + 1] + 0.0722 * image.rgb[p * 3 + 2]; };
+  auto lum = [&](std::size_t p) { return luminance(glm::dvec3(image.rgb[p * 3], image.rgb[p * 3 + 1], image.rgb[p * 3 + 2])); };
   auto at = [&](int x, int y) { return x >= 0 && y >= 0 && x < w && y < h ? surface[std::size_t(y) * w + std::size_t(x)] : -3; };
   // An edge pixel: its samples saw two surfaces, or (one sample a pixel) a neighbour sees another.
   std::vector<char> edge(surface.size());
