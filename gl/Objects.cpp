@@ -8,6 +8,7 @@
 
 #include "gl/Backend.h"
 #include "gl/Debug.h"
+#include "gl/Limits.h"
 
 namespace hemirad::gl {
 
@@ -58,7 +59,11 @@ void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
 void Buffer::read(std::size_t offset, std::size_t bytes, void* out) const {
   glGetNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), out);
 }
-void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id_); }
+void Buffer::bindBase(GLenum target, GLuint index) const {
+  // Past the limit a shader would read garbage, not fail: refused by name instead.
+  if (target == GL_SHADER_STORAGE_BUFFER) requireStorageBlock(size_, fmt::format("shader storage binding {}", index));
+  glBindBufferBase(target, index, id_);
+}
 void Buffer::bind(GLenum target) const { glBindBuffer(target, id_); }
 void Buffer::clear(float value) { glClearNamedBufferData(id_, GL_R32F, GL_RED, GL_FLOAT, &value); }
 void Buffer::clear(std::uint32_t value) {
