@@ -6,6 +6,7 @@
 
 #include "gl/Debug.h"
 #include "gl/GL.h"
+#include "gl/Limits.h"
 
 namespace hemirad::gl {
 
@@ -44,6 +45,7 @@ void RenderBackend::loadFunctions(void* (*resolve)(const char*), bool debug) {
   int major = GLAD_VERSION_MAJOR(version), minor = GLAD_VERSION_MINOR(version);
   if (major * 10 + minor < 45)
     throw Error(fmt::format("{}: GL {}.{} found, hemirad needs GL 4.5 core", name(), major, minor));
+  forgetLimits();  // another context may be another driver
   if (debug) enableDebugOutput();
 }
 

@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <functional>
 #include <string>
 
 #include "gl/Backend.h"
 #include "gl/Debug.h"
+#include "gl/Limits.h"
 
 namespace hemirad::gl {
 
@@ -39,6 +41,29 @@ void checkAllocation(const std::function<std::string()>& what) {
 }
 }  // namespace
 
+namespace {
+std::atomic<std::size_t> allocated{0}, peak{0};  // the viewer allocates on its worker thread
+}  // namespace
+
+std::size_t allocatedBytes() { return allocated.load(); }
+std::size_t peakAllocatedBytes() { return peak.load(); }
+void resetPeakAllocatedBytes() { peak.store(allocated.load()); }
+
+Allocation::Allocation(std::size_t bytes) : bytes_(bytes) {
+  const std::size_t now = allocated += bytes;
+  std::size_t most = peak.load();
+  while (now > most && !peak.compare_exchange_weak(most, now)) {
+  }
+}
+Allocation::~Allocation() { allocated -= bytes_; }
+Allocation& Allocation::operator=(Allocation&& o) noexcept {
+  if (this != &o) {
+    allocated -= bytes_;
+    bytes_ = std::exchange(o.bytes_, 0);
+  }
+  return *this;
+}
+
 void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
 bool isBuffer(GLuint id) { return glIsBuffer(id) == GL_TRUE; }
 bool isTexture(GLuint id) { return glIsTexture(id) == GL_TRUE; }
@@ -53,6 +78,7 @@ Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
   glCreateBuffers(1, &id_);
   glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes ? bytes : 4), data, GL_DYNAMIC_STORAGE_BIT);
   checkAllocation([&] { return fmt::format("a buffer of {} bytes ({})", bytes, formatBytes(double(bytes))); });
+  allocation_ = Allocation(bytes);
 }
 void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
   glNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
@@ -60,7 +86,11 @@ void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
 void Buffer::read(std::size_t offset, std::size_t bytes, void* out) const {
   glGetNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), out);
 }
-void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id_); }
+void Buffer::bindBase(GLenum target, GLuint index) const {
+  // Past the limit a shader would read garbage, not fail: refused by name instead.
+  if (target == GL_SHADER_STORAGE_BUFFER) requireStorageBlock(size_, fmt::format("shader storage binding {}", index));
+  glBindBufferBase(target, index, id_);
+}
 void Buffer::bind(GLenum target) const { glBindBuffer(target, id_); }
 void Buffer::clear(float value) { glClearNamedBufferData(id_, GL_R32F, GL_RED, GL_FLOAT, &value); }
 void Buffer::clear(std::uint32_t value) {
@@ -79,12 +109,14 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
     glTextureStorage3D(id_, 1, internalFormat, width, height, layers);
   else
     glTextureStorage2D(id_, 1, internalFormat, width, height);
+  int texel = 0;
+  const std::string name = formatName(internalFormat, texel);
+  const std::size_t bytes = std::size_t(texel) * std::size_t(width) * std::size_t(height) * std::size_t(std::max(layers, 1));
   checkAllocation([&] {
-    int texel = 0;
-    std::string name = formatName(internalFormat, texel);
     return fmt::format("a {} x {}{} {} texture ({})", width, height, layers ? fmt::format(" x {}", layers) : "", name,
-                       formatBytes(double(texel) * width * height * std::max(layers, 1)));
+                       formatBytes(double(bytes)));
   });
+  allocation_ = Allocation(bytes);
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

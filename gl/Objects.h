@@ -37,6 +37,25 @@ class Handle {
   GLuint id_ = 0;
 };
 
+// Device bytes in live Buffers and Textures: what hemirad asked the driver for (its own
+// overhead and a context's framebuffers not counted), reported per element by info and bench.
+std::size_t allocatedBytes();
+std::size_t peakAllocatedBytes();  // since the last reset
+void resetPeakAllocatedBytes();    // the peak becomes what is allocated now
+
+// Counts its bytes in allocatedBytes() while it lives; a move hands them on.
+class Allocation {
+ public:
+  Allocation() = default;
+  explicit Allocation(std::size_t bytes);
+  ~Allocation();
+  Allocation(Allocation&& o) noexcept : bytes_(std::exchange(o.bytes_, 0)) {}
+  Allocation& operator=(Allocation&& o) noexcept;
+
+ private:
+  std::size_t bytes_ = 0;
+};
+
 void deleteBuffer(GLuint);
 void deleteTexture(GLuint);
 void deleteFramebuffer(GLuint);
@@ -65,6 +84,7 @@ class Buffer : public Handle<deleteBuffer> {
 
  private:
   std::size_t size_ = 0;
+  Allocation allocation_;
 };
 
 class Texture : public Handle<deleteTexture> {
@@ -88,6 +108,7 @@ class Texture : public Handle<deleteTexture> {
  private:
   int width_ = 0, height_ = 0, layers_ = 0;
   GLenum format_ = 0;
+  Allocation allocation_;
 };
 
 class Framebuffer : public Handle<deleteFramebuffer> {

@@ -7,10 +7,13 @@
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "shooter_tree.glsl"
+#include "linear_group.glsl"
 
 layout(local_size_x = BLOCK_THREADS) in;
 layout(binding = IMAGE_RADIOSITY, rgba32f) uniform readonly image2D radiosity;  // a: received importance I - R
 layout(binding = IMAGE_DELTA_B, rgba32f) uniform readonly image2D deltaB;     // a: unshot importance dI
+
+uniform uint blockCount;
 
 const float NONE = 3.4e38;
 const uint THREADS = uint(BLOCK_THREADS);
@@ -60,7 +63,8 @@ uint levelStart(uint block, uint d) {
 }
 
 void main() {
-  uint block = gl_WorkGroupID.x, l = gl_LocalInvocationID.x;
+  uint block = linearGroup(), l = gl_LocalInvocationID.x;
+  if (block >= blockCount) return;  // past the count in the tiled grid: the whole group leaves
   uint depth = nodes[block].depth, leaves = 1u << (2u * depth), threads = THREADS / leaves;
   uint leaf = l / threads, sub = l % threads;
   partial[l] = leafPart(nodes[nodes[block].firstLeaf + leaf].rect, sub, threads);

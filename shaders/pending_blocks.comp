@@ -4,6 +4,7 @@
 // strongest are delivered first.
 #include "hemisphere.glsl"
 #include "shooter_tree.glsl"
+#include "linear_group.glsl"
 
 layout(local_size_x = 256) in;
 layout(std430, binding = SSBO_SNAPSHOTS) readonly buffer Snapshots { vec4 snapshot[]; };
@@ -13,7 +14,7 @@ uniform uint blockCount;
 uniform uint spanCount;
 
 void main() {
-  uint b = gl_GlobalInvocationID.x;
+  uint b = linearInvocation(gl_WorkGroupSize.x);
   if (b >= blockCount) return;
   bool any = false;
   float most = 0.0;

@@ -4,13 +4,15 @@
 #include "scene.glsl"
 #include "shooter_tree.glsl"
 #include "reduce_entry.glsl"
+#include "linear_group.glsl"
 
 layout(local_size_x = 256) in;
 layout(std430, binding = SSBO_REDUCE_OUT) writeonly buffer Out { Entry dst[]; };
 
 void main() {
-  uint first = gl_WorkGroupID.x * GROUP_ENTRIES;
+  uint group = linearGroup(), first = group * GROUP_ENTRIES;
+  if (first >= count) return;  // past the count in the tiled grid: the whole group leaves
   rankGroup(first, min(first + GROUP_ENTRIES, count));
   uint l = gl_LocalInvocationID.x;
-  if (l < keep) dst[gl_WorkGroupID.x * keep + l] = Entry(rankPower[l], rankIndex[l], l == 0u ? groupSum[0] : 0.0, 0.0);
+  if (l < keep) dst[group * keep + l] = Entry(rankPower[l], rankIndex[l], l == 0u ? groupSum[0] : 0.0, 0.0);
 }

@@ -10,6 +10,7 @@ layout(local_size_x = 64) in;
 #include "scene.glsl"
 #include "bvh.glsl"
 #include "vpl.glsl"
+#include "linear_group.glsl"
 
 struct Emitter {
   vec4 v0;    // w: cumulative power fraction up to and including this triangle
@@ -48,7 +49,7 @@ vec3 cosineDirection(vec3 n, uint path, uint level) {
 }
 
 void main() {
-  uint path = gl_GlobalInvocationID.x;
+  uint path = linearInvocation(gl_WorkGroupSize.x);
   if (path >= levelCount[0]) return;
   uint e = pickEmitter((float(path) + uniformDraw(seed, path, 0u, 0u)) / float(levelCount[0]));
   float u = uniformDraw(seed, path, 0u, 1u), v = uniformDraw(seed, path, 0u, 4u);

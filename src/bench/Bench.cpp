@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <utility>
@@ -11,6 +12,7 @@
 #include "src/base/AtomicFile.h"
 #include "src/base/Clock.h"
 #include "src/base/DataDir.h"
+#include "src/base/ResidentMemory.h"
 #include "src/scene/Camera.h"
 #include "src/bench/Ceilings.h"
 #include "src/bench/StochasticBench.h"
@@ -33,6 +35,9 @@ struct BenchRow {
   std::size_t elements = 0, itemTriangles = 0, itemPixels = 0, shooterBlocks = 0;
   int itemResolution = 0;
   std::optional<double> gpuMemoryMiB;  // what the solve holds on the device, where the driver says
+  std::size_t triangles = 0;           // the scene's, its polygons fanned
+  std::size_t allocatedBytes = 0;      // the most the solve's buffers and textures held (gl::allocatedBytes)
+  std::size_t residentBytes = 0;       // the process's resident peak after the row (VmHWM)
   int shootersPerPass = 1;
   unsigned shots = 0;
   double convergence = 0, solveMs = 0, msPerShot = 0;
@@ -87,6 +92,8 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   warmUp(backend, scene, atlas, settings, camera);
   backend.finish();
   const std::optional<double> freeBefore = backend.freeMemoryMiB();
+  const std::size_t allocatedBefore = gl::allocatedBytes();
+  gl::resetPeakAllocatedBytes();
   SolverState state(scene, atlas);
   ProgressiveSolver solver(state, settings);
   if (solver.viewDriven()) solver.look(camera, 1.0);
@@ -94,6 +101,9 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   row.solveMs = runToStop(backend, solver, status, &settings.stop);
   if (const std::optional<double> freeAfter = backend.freeMemoryMiB(); freeBefore && freeAfter)
     row.gpuMemoryMiB = *freeBefore - *freeAfter;
+  row.allocatedBytes = gl::peakAllocatedBytes() - allocatedBefore;
+  for (const auto& p : scene.polygons()) row.triangles += p.vertices.size() - 2;
+  if (const std::optional<ResidentMemory> m = residentMemory()) row.residentBytes = m->peakBytes;
   row.shots = status.shots;
   row.convergence = status.convergence;
   row.msPerShot = row.shots ? row.solveMs / row.shots : 0;
@@ -201,8 +211,8 @@ std::string printedSetting(int value, int autoValue, const char* suffix = "") {
 // makes the fragments more) and gather texel updates, per second of their pass.
 std::string tableHeader(const BenchOptions& o) {
   return fmt::format("| scene | elements | shooter blocks | item res | shooters/pass | shots | time to {:.0f}% (ms) | ms/shot | "
-                     "GPU MiB | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s |{}\n"
-                     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
+                     "GPU MiB | GPU alloc MiB (B/element, B/triangle) | resident MiB (B/element, B/triangle) | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s |{}\n"
+                     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
                      o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
                      o.ceiling ? "---|---|---|" : "");
 }
@@ -215,9 +225,13 @@ std::string rowMarkdown(const BenchRow& r, const Ceilings* ceiling) {
                             100 * r.gatherUpdatesPerSecond / ceiling->invocationsPerSecond)
               : "";
   const std::string memory = r.gpuMemoryMiB ? fmt::format("{:.0f}", *r.gpuMemoryMiB) : "n/a";
-  return fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
+  const auto perUnit = [&r](std::size_t bytes) {
+    return fmt::format("{:.1f} ({:.0f}, {:.0f})", bytes / 1048576.0, double(bytes) / double(std::max<std::size_t>(r.elements, 1)),
+                       double(bytes) / double(std::max<std::size_t>(r.triangles, 1)));
+  };
+  return fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
                      r.scene, r.elements, r.shooterBlocks, r.itemResolution, r.shootersPerPass, r.shots, r.solveMs,
-                     r.msPerShot, memory, r.split.itemBuffer,
+                     r.msPerShot, memory, perUnit(r.allocatedBytes), perUnit(r.residentBytes), r.split.itemBuffer,
                      r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
                      r.gatherUpdatesPerSecond, fractions);
 }
@@ -228,6 +242,11 @@ nlohmann::json rowJson(const BenchRow& r) {
           {"shots", r.shots}, {"convergence", r.convergence}, {"time_to_converge_ms", r.solveMs},
           {"ms_per_shot", r.msPerShot},
           {"gpu_memory_mib", r.gpuMemoryMiB ? nlohmann::json(*r.gpuMemoryMiB) : nlohmann::json()},
+          {"triangles", r.triangles}, {"gpu_allocated_bytes", r.allocatedBytes}, {"resident_peak_bytes", r.residentBytes},
+          {"gpu_allocated_bytes_per_element", double(r.allocatedBytes) / double(std::max<std::size_t>(r.elements, 1))},
+          {"gpu_allocated_bytes_per_triangle", double(r.allocatedBytes) / double(std::max<std::size_t>(r.triangles, 1))},
+          {"resident_peak_bytes_per_element", double(r.residentBytes) / double(std::max<std::size_t>(r.elements, 1))},
+          {"resident_peak_bytes_per_triangle", double(r.residentBytes) / double(std::max<std::size_t>(r.triangles, 1))},
           {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
                                  {"select", r.split.select}, {"readback", r.split.readback}}},
           {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},

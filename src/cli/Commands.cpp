@@ -38,7 +38,7 @@ Commands::Commands() {
   app.set_version_flag("--version", versionString());
   addSolve();
 
-  infoCmd = app.add_subcommand("info", "Describe a scene: objects, polygons, area, emitters, elements");
+  infoCmd = app.add_subcommand("info", "Describe a scene: objects, polygons, area, emitters, elements, GPU and resident memory");
   addScene(infoCmd, info.scene, info.load, info.discretisation);
   add(infoCmd, "--item-subdiv", info.itemSubdivision);
 

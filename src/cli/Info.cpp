@@ -2,11 +2,46 @@
 
 #include <map>
 
+#include "gl/Backend.h"
+#include "src/base/Error.h"
+#include "src/base/ResidentMemory.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/ItemMesh.h"
 #include "src/cli/Solve.h"
+#include "src/solver/ProgressiveSolver.h"
+#include "src/solver/SolverState.h"
 
 namespace hemirad {
+
+namespace {
+
+std::size_t triangleCount(const Scene& scene) {
+  std::size_t n = 0;
+  for (const auto& p : scene.polygons()) n += p.vertices.size() - 2;
+  return n;
+}
+
+// What a progressive solve at solve's defaults holds: the GPU buffers and textures its state and
+// solver allocate (set up, not run), and this process's resident peak by then. A scene the GPU
+// cannot hold says why here.
+void printFootprint(const Scene& scene, const Atlas& atlas, const InfoOptions& o) {
+  const std::size_t triangles = triangleCount(scene);
+  try {
+    auto backend = gl::createBackend({});
+    const std::size_t before = gl::allocatedBytes();
+    SolverState state(scene, atlas);
+    ProgressiveSettings settings;
+    settings.itemSubdivision = o.itemSubdivision;
+    ProgressiveSolver solver(state, settings);
+    fmt::print("gpu memory   {} at solve's defaults\n", bytesPerUnit(gl::allocatedBytes() - before, atlas.elements, triangles));
+  } catch (const std::exception& e) {  // InputError or gl::Error: the solve would fail the same way
+    fmt::print("gpu memory   not measured: {}\n", e.what());
+  }
+  if (const std::optional<ResidentMemory> m = residentMemory())
+    fmt::print("resident     {} at its peak\n", bytesPerUnit(m->peakBytes, atlas.elements, triangles));
+}
+
+}  // namespace
 
 int runInfo(const InfoOptions& o) {
   Scene scene = loadScene(o.scene, o.load);
@@ -42,6 +77,8 @@ int runInfo(const InfoOptions& o) {
   fmt::print("texel size   {:.6g}\nelements     {}\natlas        {} x {}\n", ts / u, atlas.elements, atlas.width, atlas.height);
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);
+  fmt::print("triangles    {}\n", triangleCount(scene));
+  printFootprint(scene, atlas, o);
   fmt::print("warnings     {}\n", scene.warnings.size());
   for (const auto& line : warningLines(scene.warnings)) fmt::print("  {}\n", line);
   fmt::print("\n{:<20} {:>8} {:>12} {:>9}  materials\n", "object", "polygons", "area", "elements");

@@ -13,6 +13,12 @@ namespace {
 
 constexpr int kWidthsPerTurn = 128;  // strip widths tried per way of turning the charts (and heuristic)
 constexpr int kMaxSide = 16384;      // GL 4's least GL_MAX_TEXTURE_SIZE
+// Charts placed over all candidates, at most (past 1,000 charts fewer widths: a large set packs
+// alike at nearby widths), so the candidates' count falls as the charts grow.
+constexpr double kPlacements = 3.0 * 2 * kWidthsPerTurn * 1000;
+constexpr int kLeastWidths = 2;
+// One chart at a time turned repacks everything per chart: only up to this many charts.
+constexpr std::size_t kTurnedOneByOne = 1000;
 
 struct Candidate {
   int width = 0, heuristic = 0;
@@ -62,14 +68,14 @@ bool better(const Packed& a, const Packed& b) {
   return a.withinAspect != b.withinAspect ? a.withinAspect : a.texels < b.texels;
 }
 
-}  // namespace
-
-ChartLayout packCharts(const std::vector<glm::ivec2>& sizes, int trim, double maxAspect) {
+// The best of the candidates: charts as they are, all lying (w >= h), all standing, each over
+// strip widths from the squarest the aspect allows to the longest, and both heuristics.
+Packed bestStrip(const std::vector<glm::ivec2>& sizes, int trim, double maxAspect, Candidate& bestCandidate) {
   double area = 0;
   for (glm::ivec2 s : sizes) area += double(s.x) * s.y;
+  const int widths = int(std::clamp(kPlacements / (6.0 * double(sizes.size())), double(kLeastWidths), double(kWidthsPerTurn)));
   Packed best;
-  Candidate bestCandidate;
-  for (int turn = 0; turn < 3; ++turn) {  // charts as they are, all lying (w >= h), all standing
+  for (int turn = 0; turn < 3; ++turn) {
     Candidate c;
     int widest = 1;
     for (glm::ivec2 s : sizes) {
@@ -78,18 +84,29 @@ ChartLayout packCharts(const std::vector<glm::ivec2>& sizes, int trim, double ma
     }
     const int first = std::max(widest, int(std::sqrt(area / maxAspect)));
     const int last = std::max(first, int(std::ceil(std::sqrt(area * maxAspect))) + 2 * trim);
-    const int step = std::max(1, (last - first) / kWidthsPerTurn);
+    const int step = std::max(1, (last - first) / widths);
     for (c.width = first; c.width <= last; c.width += step)
       for (int heuristic : {STBRP_HEURISTIC_Skyline_BL_sortHeight, STBRP_HEURISTIC_Skyline_BF_sortHeight}) {
         c.heuristic = heuristic;
         if (Packed p = packStrip(sizes, c, trim, maxAspect); better(p, best)) best = std::move(p), bestCandidate = c;
       }
   }
+  return best;
+}
+
+}  // namespace
+
+ChartLayout packCharts(const std::vector<glm::ivec2>& sizes, int trim, double maxAspect) {
+  Candidate bestCandidate;
+  Packed best = bestStrip(sizes, trim, maxAspect, bestCandidate);
   if (!best.ok) fail("the lightmap's charts do not pack");  // stb packs any set into a wide enough strip
-  // Then one chart at a time turned in the best strip, kept where it saves texels (twice over):
-  // a turned chart can fill a gap the others leave.
+  // Then, for few charts, one chart at a time turned in the best strip, kept where it saves
+  // texels (twice over): a turned chart can fill a gap the others leave. A square turned is
+  // the same chart.
+  if (sizes.size() > kTurnedOneByOne) return best.layout;
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t i = 0; i < sizes.size(); ++i) {
+      if (sizes[i].x == sizes[i].y) continue;
       Candidate c = bestCandidate;
       c.transposed[i] = !c.transposed[i];
       if (Packed p = packStrip(sizes, c, trim, maxAspect); better(p, best)) best = std::move(p), bestCandidate = std::move(c);

@@ -6,7 +6,9 @@
 #include <cctype>
 #include <cstring>
 #include <filesystem>
+#include <numeric>
 #include <sstream>
+#include <utility>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -144,18 +146,26 @@ void addCamera(tinygltf::Model& m, const Scene& scene, const Camera& camera, dou
 }
 
 // One mesh and one named node per scene object (what engines select, hide and instance), a
-// primitive per material it uses. Materials keep the scene's indices.
+// primitive per material it uses. Materials keep the scene's indices. Polygons are visited in
+// (object, material, id) order, so memory grows with the polygons, not objects x materials.
 void addObjects(tinygltf::Model& m, const Scene& scene, const Atlas& atlas, const Lightmap& map) {
-  std::vector<std::vector<Streams>> streams(scene.objects.size(), std::vector<Streams>(scene.materials.size()));
-  for (std::size_t id = 0; id < scene.polygons().size(); ++id) {
-    const ScenePolygon& p = scene.polygons()[id];
-    addPolygon(streams[std::size_t(p.object)][std::size_t(p.material)], scene, atlas, map, int(id));
-  }
-  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+  const std::vector<ScenePolygon>& polygons = scene.polygons();
+  std::vector<std::uint32_t> order(polygons.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::pair(polygons[a].object, polygons[a].material) < std::pair(polygons[b].object, polygons[b].material);
+  });
+  for (std::size_t k = 0; k < order.size();) {
+    const int object = polygons[order[k]].object;
     tinygltf::Mesh mesh;
-    mesh.name = scene.objects[o].name;
-    for (std::size_t mat = 0; mat < scene.materials.size(); ++mat)
-      if (!streams[o][mat].indices.empty()) mesh.primitives.push_back(primitive(m, streams[o][mat], int(mat)));
+    mesh.name = scene.objects[std::size_t(object)].name;
+    while (k < order.size() && polygons[order[k]].object == object) {
+      const int material = polygons[order[k]].material;
+      Streams streams;
+      for (; k < order.size() && polygons[order[k]].object == object && polygons[order[k]].material == material; ++k)
+        addPolygon(streams, scene, atlas, map, int(order[k]));
+      if (!streams.indices.empty()) mesh.primitives.push_back(primitive(m, streams, material));
+    }
     if (mesh.primitives.empty()) continue;
     m.meshes.push_back(mesh);
     tinygltf::Node node;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "gl/Debug.h"
+#include "gl/Limits.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
 #include "src/solver/ShaderContract.h"
@@ -140,8 +141,11 @@ std::vector<std::uint8_t> PerspectiveView::renderSeen() {
 int PerspectiveView::takeEpoch() {
   for (unsigned e = 0; e < capacity_; ++e)
     if (!slotUsed_[e]) return slotUsed_[e] = 1, int(e);
-  if (capacity_ == kMaxEpochs) return -1;
-  const unsigned grown = std::min(kMaxEpochs, std::max(kFirstEpochs, 2 * capacity_));
+  // The snapshots are one storage block: on a large scene fewer epochs fit than kMaxEpochs.
+  const std::size_t epochBytes = std::max<std::size_t>(blocks_, 1) * kVec4;
+  const unsigned most = unsigned(std::min<std::size_t>(kMaxEpochs, gl::limits().storageBlockBytes / epochBytes));
+  if (capacity_ >= most) return -1;
+  const unsigned grown = std::min(most, std::max(kFirstEpochs, 2 * capacity_));
   gl::Buffer bigger(std::size_t(grown) * blocks_ * kVec4);
   if (capacity_) snapshots_.copyTo(bigger, 0, 0, std::size_t(capacity_) * blocks_ * kVec4);
   snapshots_ = std::move(bigger);
@@ -193,7 +197,7 @@ void PerspectiveView::startRound() {
     pending_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PENDING);
     spans_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SPANS);
     pendingPass_.use();
-    gl::Program::dispatch(gl::groupsFor(unsigned(blocks_), 256));
+    gl::dispatchLinear(gl::groupsFor(unsigned(blocks_), 256));
     gl::barrier(gl::Barrier::BufferUpdate);
     std::vector<float> power(blocks_);
     pending_.read(0, power.size() * sizeof(float), power.data());

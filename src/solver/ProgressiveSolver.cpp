@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "gl/Debug.h"
+#include "gl/Limits.h"
 #include "gl/State.h"
 #include "src/solver/Control.h"
 #include "src/base/Error.h"
@@ -72,6 +73,9 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
 void ProgressiveSolver::setUpTree(const std::vector<ShooterBlock>& blocks, const gl::Defines& defines) {
   const ShooterTree tree = buildShooterTree(state_.atlas, blocks, settings_.splitDepth);
   blockCount_ = tree.blocks;
+  // The largest per-node table: refused before any upload when one storage block cannot hold it.
+  gl::requireStorageBlock(tree.nodes.size() * kShapeStride * sizeof(glm::vec4),
+                          fmt::format("the shapes of {} shooter-tree nodes", tree.nodes.size()));
   nodes_ = gl::Buffer(std::span<const ShooterNode>(tree.nodes));
   nodeStats_ = gl::Buffer(tree.nodes.size() * sizeof(glm::vec4[4]));
   std::vector<glm::ivec4> rects;
@@ -82,6 +86,7 @@ void ProgressiveSolver::setUpTree(const std::vector<ShooterBlock>& blocks, const
   statsDefines.push_back({"BLOCK_THREADS", std::to_string(threads)});
   if (settings_.importanceDriven()) statsDefines.push_back({"IMPORTANCE_DRIVEN", "1"});
   stats_ = computeProgram("node_stats.comp", statsDefines);
+  stats_.set("blockCount", unsigned(blockCount_));
 }
 
 // The reduction levels above the blocks: each workgroup of a level ranks 1024 entries and
@@ -132,7 +137,7 @@ void ProgressiveSolver::selectPass(bool importanceOnly) {
   nodeStats_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODE_STATS);
   if (perspective_) perspective_->bind();
   stats_.use();
-  gl::Program::dispatch(unsigned(blockCount_));
+  gl::dispatchLinear(blockCount_);  // a workgroup a block: past 65,535 blocks the grid tiles
   gl::barrier(gl::Barrier::Storage);
   if (!importanceOnly) rankPass(settings_.importanceDriven() ? Rank::PowerByImportance : Rank::Power, false);
   if (settings_.importanceDriven()) rankPass(Rank::Importance, true);
@@ -194,7 +199,7 @@ void ProgressiveSolver::rankPass(Rank rank, bool importanceShooters) {
     level.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_REDUCE_OUT);
     reduce_.set("count", n);
     reduce_.set("fromBlocks", int(fromBlocks));
-    gl::Program::dispatch(gl::groupsFor(n, kGroupEntries));
+    gl::dispatchLinear(gl::groupsFor(n, kGroupEntries));
     gl::barrier(gl::Barrier::Storage);
     level.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_REDUCE_IN);
     n = gl::groupsFor(n, kGroupEntries) * unsigned(settings_.shootersPerPass);

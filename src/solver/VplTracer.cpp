@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gl/Limits.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
 #include "src/solver/ShaderContract.h"
@@ -132,7 +133,7 @@ void VplTracer::dispatch() {
   pathEnds_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PATH_ENDS);
   program_.set("seed", settings_.seed);
   program_.use();
-  gl::Program::dispatch(gl::groupsFor(levels_.count[0], 64));
+  gl::dispatchLinear(gl::groupsFor(levels_.count[0], 64));
   gl::barrier(gl::Barrier::Storage | gl::Barrier::BufferUpdate);
 }
 
