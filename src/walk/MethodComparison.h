@@ -22,7 +22,6 @@ struct MethodComparisonOptions {
   std::uint32_t seed = 1;
   std::string out;  // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
   gl::BackendOptions backend;
-  std::string backendName = "osmesa";
 };
 
 int runMethodComparison(MethodComparisonOptions options);

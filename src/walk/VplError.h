@@ -27,7 +27,6 @@ struct VplErrorOptions {
   std::string out;  // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
   std::string sideBySide;  // a PNG: instant (largest count) | progressive
   gl::BackendOptions backend;
-  std::string backendName = "osmesa";
 };
 
 int runVplError(VplErrorOptions options);
