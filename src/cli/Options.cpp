@@ -43,6 +43,20 @@ CLI::Validator names(const std::vector<std::string>& names) {
   return CLI::Validator(CLI::IsMember(names)).description(fmt::format("{}", fmt::join(names, "|")));
 }
 
+// One of `names`, stored as its enumerator's number: what CLI11 reads into a bound enumeration.
+template <class T>
+CLI::Validator enumeration(const std::vector<std::pair<std::string, T>>& names) {
+  std::vector<std::string> listed;
+  for (const auto& [name, value] : names) listed.push_back(name);
+  return CLI::Validator(
+      [names, listed](std::string& v) {
+        for (const auto& [name, value] : names)
+          if (v == name) return v = std::to_string(int(value)), std::string();
+        return fmt::format("{} not in {{{}}}", v, fmt::join(listed, ","));
+      },
+      fmt::format("{}", fmt::join(listed, "|")));
+}
+
 // --hemisphere: a canonical name or an alias (parseProjectionFlag warns for the old one), stored as
 // the Projection's number, as CLI11 stores an enumeration into a bound field; validate's `all`
 // as kAllProjections.
@@ -181,9 +195,8 @@ std::vector<Flag> deviceAndOutputFlags() {
   return {
       // The GL backend.
       {"--backend", "NAME", "GL backend: osmesa, egl or auto",
-       CLI::Validator(CLI::CheckedTransformer(std::map<std::string, gl::BackendKind>{
-                          {"osmesa", gl::BackendKind::OSMesa}, {"egl", gl::BackendKind::Egl}, {"auto", gl::BackendKind::Auto}}))
-           .description("osmesa|egl|auto"),
+       enumeration<gl::BackendKind>({{"osmesa", gl::BackendKind::OSMesa}, {"egl", gl::BackendKind::Egl},
+                                     {"auto", gl::BackendKind::Auto}}),
        "osmesa"},
       {"--gpu", "INDEX", "EGL device index", CLI::Range(0, 1023), "the first hardware device"},
       {"--gl-debug", "", "Report GL errors through KHR_debug", none},
