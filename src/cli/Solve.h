@@ -37,7 +37,7 @@ struct SolveOptions {
   bool progress = true;
 };
 
-// Runs options.method; AtlasMethod::solve, below, for the methods with a Solver.
+// Runs options.method; the methods with a Solver through AtlasMethod::solve (Solve.cpp).
 int runSolve(const SolveOptions& options);
 // Before any work: every output's name and folder, no two outputs on one file or stream, and none
 // on `inputs` (the scene and what it names; --resume's checkpoint unless --checkpoint is it).
