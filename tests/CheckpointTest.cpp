@@ -1,6 +1,7 @@
-// Checkpoint and resume through the CLI: a solve stopped by a signal, or killed in the middle
-// of writing a checkpoint, resumes to the bitwise result of an uninterrupted solve; a
-// checkpoint of another scene or other parameters, or a damaged one, is refused.
+// Checkpoint and resume through the CLI: a solve stopped by a signal resumes to the bitwise
+// result of an uninterrupted solve; a checkpoint of another scene or other parameters, or a
+// damaged one, is refused. A kill in the middle of a checkpoint write, and the resume after it,
+// is tested for every method over the registry in tests/MethodContractTest.cpp.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -64,23 +65,6 @@ TEST_CASE("A solve stopped by SIGTERM checkpoints and resumes to the bitwise res
   CHECK(resumed["convergence_history"] == uninterrupted()["convergence_history"]);
 }
 
-TEST_CASE("A kill in the middle of a checkpoint write leaves the previous checkpoint whole and resumable",
-          "[heavy][cli][checkpoint]") {
-  std::string ck = test::tempPath("killed.ckpt");
-  // The test hook SIGKILLs the process half way through its third checkpoint write.
-  test::Run run = test::hemirad(solveArgs() + " --checkpoint " + ck + " --checkpoint-every 100",
-                                "HEMIRAD_TEST_KILL_IN_CHECKPOINT=3");
-  INFO(run.output);
-  CHECK(run.exitCode == 128 + 9);  // the shell's status for a child killed by SIGKILL
-  REQUIRE(std::filesystem::exists(ck));
-  nlohmann::json resumed = resume(ck);  // the second checkpoint, at >= 200 shots
-  CHECK(resumed["radiosity_hash"] == uninterrupted()["radiosity_hash"]);
-  // Nothing beside it looks like a complete checkpoint: the half-written one has a .tmp name.
-  for (const auto& f : std::filesystem::directory_iterator(std::filesystem::path(ck).parent_path()))
-    if (f.path().stem().string().rfind("killed", 0) == 0 && f.path() != ck)  // this test's files only
-      CHECK_THAT(f.path().stem().string(), Contains(".tmp"));
-}
-
 TEST_CASE("A finished solve's checkpoint resumes to the same result with no more shots", "[heavy][cli][checkpoint]") {
   std::string ck = test::tempPath("final.ckpt");
   test::Run run = test::hemirad(solveArgs() + " --checkpoint " + ck);
@@ -131,32 +115,6 @@ TEST_CASE("A checkpoint that names the orthographic projection by its old name s
   CHECK_THROWS_WITH(checkResumable("c.ckpt", saved, current), Contains("projection = \"conformal\""));
   saved["projection"] = "fisheye";
   CHECK_THROWS_AS(checkResumable("c.ckpt", saved, current), InputError);
-}
-
-TEST_CASE("A stochastic solve resumed from a checkpoint gives the bitwise result of an uninterrupted one",
-          "[cli][checkpoint]") {
-  const std::string args = "solve " + test::sourcePath("scenes/cornell/cornell.obj") +
-                           " --elements 300 --quiet --method stochastic --seed 5 --item-res 64 --item-subdiv 1";
-  auto report = [&](const std::string& flags, const std::string& name) {
-    const std::string path = test::tempPath(name);
-    test::Run run = test::hemirad(args + " " + flags + " --report " + path);
-    INFO(run.output);
-    REQUIRE(run.exitCode == 0);
-    return test::readJson(path);
-  };
-  const std::string ck = test::tempPath("stochastic.ckpt");
-  const nlohmann::json whole = report("--shots 40", "stochastic-whole.json");
-  const nlohmann::json first = report("--shots 17 --checkpoint " + ck, "stochastic-first.json");
-  const nlohmann::json resumed = report("--shots 40 --resume " + ck, "stochastic-resumed.json");
-  CHECK(first["shots"] == 17);
-  CHECK(first["radiosity_hash"] != whole["radiosity_hash"]);
-  CHECK(resumed["shots"] == 40);
-  CHECK(resumed["method"] == "stochastic");
-  CHECK(resumed["radiosity_hash"] == whole["radiosity_hash"]);
-  test::Run other = test::hemirad(args + " --shots 40 --seed 6 --resume " + ck);
-  INFO(other.output);
-  CHECK(other.exitCode == 2);
-  CHECK_THAT(other.output, Contains("seed"));
 }
 
 TEST_CASE("A perspective-driven solve resumed mid-solve gives the bitwise result of an uninterrupted one",

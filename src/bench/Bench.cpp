@@ -7,6 +7,7 @@
 #include <ctime>
 #include <utility>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "src/base/AtomicFile.h"
@@ -177,15 +178,15 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   add(cmd, "--shoot-level", o.progressive.shootLevel);
   add(cmd, "--item-subdiv", o.progressive.itemSubdivision);
   add(cmd, "--item-res", o.progressive.itemResolution);
-  add(cmd, "--hemisphere", o.projection);
+  add(cmd, "--hemisphere", o.progressive.projection, "orthographic");
   add(cmd, "--shooters-per-pass", o.shootersPerPass);
   add(cmd, "--algorithm", o.progressive.algorithm);
-  add(cmd, "--method", o.method);
+  add(cmd, "--method", o.method)->transform(options::oneOfNames({"progressive", "stochastic", "instant"}));
   add(cmd, "--atlas-sides", o.atlasSides);
   add(cmd, "--shots", o.iterations, "8 (--method stochastic: iterations timed per row; instant: frames)");
   add(cmd, "--markdown", o.markdown);
   add(cmd, "--split-shots", o.splitShots);
-  add(cmd, "--backend", o.backendName);
+  add(cmd, "--backend", o.backend.kind);
   add(cmd, "--gpu", o.backend.gpu);
   add(cmd, "--json", o.json);
   add(cmd, "--compare", o.compare);
@@ -258,7 +259,6 @@ nlohmann::json rowJson(const BenchRow& r) {
 // The stochastic method's rows and JSON (src/bench/StochasticBench.h).
 template <class Say>
 void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
-  requireBuilt(o.method);
   say(fmt::format("hemirad bench, {}, {} ({}), stochastic iteration, item mesh L{}, item buffer {}^2\n\n", date,
                   backend.name(), backend.renderer(), o.progressive.itemSubdivision, o.progressive.itemResolution));
   const nlohmann::json rows = benchStochastic(backend, o, say);
@@ -296,7 +296,7 @@ template <class Say>
 void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
   say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, {} item buffer {}\n\n",
                   date, backend.name(), backend.renderer(), algorithmName(o.progressive.algorithm), o.converge,
-                  printedSetting(o.progressive.shootLevel, kAutoShootLevel), o.progressive.itemSubdivision, o.projection,
+                  printedSetting(o.progressive.shootLevel, kAutoShootLevel), o.progressive.itemSubdivision, projectionName(o.progressive.projection),
                   printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
   Ceilings ceiling;
   if (o.ceiling) {
@@ -344,9 +344,8 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
 int runBench(BenchOptions o) {
   if (!o.json.empty()) checkWritable(o.json, "--json");
   if (!o.markdown.empty()) checkWritable(o.markdown, "--markdown");
-  o.backend.kind = gl::parseBackendKind(o.backendName);
+  o.progressive.projection = options::oneProjection(int(o.progressive.projection));  // refuses `all`
   for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
-  o.progressive.projection = parseProjectionFlag(o.projection);
   auto backend = gl::createBackend(o.backend);
   std::time_t now = std::time(nullptr);
   char date[32];
@@ -357,12 +356,11 @@ int runBench(BenchOptions o) {
     std::fflush(stdout);
     text += s;
   };
-  if (o.method == Method::Instant)
-    runInstantBench(o, *backend, date, say);
-  else if (o.method == Method::Stochastic)
-    runStochasticBench(o, *backend, date, say);
-  else
-    runProgressiveBench(o, *backend, date, say);
+  using Run = void (*)(const BenchOptions&, gl::RenderBackend&, const char*, decltype(say)&);
+  const std::map<std::string, Run> runs{{"progressive", runProgressiveBench<decltype(say)>},
+                                        {"stochastic", runStochasticBench<decltype(say)>},
+                                        {"instant", runInstantBench<decltype(say)>}};
+  runs.at(o.method)(o, *backend, date, say);
   if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
   return 0;
 }

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "gl/Backend.h"
-#include "src/solver/Methods.h"
+#include "src/solver/ProgressiveSolver.h"
 #include "src/solver/VplTracer.h"
 
 namespace CLI {
@@ -20,14 +20,12 @@ struct BenchOptions {
   std::vector<std::size_t> elements{10000, 100000};
   double converge = 0.9;
   ProgressiveSettings progressive;  // shoot level, item mesh and buffer as for solve
-  Method method = Method::Progressive;
+  std::string method = "progressive";  // which of the bench's runs below
   std::vector<int> atlasSides{512, 1024};  // stochastic: one row per atlas side (texel size fills it)
   unsigned iterations = 8;          // stochastic: iterations timed per row
   std::vector<int> shootersPerPass{ProgressiveSettings{}.shootersPerPass};  // a row each
   unsigned splitShots = 64;         // shots timed pass by pass (synchronised) for the split
   gl::BackendOptions backend;
-  std::string backendName = "osmesa";
-  std::string projection = "orthographic";  // --hemisphere, parsed into progressive.projection
   std::string json;
   std::string markdown;  // the printed tables, as a markdown file
   bool ceiling = false;  // also measure the device's compute and raster ceilings

@@ -8,7 +8,6 @@
 #include "src/cli/Options.h"
 #include "src/output/ImageFile.h"
 #include "src/output/Provenance.h"
-#include "src/solver/Methods.h"
 #include "src/solver/Projection.h"
 #include "src/walk/ExperimentFlags.h"
 
@@ -58,24 +57,9 @@ Commands::Commands() {
 void Commands::addSolve() {
   CLI::App* s = solveCmd = app.add_subcommand("solve", "Solve a scene and write images, atlas, mesh and report");
   addScene(s, solve.scene, solve.load, solve.discretisation);
-  ProgressiveSettings& p = solve.progressive;
-  add(s, "--method", solve.method);
-  converge = add(s, "--converge", p.stop.targetConvergence, "0.9; 0.9999 with --camera-path");
-  shots = add(s, "--shots", p.stop.maxShots);
-  add(s, "--item-subdiv", p.itemSubdivision);
-  add(s, "--item-res", p.itemResolution);
-  add(s, "--hemisphere", solveProjection);
-  progressiveOnly = {converge, add(s, "--shoot-level", p.shootLevel), add(s, "--algorithm", p.algorithm),
-                     add(s, "--fov-decay", p.fovDecayShots)};
-  add(s, "--shooters-per-pass", p.shootersPerPass);
-  CLI::Option* seed = add(s, "--seed", solve.stochastic.seed);
-  stochasticOnly = {seed, add(s, "--transport", transport)};
-  InstantSettings& i = solve.instant;
-  instantOnly = {add(s, "--vpls", i.vpls), add(s, "--vpl-bounces", i.bounces), add(s, "--vpl-clamp", i.clamp),
-                 add(s, "--shadow-res", i.shadowResolution), add(s, "--shading", shading),
-                 add(s, "--interleave", i.interleave)};
-  addSwitch(s, "--sync-timings", syncTimings);
-  add(s, "--backend", solveBackend);
+  add(s, "--method", solve.methodName)->transform(options::oneOfNames(methods.names()));
+  methods.declareFlags(s);  // each flag of every method, once
+  add(s, "--backend", solve.backend.kind);
   add(s, "--gpu", solve.backend.gpu);
   addSwitch(s, "--gl-debug", solve.backend.debug);
   add(s, "--camera", solve.camera);
@@ -86,7 +70,6 @@ void Commands::addSolve() {
   add(s, "--ambient", solve.ambient);
   addSolveOutputs(s);
   addWalkthrough(s);
-  progressiveOnly.push_back(s->get_option("--camera-path"));
 }
 
 void Commands::addSolveOutputs(CLI::App* s) {
@@ -119,8 +102,8 @@ void Commands::addValidate() {
   add(v, "--figures", validate.figures);
   add(v, "--figure-size", validate.figureSize);
   add(v, "--camera", validate.camera);
-  add(v, "--hemisphere", validateProjections);
-  add(v, "--backend", validateBackend);
+  add(v, "--hemisphere", validateProjections, "[orthographic]");
+  add(v, "--backend", validate.backend.kind);
   add(v, "--gpu", validate.backend.gpu);
   add(v, "--report", validate.report);
   addSwitch(v, "--solution", validate.solution);
@@ -132,7 +115,7 @@ void Commands::addView() {
   addScene(w, view.scene, view.load, view.discretisation);
   ProgressiveSettings& p = view.progressive;
   add(w, "--algorithm", p.algorithm);
-  add(w, "--backend", view.backendName);
+  add(w, "--backend", view.backend.kind);
   add(w, "--gpu", view.backend.gpu);
   add(w, "--camera", view.camera);
   add(w, "--width", view.width);
@@ -149,9 +132,9 @@ void Commands::addView() {
   add(w, "--shooters-per-pass", p.shootersPerPass);
   add(w, "--converge", p.stop.targetConvergence);
   add(w, "--shots", p.stop.maxShots);
-  add(w, "--method", view.method);
+  add(w, "--method", view.method)->transform(options::oneOfNames(methods.names()));
   InstantSettings& i = view.instant;
-  i.seed = StochasticSettings{}.seed;  // as solve's
+  i.seed = 1;  // as solve's
   viewInstantOnly = {add(w, "--vpls", i.vpls), add(w, "--vpl-bounces", i.bounces), add(w, "--vpl-clamp", i.clamp),
                      add(w, "--shadow-res", i.shadowResolution), add(w, "--shading", viewShading),
                      add(w, "--interleave", i.interleave), add(w, "--seed", i.seed)};
@@ -160,8 +143,9 @@ void Commands::addView() {
 // view runs progressive refinement (and its algorithms) or instant radiosity, whose flags it
 // refuses with the other.
 int Commands::runView() {
-  if (view.method == Method::Stochastic) throw InputError("view runs --method progressive or instant, not stochastic");
-  if (view.method != Method::Instant)
+  if (view.method != "progressive" && view.method != "instant")
+    throw InputError("view runs --method progressive or instant, not " + view.method);
+  if (view.method != "instant")
     for (const CLI::Option* o : viewInstantOnly)
       if (*o) throw InputError(o->get_name() + " is for --method instant");
   view.instant.itemSubdivision = view.progressive.itemSubdivision;
@@ -209,7 +193,7 @@ void Commands::addComparison() {
   add(c, "--seed", m.seed);
   add(c, "--out-dir", m.out);
   add(c, "--figure-size", m.figureSize);
-  add(c, "--backend", m.backendName);
+  add(c, "--backend", m.backend.kind);
   add(c, "--gpu", m.backend.gpu);
 }
 
@@ -233,7 +217,7 @@ void Commands::addAnimation() {
   add(a, "--camera", m.camera);
   add(a, "--width", m.width);
   add(a, "--height", m.height);
-  add(a, "--backend", m.backendName);
+  add(a, "--backend", m.backend.kind);
   add(a, "--gpu", m.backend.gpu);
 }
 
@@ -255,60 +239,16 @@ void Commands::addVplError() {
   add(c, "--out-dir", v.out);
   add(c, "--figure-size", v.figureSize);
   add(c, "--image", v.sideBySide);  // instant (the largest VPL count) | progressive, side by side
-  add(c, "--backend", v.backendName);
+  add(c, "--backend", v.backend.kind);
   add(c, "--gpu", v.backend.gpu);
 }
 
-// --method stochastic takes the item-buffer, batching and stop flags; the progressive
-// method's shooter choice, convergence and walkthroughs mean nothing to it.
-void Commands::settleStochastic() {
-  const ProgressiveSettings& p = solve.progressive;
-  if (solve.method != Method::Stochastic) {
-    for (const CLI::Option* o : stochasticOnly)
-      if (*o && !(solve.method == Method::Instant && o->get_name() == "--seed"))
-        throw InputError(o->get_name() + " is for --method stochastic");
-    return;
-  }
-  for (const CLI::Option* o : progressiveOnly)
-    if (*o) throw InputError(o->get_name() + " is for --method progressive, not stochastic");
-  if (!*shots) throw InputError("--method stochastic needs --shots N (iterations): it has no convergence to stop at");
-  StochasticSettings& s = solve.stochastic;
-  s.source = parseSource(transport);
-  s.shooters = p.shootersPerPass;
-  s.itemSubdivision = p.itemSubdivision;
-  s.itemResolution = p.itemResolution;
-  s.projection = p.projection;
-  s.timings = p.timings;
-  s.stop = p.stop;
-}
-
-// --method instant takes its own flags, the seed and the shadow maps' item mesh; nothing of the
-// progressive solver's shooting or stop rule.
-void Commands::settleInstant() {
-  if (solve.method != Method::Instant) {
-    for (const CLI::Option* o : instantOnly)
-      if (*o) throw InputError(o->get_name() + " is for --method instant");
-    return;
-  }
-  for (const CLI::Option* o : progressiveOnly)
-    if (*o) throw InputError(o->get_name() + " is for --method progressive, not instant");
-  for (const char* name : {"--shots", "--shooters-per-pass", "--item-res", "--hemisphere", "--sync-timings"})
-    if (*solveCmd->get_option(name)) throw InputError(std::string(name) + " means nothing to --method instant");
-  solve.instant.seed = solve.stochastic.seed;
-  solve.instant.itemSubdivision = solve.progressive.itemSubdivision;
-  solve.shading = shading == "forward" ? Shading::Forward : Shading::Deferred;
-}
-
+// The chosen method with its own flags bound and checked.
 void Commands::settle() {
   if (!*solveCmd) return;
-  ProgressiveSettings& p = solve.progressive;
-  // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told.
-  if (!*shots && !*converge) p.stop.targetConvergence = solve.cameraPath.empty() ? 0.9 : 0.9999;
-  if (syncTimings) p.timings = gl::TimerMode::Synchronous;
-  solve.backend.kind = gl::parseBackendKind(solveBackend);
-  p.projection = parseProjectionFlag(solveProjection);
-  settleStochastic();
-  settleInstant();
+  MethodUnit& method = methods.choose(solve.methodName, *solveCmd);
+  method.settle(solve);
+  solve.method = &method;
   solve.progress = !quiet;
 }
 
@@ -351,11 +291,10 @@ int Commands::run() {
     fmt::print("{}", options::markdown(app));
     return 0;
   }
-  validate.backend.kind = gl::parseBackendKind(validateBackend);
   validate.projections.clear();
-  for (const auto& name : validateProjections) {
-    if (name != "all") validate.projections.push_back(parseProjectionFlag(name));
-    else for (Projection p : allProjections()) validate.projections.push_back(p);
+  for (int p : validateProjections) {
+    if (p != options::kAllProjections) validate.projections.push_back(Projection(p));
+    else for (Projection each : allProjections()) validate.projections.push_back(each);
   }
   validate.shooters = shooters == "all" ? std::nullopt : std::optional<std::size_t>(std::stoul(shooters));
   return runValidate(validate);

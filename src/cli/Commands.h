@@ -7,6 +7,7 @@
 #include "src/bench/Bench.h"
 #include "src/cli/Solve.h"
 #include "src/cli/SweepCommand.h"
+#include "src/method/MethodChoice.h"
 #include "src/validate/Validate.h"
 #include "src/viewer/Viewer.h"
 #include "src/walk/Experiment.h"
@@ -52,24 +53,18 @@ struct Commands {
   void addAnimation();
   void addVplError();
   int runSolve();
-  void settleStochastic();
-  void settleInstant();
 
   // Flags read into text, turned into the options after parsing.
-  std::string shading = "deferred", viewShading = "deferred", solveBackend = "osmesa", solveProjection = "orthographic", validateBackend = "osmesa", transport = "iterate",
-              shooters = "16";
-  std::vector<std::string> validateProjections{"orthographic"};
-  bool quiet = false, syncTimings = false;
+  std::string viewShading = "deferred", shooters = "16";
+  std::vector<int> validateProjections{0};  // Projections, or options::kAllProjections
+  bool quiet = false;
   std::string docs;
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
            *experimentCmd = nullptr, *docsCmd = nullptr,
            *comparisonCmd = nullptr, *animateCmd = nullptr, *vplErrorCmd = nullptr, *mergeCmd = nullptr,
            *runTaskCmd = nullptr;
-  CLI::Option *converge = nullptr, *shots = nullptr;
-  std::vector<CLI::Option*> stochasticOnly;   // flags that mean nothing to --method progressive
-  std::vector<CLI::Option*> progressiveOnly;  // flags that mean nothing to --method stochastic
-  std::vector<CLI::Option*> instantOnly;      // flags only --method instant takes
-  std::vector<CLI::Option*> viewInstantOnly;  // the same for view
+  MethodChoice methods;                       // solve's --method, each with its own flags
+  std::vector<CLI::Option*> viewInstantOnly;  // flags view takes for --method instant only
   std::vector<CLI::Option*> seed004Only;      // experiment's flags that mean nothing to a SPEC sweep
 };
 

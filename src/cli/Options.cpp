@@ -3,16 +3,19 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <stdexcept>
 
+#include "gl/Backend.h"
 #include "src/base/DataDir.h"
+#include "src/base/Error.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/Control.h"
-#include "src/solver/Methods.h"
 #include "src/solver/Projection.h"
+#include "src/solver/Solver.h"
 #include "src/solver/ShootingPlan.h"
 
 namespace hemirad::options {
@@ -40,24 +43,41 @@ CLI::Validator names(const std::vector<std::string>& names) {
   return CLI::Validator(CLI::IsMember(names)).description(fmt::format("{}", fmt::join(names, "|")));
 }
 
-// --hemisphere: the canonical names and their aliases, and validate's `all`.
+// One of `names`, stored as its enumerator's number: what CLI11 reads into a bound enumeration.
+template <class T>
+CLI::Validator enumeration(const std::vector<std::pair<std::string, T>>& names) {
+  std::vector<std::string> listed;
+  for (const auto& [name, value] : names) listed.push_back(name);
+  return CLI::Validator(
+      [names, listed](std::string& v) {
+        for (const auto& [name, value] : names)
+          if (v == name) return v = std::to_string(int(value)), std::string();
+        return fmt::format("{} not in {{{}}}", v, fmt::join(listed, ","));
+      },
+      fmt::format("{}", fmt::join(listed, "|")));
+}
+
+// --hemisphere: a canonical name or an alias (parseProjectionFlag warns for the old one), stored as
+// the Projection's number, as CLI11 stores an enumeration into a bound field; validate's `all`
+// as kAllProjections.
 CLI::Validator projectionChoice() {
   std::vector<std::string> accepted = projectionNames();
   accepted.push_back("all");
   std::vector<std::string> canonical;
   for (Projection p : allProjections()) canonical.push_back(projectionName(p));
-  return CLI::Validator(CLI::IsMember(accepted)).description(fmt::format("{}|all", fmt::join(canonical, "|")));
+  return CLI::Validator(
+      [accepted](std::string& v) {
+        if (std::find(accepted.begin(), accepted.end(), v) == accepted.end())
+          return fmt::format("{} not in {{{}}}", v, fmt::join(accepted, ","));
+        v = std::to_string(v == "all" ? kAllProjections : int(parseProjectionFlag(v)));
+        return std::string();
+      },
+      fmt::format("{}|all", fmt::join(canonical, "|")));
 }
 
 std::map<std::string, Algorithm> algorithms() {
   std::map<std::string, Algorithm> m;
   for (const std::string& name : algorithmNames()) m[name] = parseAlgorithm(name);
-  return m;
-}
-
-std::map<std::string, Method> methods() {
-  std::map<std::string, Method> m;
-  for (const auto& [name, method] : methodNames()) m[name] = method;
   return m;
 }
 
@@ -113,12 +133,7 @@ std::vector<Flag> sceneAndSolverFlags() {
        "Radiosity method: progressive refinement; stochastic iteration (seed 000: --shots iterations of K random "
        "texel shooters, K = --shooters-per-pass); instant radiosity (seed 002: --vpls virtual point lights traced "
        "from the emitters, camera images only)",
-       oneOf(methods(), "progressive|stochastic|instant"), "progressive"},
-      {"--algorithm", "NAME",
-       "Progressive shooter choice: progressive; importance: shooters ranked by unshot power x importance from "
-       "the camera; perspective: importance-driven, and only what the view sees receives (seed 004)",
-       oneOf(algorithms(), "progressive|importance|perspective"), "progressive"},
-      {"--algorithms", "NAME", "Algorithms to compare", names(algorithmNames())},
+       kNone, "progressive"},  // the commands check the names (src/method/Registry.h)
       {"--converge", "C", "Stop at this convergence, 1 - unshot/emitted power", unit},
       {"--shots", "N", "Stop after N shots", kCount, "no limit"},
       {"--item-subdiv", "L", "Item-mesh 1-to-4 subdivision level", kLevel},
@@ -133,14 +148,19 @@ std::vector<Flag> sceneAndSolverFlags() {
        projectionChoice()},
       {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
        "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, 0, 8)},
-      {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass; stochastic "
-                                               "iteration: K random texels an iteration (at most {})",
-                                               kMaxPassShooters),
-       CLI::Range(1, int(kMaxPassShooters))},
+      {"--algorithm", "NAME",
+       "Progressive shooter choice: progressive; importance: shooters ranked by unshot power x importance from "
+       "the camera; perspective: importance-driven, and only what the view sees receives (seed 004)",
+       oneOf(algorithms(), "progressive|importance|perspective"), "progressive"},
+      {"--algorithms", "NAME", "Algorithms to compare", names(algorithmNames())},
       {"--fov-decay", "SHOTS",
        "Perspective-driven: shots over which the simulated field of view grows from the camera's to the whole "
        "scene after each camera move",
        kCount, "a quarter of the shooter blocks"},
+      {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass; stochastic "
+                                               "iteration: K random texels an iteration (at most {})",
+                                               kMaxPassShooters),
+       CLI::Range(1, int(kMaxPassShooters))},
       {"--seed", "N", "Random seed of stochastic iteration and instant radiosity: the same seed and backend give "
        "bitwise the same result",
        CLI::Range(0u, 0xFFFFFFFFu)},
@@ -174,7 +194,10 @@ std::vector<Flag> deviceAndOutputFlags() {
   const CLI::Validator none = kNone;
   return {
       // The GL backend.
-      {"--backend", "NAME", "GL backend: osmesa, egl or auto", names({"osmesa", "egl", "auto"})},
+      {"--backend", "NAME", "GL backend: osmesa, egl or auto",
+       enumeration<gl::BackendKind>({{"osmesa", gl::BackendKind::OSMesa}, {"egl", gl::BackendKind::Egl},
+                                     {"auto", gl::BackendKind::Auto}}),
+       "osmesa"},
       {"--gpu", "INDEX", "EGL device index", CLI::Range(0, 1023), "the first hardware device"},
       {"--gl-debug", "", "Report GL errors through KHR_debug", none},
       // Cameras and images.
@@ -307,6 +330,24 @@ CLI::Option* detail::finish(CLI::Option* option, const Flag& f, bool list, const
 CLI::Option* addSwitch(CLI::App* cmd, const std::string& name, bool& target) {
   const Flag& f = flag(name);
   return cmd->add_flag(f.name, target, f.help);
+}
+
+CLI::Option* declare(CLI::App* cmd, const std::string& name, const std::string& defaultText, const std::string& value) {
+  const Flag& f = flag(name);
+  if (f.value.empty()) return cmd->add_flag(f.name, f.help);  // a switch
+  CLI::Option* option = detail::finish(cmd->add_option(f.name, f.help), f, false, defaultText);
+  if (option->get_default_str().empty()) option->default_str(value);
+  return option;
+}
+
+Projection oneProjection(int stored) {
+  if (stored == kAllProjections)
+    throw InputError("--hemisphere must be orthographic, hemicube, conformal or equal-area, not 'all' (validate's)");
+  return Projection(stored);
+}
+
+CLI::Validator oneOfNames(const std::vector<std::string>& names) {
+  return CLI::Validator(CLI::IsMember(names, CLI::ignore_case)).description(fmt::format("{}", fmt::join(names, "|")));
 }
 
 }  // namespace hemirad::options

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "src/solver/Projection.h"
+
 namespace hemirad::options {
 
 struct Flag {
@@ -40,5 +42,16 @@ CLI::Option* add(CLI::App* cmd, const std::string& name, T& target, const std::s
   return detail::finish(cmd->add_option(f.name, target, f.help), f, detail::IsList<T>::value, defaultText);
 }
 CLI::Option* addSwitch(CLI::App* cmd, const std::string& name, bool& target);
+// Adds the table's flag `name` to `cmd` unbound: whoever takes it reads its value after parsing
+// (CLI::Option::results), as the radiosity methods do (src/method/MethodUnit.h). The default
+// shown: `defaultText`, else the table's, else `value` (the taker's initial value).
+CLI::Option* declare(CLI::App* cmd, const std::string& name, const std::string& defaultText,
+                     const std::string& value);
+// One of `names` (any case), for a flag whose names are known only above this library (--method).
+CLI::Validator oneOfNames(const std::vector<std::string>& names);
+// What --hemisphere all stores (validate: every projection); a name stores its Projection.
+constexpr int kAllProjections = -1;
+// The projection stored for a command that takes one (solve, bench): InputError for `all`.
+Projection oneProjection(int stored);
 
 }  // namespace hemirad::options

@@ -33,54 +33,22 @@ Image atlasImage(const Atlas& atlas, const std::vector<glm::vec4>& B) {
   return img;
 }
 
-// What a checkpoint must have been made from to be resumed by this solve.
-nlohmann::json checkpointIdentity(const Scene& scene, const Atlas& atlas, const SolveOptions& o, const Solver& solver) {
-  const ProgressiveSettings& p = o.progressive;
-  nlohmann::json identity = {{"scene_hash", fmt::format("{:016x}", sceneHash(scene))},
-          {"algorithm", solver.algorithm()},
-          {"texel_size", atlas.texelSize},
-          {"atlas", {atlas.width, atlas.height}},
-          {"elements", atlas.elements},
-          {"item_subdivision", p.itemSubdivision},
-          {"item_resolution", p.itemResolution},
-          {"projection", projectionName(p.projection)},
-          {"shoot_level", p.shootLevel},
-          {"shooters_per_pass", p.shootersPerPass}};
-  if (o.progressive.algorithm == Algorithm::Perspective) identity["fov_decay"] = p.fovDecayShots;  // 0: the default
-  if (o.method == Method::Stochastic) {
-    identity["seed"] = o.stochastic.seed;
-    identity["transport"] = sourceName(o.stochastic.source);
-  }
+// What a checkpoint must have been made from to be resumed by this solve: the scene, the atlas
+// and the method's parameters.
+nlohmann::json checkpointIdentity(const Scene& scene, const Atlas& atlas, const AtlasMethod& method,
+                                  const Solver& solver) {
+  nlohmann::json identity = method.identity();
+  identity.update({{"scene_hash", fmt::format("{:016x}", sceneHash(scene))},
+                   {"algorithm", solver.algorithm()},
+                   {"texel_size", atlas.texelSize},
+                   {"atlas", {atlas.width, atlas.height}},
+                   {"elements", atlas.elements}});
   return identity;
 }
 
 Checkpoint takeCheckpoint(const SolverState& state, const Solver& solver, const nlohmann::json& identity,
                           unsigned shots) {
   return {identity, shots, state.readRadiosity(), state.readDeltaB(), solver.saveState()};
-}
-
-int runWalkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas, SolverState& state,
-                   ProgressiveSolver& solver, const Camera& camera) {
-  const CameraPath path = readCameraPath(o.cameraPath, camera, scene.unitScale);
-  WalkthroughOptions w = o.walkthrough;
-  w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient, w.exposure = o.exposure;
-  w.writeFrame = writePng;
-  w.progress = o.progress;
-  ConvergedViews converged(scene, atlas, o.progressive, o.referenceConvergence, o.progress);
-  const std::vector<FrameRecord> frames = walk(solver, state, path, converged, w);
-  writeFramesCsv(w.framesDir + "/frames.csv", frames);
-  const FrameRecord& last = frames.back();
-  fmt::print(stderr, "hemirad: {}: {} frames along {} ({} shots, visible convergence {:.4f}, image error {:.4f}) into {}\n",
-             o.scene, frames.size(), o.cameraPath, last.shots, last.visibleConvergence, last.imageError, w.framesDir);
-  return 0;
-}
-
-// What only progressive refinement reports: the item mesh and seed 004's view-driven shots.
-void describeProgressive(RunInfo& run, const ProgressiveSolver& solver) {
-  run.importanceShots = solver.importanceShots();
-  run.deliveryShots = solver.deliveryShots();
-  run.fovDecayShots = solver.fovDecayShots();
-  run.itemTriangles = solver.itemTriangles();
 }
 
 // Every file the solve will write, with its flag and the formats it takes.
@@ -117,7 +85,6 @@ namespace {
 
 // Everything checkable before a scene is read: the method, writable outputs, flag combinations.
 void checkSolveInputs(const SolveOptions& o) {
-  requireBuilt(o.method);
   checkSolveOutputs(o, {{"the scene", o.scene}});
   if (o.out.empty() && o.image.empty() && o.atlas.empty() && o.ply.empty() && o.gltf.empty() && o.report.empty() &&
       o.checkpoint.empty() && o.cameraPath.empty())
@@ -159,14 +126,13 @@ int solveInBatches(const SolveOptions& o, const SolverState& state, Solver& solv
 // The camera render (EXR, PNG), the atlas, the PLY and the glTF the user asked for, staged.
 // Returns the lightmap's line for stderr, printed once the files are written ("" without --gltf).
 std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene& scene, const Atlas& atlas,
-                 const SolverState& state, const Camera& camera, const std::vector<glm::vec4>& B) {
+                        const SolverState& state, const AtlasRun& run, const Camera& camera,
+                        const std::vector<glm::vec4>& B) {
   Image view;
   double scale = 1;
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
     Renderer renderer(state);
-    // The ambient term stands in for light not yet shot (dB); stochastic iteration keeps its
-    // iterate there instead, and its running mean already holds every bounce.
-    renderer.setAmbient(o.ambient && o.method == Method::Progressive);
+    renderer.setAmbient(o.ambient && run.ambient());
     view = renderer.render(camera, o.width, o.height, o.supersample);
     scale = exposureScale(view, o.exposure);
   }
@@ -188,42 +154,30 @@ std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene
   return "";
 }
 
-// The report's description of the run; the item buffer and shoot level are the ones the
-// progressive solver used (planned ones with auto).
-RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, const Atlas& atlas, const Solver& solver) {
+// The report's description of the run: what every atlas method has, then the method's own.
+RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, const Atlas& atlas, AtlasRun& method) {
   RunInfo run;
   run.backend = backend.name();
   run.renderer = backend.renderer();
-  run.method = methodName(o.method);
-  run.algorithm = solver.algorithm();
+  run.method = o.method->name();
+  run.algorithm = method.solver().algorithm();
   run.scene = o.scene;
   run.texelSize = atlas.texelSize;
-  run.itemSubdivision = o.progressive.itemSubdivision;
-  run.itemResolution = o.progressive.itemResolution;
-  run.shootLevel = o.progressive.shootLevel;
-  run.shootersPerPass = o.progressive.shootersPerPass;
   run.elements = atlas.elements;
-  if (auto* progressive = dynamic_cast<const ProgressiveSolver*>(&solver)) {
-    describeProgressive(run, *progressive);
-    run.itemResolution = progressive->plan().itemResolution;
-  }
-  if (auto* stochastic = dynamic_cast<const StochasticSolver*>(&solver)) {
-    run.itemResolution = stochastic->itemResolution();
-    run.itemTriangles = stochastic->itemTriangles();
-    run.shootLevel = 0;  // one-texel shooters
-  }
+  method.describe(run);
   run.atlasWidth = atlas.width;
   run.atlasHeight = atlas.height;
-  run.timings = solver.timings();
-  run.convergenceHistory = solver.convergenceHistory();
+  run.timings = method.solver().timings();
+  run.convergenceHistory = method.solver().convergenceHistory();
   return run;
 }
 
 }  // namespace
 
-int runSolve(const SolveOptions& o) {
-  auto start = std::chrono::steady_clock::now();
-  if (o.method == Method::Instant) return runInstantSolve(o);
+int runSolve(const SolveOptions& o) { return o.method->solve(o); }
+
+int AtlasMethod::solve(const SolveOptions& o) const {
+  const auto began = std::chrono::steady_clock::now();
   checkSolveInputs(o);
   std::optional<Checkpoint> resumed;
   if (!o.resume.empty()) resumed = readCheckpoint(o.resume);
@@ -239,10 +193,9 @@ int runSolve(const SolveOptions& o) {
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
   SolverState state(scene, atlas);
-  const std::unique_ptr<Solver> method = makeSolver(o.method, state, o.progressive, o.stochastic);
-  Solver& solver = *method;
-  auto* progressive = dynamic_cast<ProgressiveSolver*>(method.get());  // view-driven shooting, walkthroughs
-  const nlohmann::json identity = checkpointIdentity(scene, atlas, o, solver);
+  const std::unique_ptr<AtlasRun> run = start(state);
+  Solver& solver = run->solver();
+  const nlohmann::json identity = checkpointIdentity(scene, atlas, *this, solver);
   SolveStatus status;
   if (resumed) {
     checkResumable(o.resume, resumed->identity, identity);
@@ -250,31 +203,28 @@ int runSolve(const SolveOptions& o) {
     status = solver.restoreState(resumed->solver);
     resumed.reset();
   }
-  if (!o.cameraPath.empty()) return runWalkthrough(o, scene, atlas, state, *progressive, camera);
-  if (o.progressive.importanceDriven()) progressive->look(camera, double(o.width) / o.height);  // after a restore: no change
+  if (!o.cameraPath.empty()) return run->walkthrough(o, scene, atlas, state, camera);
+  run->look(camera, double(o.width) / o.height);  // after a restore: no change
 
-  Progress progress(o.progressive.stop, o.progress);
+  Progress progress(stop(), o.progress);
   if (int interrupted = solveInBatches(o, state, solver, identity, status, progress)) return interrupted;
   const double solveMs = progress.elapsedSeconds() * 1e3;
   const std::vector<glm::vec4> B = state.readRadiosity();
   OutputBatch outputs;  // all or none: a full disk on the last leaves none of the others
-  const std::string lightmapLine = stageImages(outputs, o, scene, atlas, state, camera, B);
+  const std::string lightmapLine = stageImages(outputs, o, scene, atlas, state, *run, camera, B);
 
-  RunInfo run = describeRun(o, *backend, atlas, solver);
-  run.status = status;
-  run.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  run.radiosityHash = radiosityHash(atlas, B);
-  run.objects = objectRadiosity(scene, atlas, B);
-  run.texelSize /= scene.unitScale;  // lengths and areas in the file's units
-  for (ObjectRadiosity& ob : run.objects) ob.area /= scene.unitScale * scene.unitScale;
-  if (!o.report.empty()) outputs.add("--report", o.report, reportJson(run).dump(2) + "\n");
+  RunInfo info = describeRun(o, *backend, atlas, *run);
+  info.status = status;
+  info.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
+  info.radiosityHash = radiosityHash(atlas, B);
+  info.objects = objectRadiosity(scene, atlas, B);
+  info.texelSize /= scene.unitScale;  // lengths and areas in the file's units
+  for (ObjectRadiosity& ob : info.objects) ob.area /= scene.unitScale * scene.unitScale;
+  if (!o.report.empty()) outputs.add("--report", o.report, reportJson(info).dump(2) + "\n");
   outputs.commit();
   fmt::print(stderr, "{}", lightmapLine);
-  const std::string reached = o.method == Method::Stochastic
-                                   ? fmt::format("{} iterations of {} shooters", status.shots, o.stochastic.shooters)
-                                   : fmt::format("{} shots, convergence {:.4f}", status.shots, status.convergence);
-  fmt::print(stderr, "hemirad: {}: {} elements, {} in {:.0f} ms ({}, {})\n", o.scene, atlas.elements, reached, solveMs,
-             backend->name(), backend->renderer());
+  fmt::print(stderr, "hemirad: {}: {} elements, {} in {:.0f} ms ({}, {})\n", o.scene, atlas.elements,
+             run->reached(status), solveMs, backend->name(), backend->renderer());
   return 0;
 }
 

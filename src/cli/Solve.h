@@ -5,9 +5,8 @@
 #include <string>
 
 #include "gl/Backend.h"
-#include "src/output/InstantRenderer.h"
-#include "src/solver/Methods.h"
-#include "src/solver/ProgressiveSolver.h"
+#include "src/method/MethodUnit.h"
+#include "src/output/Image.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/SceneLoader.h"
 #include "src/walk/Walkthrough.h"
@@ -18,11 +17,8 @@ struct SolveOptions {
   std::string scene;
   LoadOptions load;
   Discretisation discretisation;
-  Method method = Method::Progressive;
-  ProgressiveSettings progressive;  // the progressive method's
-  StochasticSettings stochastic;    // the stochastic method's (Commands copies the shared flags in)
-  InstantSettings instant;          // instant radiosity's (docs/instant.md)
-  Shading shading = Shading::Deferred;
+  std::string methodName = "progressive";  // --method
+  const MethodUnit* method = nullptr;      // that method, its own flags bound (Commands::settle)
   gl::BackendOptions backend;
   std::optional<std::string> camera;
   int width = 512, height = 512, supersample = 2;
@@ -41,9 +37,8 @@ struct SolveOptions {
   bool progress = true;
 };
 
+// Runs options.method; the methods with a Solver through AtlasMethod::solve (Solve.cpp).
 int runSolve(const SolveOptions& options);
-// --method instant (src/cli/InstantSolve.cpp): camera images from VPLs, no atlas.
-int runInstantSolve(const SolveOptions& options);
 // Before any work: every output's name and folder, no two outputs on one file or stream, and none
 // on `inputs` (the scene and what it names; --resume's checkpoint unless --checkpoint is it).
 void checkSolveOutputs(const SolveOptions& options, std::vector<InputPath> inputs);

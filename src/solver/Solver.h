@@ -9,9 +9,10 @@
 
 namespace hemirad {
 
-// The algorithms behind `--algorithm`. Importance- and perspective-driven shooting (seed 004)
-// run on the progressive solver. Stochastic iteration (--method stochastic) is a Solver of its
-// own and instant radiosity (--method instant) renders without one: see src/solver/Methods.h.
+// Progressive refinement's shooter choices, `--algorithm`: importance- and perspective-driven
+// shooting (seed 004) run on the progressive solver. The methods (`--method`) are units of
+// their own, src/method/MethodUnit.h; stochastic iteration's Solver names its algorithm
+// "stochastic".
 enum class Algorithm { Progressive, Importance, Perspective };
 Algorithm parseAlgorithm(const std::string& name);  // throws InputError
 const char* algorithmName(Algorithm a);

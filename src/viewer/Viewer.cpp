@@ -209,7 +209,6 @@ int runView(ViewerOptions o) {
     unsigned& max = o.progressive.stop.maxShots;
     max = unsigned(std::min<std::uint64_t>(max ? max : ~0u, std::uint64_t(o.shotsPerFrame) * o.frames));
   }
-  o.backend.kind = gl::parseBackendKind(o.backendName);
   // Bad input fails here, before any window, as it does for `solve`.
   Scene scene = loadScene(o.scene, o.load);
   printWarnings(scene.warnings);
@@ -237,7 +236,7 @@ int runView(ViewerOptions o) {
   }  // the worker has stopped
   if (link.error) std::rethrow_exception(link.error);
   if (!o.screenshot.empty()) screenshot(o.screenshot);
-  if (o.method == Method::Instant) {
+  if (o.method == "instant") {
     fmt::print(stderr, "hemirad view: instant, {} VPLs, {} shading, interleave {}, {} frames\n", o.instant.vpls,
                shadingName(o.shading), o.instant.interleave, presented);
     return 0;

@@ -6,7 +6,6 @@
 
 #include "gl/Backend.h"
 #include "src/output/InstantRenderer.h"
-#include "src/solver/Methods.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/scene/SceneLoader.h"
 #include "src/scene/Atlas.h"
@@ -22,11 +21,10 @@ struct ViewerOptions {
     p.stop.targetConvergence = 0.999;  // the viewer stops only when there is little left to see
     return p;
   }();
-  Method method = Method::Progressive;  // or Instant: VPLs traced once, each frame shaded from them
+  std::string method = "progressive";  // or instant: VPLs traced once, each frame shaded from them
   InstantSettings instant;
   Shading shading = Shading::Deferred;
   gl::BackendOptions backend;
-  std::string backendName = "osmesa";
   std::optional<std::string> camera;
   int width = 800, height = 600;
   double exposure = 0;

@@ -91,7 +91,7 @@ void workInstant(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
 }
 
 void work(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
-  if (o.method == Method::Instant) return workInstant(o, scene, link);
+  if (o.method == "instant") return workInstant(o, scene, link);
   auto backend = gl::createBackend(o.backend);
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());

@@ -164,7 +164,6 @@ int runExperiment(ExperimentOptions o) {
   fmt::print(stderr, "hemirad: writing into {}\n", o.out);
   std::filesystem::create_directories(o.out);
   checkWritable(o.out + "/summary.md", "--out-dir");
-  o.backend.kind = gl::parseBackendKind(o.backendName);
   for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
   if (o.figures) checkPlotting();
   parseFigureSize(o.figureSize);  // a bad size fails before the solves

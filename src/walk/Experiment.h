@@ -27,7 +27,6 @@ struct ExperimentOptions {
   bool frames = false;             // also keep every frame's PNG (written by walkthrough.writeFrame)
   bool figures = true;             // the SVG/PDF plots (matplotlib); without, the CSVs and summary only
   gl::BackendOptions backend;
-  std::string backendName = "osmesa";
 };
 
 int runExperiment(ExperimentOptions options);

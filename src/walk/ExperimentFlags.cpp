@@ -14,7 +14,7 @@ std::vector<CLI::Option*> addExperimentFlags(CLI::App* x, ExperimentOptions& e) 
       add(x, "--ambient", e.walkthrough.ambient), add(x, "--reference-convergence", e.referenceConvergence),
       add(x, "--fov-decay", e.progressive.fovDecayShots)};
   flags.push_back(add(x, "--frame-shots", e.walkthrough.frameShots)->excludes(x->get_option("--frame-ms")));
-  flags.push_back(add(x, "--backend", e.backendName));
+  flags.push_back(add(x, "--backend", e.backend.kind));
   flags.push_back(add(x, "--gpu", e.backend.gpu));
   add(x, "--figure-size", e.figureSize);
   add(x, "--out-dir", e.out);  // a sweep SPEC's output folder too: not among those returned

@@ -46,7 +46,6 @@ int runAnimation(AnimationOptions o) {
   const Scene base = loadScene(o.scene, o.load);
   validateSolvable(base);
   const Camera camera = resolveCamera(base, o.camera);
-  o.backend.kind = gl::parseBackendKind(o.backendName);
   auto backend = gl::createBackend(o.backend);
   const Atlas baseAtlas = buildAtlas(base, chooseTexelSize(base, o.discretisation), backend->maxTextureSize());
   std::filesystem::create_directories(o.framesDir);

@@ -24,7 +24,6 @@ struct AnimationOptions {
   StochasticSettings stochastic;      // window: --window (default 64)
   int width = 256, height = 256;
   gl::BackendOptions backend;
-  std::string backendName = "osmesa";
 };
 
 int runAnimation(AnimationOptions options);

@@ -60,7 +60,6 @@ PlotSeries series(const std::string& label, const std::vector<Sample>& samples) 
 int runMethodComparison(MethodComparisonOptions o) {
   if (o.out.empty()) o.out = freshFolder("hemirad-compare-methods");  // no --out-dir
   fmt::print(stderr, "hemirad: writing into {}\n", o.out);
-  o.backend.kind = gl::parseBackendKind(o.backendName);
   for (std::string& s : o.scenes) s = findScene(s);  // the shipped scenes from any directory
   checkPlotting();
   auto backend = gl::createBackend(o.backend);

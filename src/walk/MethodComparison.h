@@ -23,7 +23,6 @@ struct MethodComparisonOptions {
   std::string out;  // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
   std::string figureSize;  // --figure-size (parseFigureSize)
   gl::BackendOptions backend;
-  std::string backendName = "osmesa";
 };
 
 int runMethodComparison(MethodComparisonOptions options);

@@ -73,7 +73,6 @@ Image sideBySide(const Image& left, const Image& right) {
 int runVplError(VplErrorOptions o) {
   if (o.out.empty()) o.out = freshFolder("hemirad-compare-vpls");  // no --out-dir
   fmt::print(stderr, "hemirad: writing into {}\n", o.out);
-  o.backend.kind = gl::parseBackendKind(o.backendName);
   checkPlotting();
   parseFigureSize(o.figureSize);  // a bad size fails before the solves
   Scene scene = loadScene(o.scene, o.load);

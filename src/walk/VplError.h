@@ -28,7 +28,6 @@ struct VplErrorOptions {
   std::string figureSize;  // --figure-size (parseFigureSize)
   std::string sideBySide;  // a PNG: instant (largest count) | progressive
   gl::BackendOptions backend;
-  std::string backendName = "osmesa";
 };
 
 int runVplError(VplErrorOptions options);

@@ -1,0 +1,85 @@
+// A radiosity method (`solve --method NAME`) as one unit (issue 27): its name, the flags it
+// takes bound into its own settings, how it solves, what a checkpoint of it must match and how
+// it describes its run. Adding a method is a folder under src/method/ and a line in
+// src/method/Registry.cpp; the contract tests (tests/MethodContractTest.cpp) then run over it.
+#pragma once
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
+namespace hemirad {
+
+struct SolveOptions;
+struct RunInfo;
+struct SolveStatus;
+struct StopRule;
+class Solver;
+class SolverState;
+class Scene;
+class Atlas;
+struct Camera;
+
+// A flag of `solve` a method takes. `bind` stores the parsed value into the method's own
+// settings and runs only when the flag was given; without it the flag is solve's own
+// (SolveOptions) and the method merely accepts it. Solve declares each flag once, for all methods.
+struct MethodFlag {
+  std::string name;                              // "--item-res"
+  std::function<void(const CLI::Option&)> bind;  // empty: accepted, stored by solve itself
+  std::string defaultText;                       // shown as its default in --help and docs/cli.md
+  std::string value;                             // the field's initial value, shown without defaultText
+};
+
+class MethodUnit {
+ public:
+  virtual ~MethodUnit() = default;
+  virtual std::string name() const = 0;
+  // The flags it takes, bound into this object's settings; any other method flag is refused.
+  virtual std::vector<MethodFlag> flags() = 0;
+  // After binding, before any work: InputError for what this method cannot do with `o`.
+  virtual void settle(const SolveOptions& o) = 0;
+  // The solve, from the scene to the files; 128 + a signal when one stopped it.
+  virtual int solve(const SolveOptions& o) const = 0;
+  // Whether --checkpoint and --resume mean something to it.
+  virtual bool checkpoints() const = 0;
+  // Flags for a small, quick solve (a few hundred elements or pixels): the contract tests' runs.
+  virtual std::string quickFlags() const = 0;
+};
+
+// One solve of an atlas method: its Solver over the state, and what only this method knows of it.
+class AtlasRun {
+ public:
+  virtual ~AtlasRun() = default;
+  virtual Solver& solver() = 0;
+  // Before the first batch (after a restore): the camera, for methods driven by the view.
+  virtual void look(const Camera& camera, double aspect) = 0;
+  // Whether camera images add seed 004's ambient term for light not yet shot (dB).
+  virtual bool ambient() const = 0;
+  // The report's fields this method fills (item buffer, shots of each kind, ...).
+  virtual void describe(RunInfo& run) const = 0;
+  // How far the solve got, for the summary line.
+  virtual std::string reached(const SolveStatus& status) const = 0;
+  // A walkthrough along o.cameraPath instead of one image (only methods that accept --camera-path).
+  virtual int walkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas, SolverState& state,
+                          const Camera& camera) = 0;
+};
+
+// A method that solves for radiosity per atlas element with a Solver: src/cli/Solve.cpp runs
+// it (outputs, checkpoints, signals, report), the method supplies the solver and its account.
+class AtlasMethod : public MethodUnit {
+ public:
+  int solve(const SolveOptions& o) const override;  // src/cli/Solve.cpp
+  bool checkpoints() const override { return true; }
+  virtual std::unique_ptr<AtlasRun> start(SolverState& state) const = 0;
+  // Its parameters a checkpoint must have been made with (beside the scene and atlas).
+  virtual nlohmann::json identity() const = 0;
+  virtual const StopRule& stop() const = 0;
+};
+
+}  // namespace hemirad

@@ -1,0 +1,110 @@
+// --method progressive: progressive refinement (seed 003) and its view-driven algorithms
+// (seed 004), the only method with a convergence to stop at and walkthroughs.
+#include <fmt/format.h>
+
+#include "src/cli/Solve.h"
+#include "src/method/MethodFlag.h"
+#include "src/output/ImageFile.h"
+#include "src/output/Report.h"
+#include "src/solver/ProgressiveSolver.h"
+#include "src/solver/Projection.h"
+#include "src/walk/CameraPath.h"
+#include "src/walk/Walkthrough.h"
+
+namespace hemirad {
+
+namespace {
+
+class ProgressiveRun final : public AtlasRun {
+ public:
+  ProgressiveRun(SolverState& state, const ProgressiveSettings& settings) : settings_(settings), solver_(state, settings) {}
+  Solver& solver() override { return solver_; }
+  void look(const Camera& camera, double aspect) override {
+    if (settings_.importanceDriven()) solver_.look(camera, aspect);
+  }
+  bool ambient() const override { return true; }
+  // The item buffer is the one the solver used (planned with auto), the shoot level as given.
+  void describe(RunInfo& run) const override {
+    run.itemSubdivision = settings_.itemSubdivision;
+    run.itemResolution = solver_.plan().itemResolution;
+    run.shootLevel = settings_.shootLevel;
+    run.shootersPerPass = settings_.shootersPerPass;
+    run.importanceShots = solver_.importanceShots();
+    run.deliveryShots = solver_.deliveryShots();
+    run.fovDecayShots = solver_.fovDecayShots();
+    run.itemTriangles = solver_.itemTriangles();
+  }
+  std::string reached(const SolveStatus& status) const override {
+    return fmt::format("{} shots, convergence {:.4f}", status.shots, status.convergence);
+  }
+  int walkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas, SolverState& state,
+                  const Camera& camera) override;
+
+ private:
+  const ProgressiveSettings& settings_;
+  ProgressiveSolver solver_;
+};
+
+int ProgressiveRun::walkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas, SolverState& state,
+                                const Camera& camera) {
+  const CameraPath path = readCameraPath(o.cameraPath, camera, scene.unitScale);
+  WalkthroughOptions w = o.walkthrough;
+  w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient, w.exposure = o.exposure;
+  w.writeFrame = writePng;
+  w.progress = o.progress;
+  ConvergedViews converged(scene, atlas, settings_, o.referenceConvergence, o.progress);
+  const std::vector<FrameRecord> frames = walk(solver_, state, path, converged, w);
+  writeFramesCsv(w.framesDir + "/frames.csv", frames);
+  const FrameRecord& last = frames.back();
+  fmt::print(stderr, "hemirad: {}: {} frames along {} ({} shots, visible convergence {:.4f}, image error {:.4f}) into {}\n",
+             o.scene, frames.size(), o.cameraPath, last.shots, last.visibleConvergence, last.imageError, w.framesDir);
+  return 0;
+}
+
+class ProgressiveMethod final : public AtlasMethod {
+ public:
+  std::string name() const override { return "progressive"; }
+  std::vector<MethodFlag> flags() override {
+    ProgressiveSettings& p = settings_;
+    return {bindFlag("--converge", p.stop.targetConvergence, "0.9; 0.9999 with --camera-path"),
+            bindFlag("--shots", p.stop.maxShots),
+            bindFlag("--item-subdiv", p.itemSubdivision),
+            bindFlag("--item-res", p.itemResolution),
+            projectionFlag(p.projection),
+            bindFlag("--shoot-level", p.shootLevel),
+            bindFlag("--algorithm", p.algorithm),
+            bindFlag("--fov-decay", p.fovDecayShots),
+            bindFlag("--shooters-per-pass", p.shootersPerPass),
+            switchFlag("--sync-timings", [&p] { p.timings = gl::TimerMode::Synchronous; }),
+            acceptFlag("--camera-path")};
+  }
+  // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told.
+  void settle(const SolveOptions& o) override {
+    StopRule& stop = settings_.stop;
+    if (!stop.maxShots && !stop.targetConvergence) stop.targetConvergence = o.cameraPath.empty() ? 0.9 : 0.9999;
+  }
+  std::string quickFlags() const override { return "--elements 300 --item-res 64 --item-subdiv 1"; }
+  std::unique_ptr<AtlasRun> start(SolverState& state) const override {
+    return std::make_unique<ProgressiveRun>(state, settings_);
+  }
+  nlohmann::json identity() const override {
+    const ProgressiveSettings& p = settings_;
+    nlohmann::json identity = {{"item_subdivision", p.itemSubdivision},
+                               {"item_resolution", p.itemResolution},
+                               {"projection", projectionName(p.projection)},
+                               {"shoot_level", p.shootLevel},
+                               {"shooters_per_pass", p.shootersPerPass}};
+    if (p.algorithm == Algorithm::Perspective) identity["fov_decay"] = p.fovDecayShots;  // 0: the default
+    return identity;
+  }
+  const StopRule& stop() const override { return settings_.stop; }
+
+ private:
+  ProgressiveSettings settings_;
+};
+
+}  // namespace
+
+std::unique_ptr<MethodUnit> makeProgressiveMethod() { return std::make_unique<ProgressiveMethod>(); }
+
+}  // namespace hemirad
