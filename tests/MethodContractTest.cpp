@@ -11,7 +11,7 @@
 
 #include "src/base/Error.h"
 #include "src/cli/Commands.h"
-#include "src/cli/Options.h"
+#include "src/options/Options.h"
 #include "src/method/MethodChoice.h"
 #include "src/method/MethodFlag.h"
 #include "src/method/Registry.h"

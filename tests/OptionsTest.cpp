@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "src/cli/Commands.h"
-#include "src/cli/Options.h"
-#include "src/cli/Suggest.h"
+#include "src/options/Options.h"
+#include "src/options/Suggest.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;

@@ -18,7 +18,7 @@
 #include "src/bench/Ceilings.h"
 #include "src/bench/StochasticBench.h"
 #include "src/bench/InstantBench.h"
-#include "src/cli/Options.h"
+#include "src/options/Options.h"
 #include "src/base/Error.h"
 #include "src/solver/Control.h"
 #include "src/output/Progress.h"

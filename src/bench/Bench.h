@@ -10,7 +10,7 @@
 #include "src/solver/VplTracer.h"
 
 namespace CLI {
-class App;  // CLI11 (src/cli/Options.h): parsed only where flags are declared
+class App;  // CLI11 (src/options/Options.h): parsed only where flags are declared
 }
 
 namespace hemirad {

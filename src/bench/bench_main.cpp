@@ -7,7 +7,7 @@
 
 #include "src/bench/Bench.h"
 #include "src/base/Error.h"
-#include "src/cli/Suggest.h"
+#include "src/options/Suggest.h"
 #include "src/output/Provenance.h"
 #include "src/walk/ExperimentFlags.h"
 

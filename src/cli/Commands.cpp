@@ -4,8 +4,8 @@
 
 #include "src/base/DataDir.h"
 #include "src/base/Error.h"
-#include "src/cli/CliDocs.h"
-#include "src/cli/Options.h"
+#include "src/options/CliDocs.h"
+#include "src/options/Options.h"
 #include "src/output/ImageFile.h"
 #include "src/output/Provenance.h"
 #include "src/solver/Projection.h"

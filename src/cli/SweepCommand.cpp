@@ -8,7 +8,7 @@
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
 #include "src/cli/Commands.h"
-#include "src/cli/Suggest.h"
+#include "src/options/Suggest.h"
 #include "src/output/Figure.h"
 #include "src/sweep/SlurmScript.h"
 #include "src/sweep/SweepMerge.h"

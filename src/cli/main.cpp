@@ -4,7 +4,7 @@
 
 #include "src/base/Error.h"
 #include "src/cli/Commands.h"
-#include "src/cli/Suggest.h"
+#include "src/options/Suggest.h"
 #include "src/output/Provenance.h"
 
 using namespace hemirad;

@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "src/base/Error.h"
-#include "src/cli/Options.h"
+#include "src/options/Options.h"
 #include "src/method/Registry.h"
 
 namespace hemirad {

@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "src/cli/Options.h"
+#include "src/options/Options.h"
 #include "src/method/MethodUnit.h"
 
 namespace hemirad {

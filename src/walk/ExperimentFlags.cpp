@@ -1,6 +1,6 @@
 #include "src/walk/ExperimentFlags.h"
 
-#include "src/cli/Options.h"
+#include "src/options/Options.h"
 
 namespace hemirad {
 

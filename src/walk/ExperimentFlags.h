@@ -1,4 +1,4 @@
-// The flags of seed 004's experiments, declared once (from the option table, cli/Options.h) for
+// The flags of seed 004's experiments, declared once (from the option table, options/Options.h) for
 // `hemirad experiment` and for the lean `hemirad-bench experiment` that GPU machines run.
 #pragma once
 #include <CLI/CLI.hpp>

@@ -1,4 +1,4 @@
-#include "src/cli/Options.h"
+#include "src/options/Options.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -311,7 +311,7 @@ const std::vector<Flag>& table() {
 const Flag& flag(const std::string& name) {
   for (const Flag& f : table())
     if (f.name == name) return f;
-  throw std::logic_error("no flag " + name + " in the option table (src/cli/Options.cpp)");
+  throw std::logic_error("no flag " + name + " in the option table (src/options/Options.cpp)");
 }
 
 CLI::Option* detail::finish(CLI::Option* option, const Flag& f, bool list, const std::string& defaultText) {

@@ -1,4 +1,4 @@
-#include "src/cli/Suggest.h"
+#include "src/options/Suggest.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "src/base/Error.h"
-#include "src/cli/Options.h"
+#include "src/options/Options.h"
 
 namespace hemirad::options {
 
