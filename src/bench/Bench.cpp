@@ -12,6 +12,7 @@
 #include "src/base/DataDir.h"
 #include "src/scene/Camera.h"
 #include "src/bench/Ceilings.h"
+#include "src/bench/SceneSize.h"
 #include "src/bench/StochasticBench.h"
 #include "src/bench/InstantBench.h"
 #include "src/cli/Options.h"
@@ -27,6 +28,8 @@ namespace {
 
 struct BenchRow {
   std::string scene;
+  SceneSize size;        // polygons and triangles
+  double texelUse = 0;   // elements / atlas texels
   std::size_t elements = 0, itemTriangles = 0, itemPixels = 0, shooterBlocks = 0;
   int itemResolution = 0;
   std::optional<double> gpuMemoryMiB;  // what the solve holds on the device, where the driver says
@@ -188,9 +191,9 @@ std::string printedSetting(int value, int autoValue, const char* suffix = "") {
 // Per-shot throughputs: item-buffer triangles and pixels (the shot's whole buffer; overdraw
 // makes the fragments more) and gather texel updates, per second of their pass.
 std::string tableHeader(const BenchOptions& o) {
-  return fmt::format("| scene | elements | shooter blocks | item res | shooters/pass | shots | time to {:.0f}% (ms) | ms/shot | "
+  return fmt::format("| scene | polygons | triangles | elements | texel use | shooter blocks | item res | shooters/pass | shots | time to {:.0f}% (ms) | ms/shot | "
                      "GPU MiB | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s |{}\n"
-                     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
+                     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
                      o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
                      o.ceiling ? "---|---|---|" : "");
 }
@@ -203,15 +206,16 @@ std::string rowMarkdown(const BenchRow& r, const Ceilings* ceiling) {
                             100 * r.gatherUpdatesPerSecond / ceiling->invocationsPerSecond)
               : "";
   const std::string memory = r.gpuMemoryMiB ? fmt::format("{:.0f}", *r.gpuMemoryMiB) : "n/a";
-  return fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
-                     r.scene, r.elements, r.shooterBlocks, r.itemResolution, r.shootersPerPass, r.shots, r.solveMs,
+  return fmt::format("| {} | {} | {} | {} | {:.1f} % | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
+                     r.scene, r.size.polygons, r.size.triangles, r.elements, 100 * r.texelUse, r.shooterBlocks, r.itemResolution, r.shootersPerPass, r.shots, r.solveMs,
                      r.msPerShot, memory, r.split.itemBuffer,
                      r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
                      r.gatherUpdatesPerSecond, fractions);
 }
 
 nlohmann::json rowJson(const BenchRow& r) {
-  return {{"scene", r.scene}, {"elements", r.elements}, {"shooter_blocks", r.shooterBlocks},
+  return {{"scene", r.scene}, {"polygons", r.size.polygons}, {"triangles", r.size.triangles},
+          {"texel_use", r.texelUse}, {"elements", r.elements}, {"shooter_blocks", r.shooterBlocks},
           {"item_resolution", r.itemResolution}, {"shooters_per_pass", r.shootersPerPass},
           {"shots", r.shots}, {"convergence", r.convergence}, {"time_to_converge_ms", r.solveMs},
           {"ms_per_shot", r.msPerShot},
@@ -271,8 +275,9 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
   if (o.ceiling) {
     ceiling = measureCeilings(backend, o.scenes.front());
     say(fmt::format("ceilings: {:.3g} load-store invocations/s, {:.3g} item-buffer triangles/s (first scene, item "
-                    "mesh L6), {:.3g} item-buffer fragments/s (fill)\n\n",
-                    ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.fragmentsPerSecond));
+                    "mesh L{}), {:.3g} item-buffer fragments/s (fill)\n\n",
+                    ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.triangleLevel,
+                    ceiling.fragmentsPerSecond));
   }
   say(tableHeader(o));
   nlohmann::json rows = nlohmann::json::array();
@@ -284,6 +289,8 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
       for (int k : o.shootersPerPass) {
         BenchRow r = benchOne(backend, scene, atlas, k, o);
         r.scene = path;
+        r.size = sceneSize(scene);
+        r.texelUse = texelUse(atlas);
         say(rowMarkdown(r, o.ceiling ? &ceiling : nullptr));
         rows.push_back(rowJson(r));
       }
@@ -305,6 +312,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
     if (o.ceiling)
       out["ceilings"] = {{"load_store_invocations_per_s", ceiling.invocationsPerSecond},
                          {"item_buffer_triangles_per_s", ceiling.trianglesPerSecond},
+                         {"item_mesh_level", ceiling.triangleLevel},
                          {"item_buffer_fragments_per_s", ceiling.fragmentsPerSecond}};
     writeTextFile(o.json, out.dump(2) + "\n");
   }
