@@ -16,6 +16,7 @@
 #include "src/base/ResidentMemory.h"
 #include "src/scene/Camera.h"
 #include "src/bench/Ceilings.h"
+#include "src/bench/SceneSize.h"
 #include "src/bench/StochasticBench.h"
 #include "src/bench/InstantBench.h"
 #include "src/options/Options.h"
@@ -33,10 +34,11 @@ namespace {
 
 struct BenchRow {
   std::string scene;
+  SceneSize size;        // polygons and triangles
+  double texelUse = 0;   // elements / atlas texels
   std::size_t elements = 0, itemTriangles = 0, itemPixels = 0, shooterBlocks = 0;
   int itemResolution = 0;
   std::optional<double> gpuMemoryMiB;  // what the solve holds on the device, where the driver says
-  std::size_t triangles = 0;           // the scene's, its polygons fanned
   std::size_t allocatedBytes = 0;      // the most the solve's buffers and textures held (gl::allocatedBytes)
   std::size_t residentBytes = 0;       // the process's resident peak after the row (VmHWM)
   int shootersPerPass = 1;
@@ -103,7 +105,7 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   if (const std::optional<double> freeAfter = backend.freeMemoryMiB(); freeBefore && freeAfter)
     row.gpuMemoryMiB = *freeBefore - *freeAfter;
   row.allocatedBytes = gl::peakAllocatedBytes() - allocatedBefore;
-  for (const auto& p : scene.polygons()) row.triangles += p.vertices.size() - 2;
+  row.size = sceneSize(scene);
   if (const std::optional<ResidentMemory> m = residentMemory()) row.residentBytes = m->peakBytes;
   row.shots = status.shots;
   row.convergence = status.convergence;
@@ -211,9 +213,10 @@ std::string printedSetting(int value, int autoValue, const char* suffix = "") {
 // Per-shot throughputs: item-buffer triangles and pixels (the shot's whole buffer; overdraw
 // makes the fragments more) and gather texel updates, per second of their pass.
 std::string tableHeader(const BenchOptions& o) {
-  return fmt::format("| scene | elements | shooter blocks | item res | shooters/pass | shots | time to {:.0f}% (ms) | ms/shot | "
-                     "GPU MiB | GPU alloc MiB (B/element, B/triangle) | resident MiB (B/element, B/triangle) | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s |{}\n"
-                     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
+  return fmt::format("| scene | polygons | triangles | elements | texel use | shooter blocks | item res | shooters/pass | shots | "
+                     "time to {:.0f}% (ms) | ms/shot | GPU MiB | GPU alloc MiB (B/element, B/triangle) | resident MiB "
+                     "(B/element, B/triangle) | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s |{}\n"
+                     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
                      o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
                      o.ceiling ? "---|---|---|" : "");
 }
@@ -228,26 +231,28 @@ std::string rowMarkdown(const BenchRow& r, const Ceilings* ceiling) {
   const std::string memory = r.gpuMemoryMiB ? fmt::format("{:.0f}", *r.gpuMemoryMiB) : "n/a";
   const auto perUnit = [&r](std::size_t bytes) {
     return fmt::format("{:.1f} ({:.0f}, {:.0f})", bytes / 1048576.0, double(bytes) / double(std::max<std::size_t>(r.elements, 1)),
-                       double(bytes) / double(std::max<std::size_t>(r.triangles, 1)));
+                       double(bytes) / double(std::max<std::size_t>(r.size.triangles, 1)));
   };
-  return fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
-                     r.scene, r.elements, r.shooterBlocks, r.itemResolution, r.shootersPerPass, r.shots, r.solveMs,
-                     r.msPerShot, memory, perUnit(r.allocatedBytes), perUnit(r.residentBytes), r.split.itemBuffer,
+  return fmt::format("| {} | {} | {} | {} | {:.1f} % | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
+                     r.scene, r.size.polygons, r.size.triangles, r.elements, 100 * r.texelUse, r.shooterBlocks,
+                     r.itemResolution, r.shootersPerPass, r.shots, r.solveMs, r.msPerShot, memory, perUnit(r.allocatedBytes),
+                     perUnit(r.residentBytes), r.split.itemBuffer,
                      r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
                      r.gatherUpdatesPerSecond, fractions);
 }
 
 nlohmann::json rowJson(const BenchRow& r) {
-  return {{"scene", r.scene}, {"elements", r.elements}, {"shooter_blocks", r.shooterBlocks},
+  return {{"scene", r.scene}, {"polygons", r.size.polygons}, {"triangles", r.size.triangles},
+          {"texel_use", r.texelUse}, {"elements", r.elements}, {"shooter_blocks", r.shooterBlocks},
           {"item_resolution", r.itemResolution}, {"shooters_per_pass", r.shootersPerPass},
           {"shots", r.shots}, {"convergence", r.convergence}, {"time_to_converge_ms", r.solveMs},
           {"ms_per_shot", r.msPerShot},
           {"gpu_memory_mib", r.gpuMemoryMiB ? nlohmann::json(*r.gpuMemoryMiB) : nlohmann::json()},
-          {"triangles", r.triangles}, {"gpu_allocated_bytes", r.allocatedBytes}, {"resident_peak_bytes", r.residentBytes},
+          {"gpu_allocated_bytes", r.allocatedBytes}, {"resident_peak_bytes", r.residentBytes},
           {"gpu_allocated_bytes_per_element", double(r.allocatedBytes) / double(std::max<std::size_t>(r.elements, 1))},
-          {"gpu_allocated_bytes_per_triangle", double(r.allocatedBytes) / double(std::max<std::size_t>(r.triangles, 1))},
+          {"gpu_allocated_bytes_per_triangle", double(r.allocatedBytes) / double(std::max<std::size_t>(r.size.triangles, 1))},
           {"resident_peak_bytes_per_element", double(r.residentBytes) / double(std::max<std::size_t>(r.elements, 1))},
-          {"resident_peak_bytes_per_triangle", double(r.residentBytes) / double(std::max<std::size_t>(r.triangles, 1))},
+          {"resident_peak_bytes_per_triangle", double(r.residentBytes) / double(std::max<std::size_t>(r.size.triangles, 1))},
           {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
                                  {"select", r.split.select}, {"readback", r.split.readback}}},
           {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},
@@ -302,8 +307,9 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
   if (o.ceiling) {
     ceiling = measureCeilings(backend, o.scenes.front());
     say(fmt::format("ceilings: {:.3g} load-store invocations/s, {:.3g} item-buffer triangles/s (first scene, item "
-                    "mesh L6), {:.3g} item-buffer fragments/s (fill)\n\n",
-                    ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.fragmentsPerSecond));
+                    "mesh L{}), {:.3g} item-buffer fragments/s (fill)\n\n",
+                    ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.triangleLevel,
+                    ceiling.fragmentsPerSecond));
   }
   say(tableHeader(o));
   nlohmann::json rows = nlohmann::json::array();
@@ -315,6 +321,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
       for (int k : o.shootersPerPass) {
         BenchRow r = benchOne(backend, scene, atlas, k, o);
         r.scene = path;
+        r.texelUse = texelUse(atlas);
         say(rowMarkdown(r, o.ceiling ? &ceiling : nullptr));
         rows.push_back(rowJson(r));
       }
@@ -336,6 +343,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
     if (o.ceiling)
       out["ceilings"] = {{"load_store_invocations_per_s", ceiling.invocationsPerSecond},
                          {"item_buffer_triangles_per_s", ceiling.trianglesPerSecond},
+                         {"item_mesh_level", ceiling.triangleLevel},
                          {"item_buffer_fragments_per_s", ceiling.fragmentsPerSecond}};
     writeTextFile(o.json, out.dump(2) + "\n");
   }

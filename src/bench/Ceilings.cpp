@@ -8,6 +8,7 @@
 #include "gl/State.h"
 #include "src/solver/Control.h"
 #include "src/solver/ItemBuffer.h"
+#include "src/scene/ItemMesh.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/ShaderContract.h"
 
@@ -30,6 +31,12 @@ double bestSeconds(gl::RenderBackend& backend, const std::function<void()>& work
 }
 
 }  // namespace
+
+int ceilingLevel(std::size_t sceneTriangles) {
+  int level = 6;
+  while (level > 0 && (sceneTriangles << (2 * level)) > kCeilingTriangles) --level;
+  return level;
+}
 
 Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePath) {
   Ceilings c;
@@ -67,9 +74,10 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
       gl::drawTriangles(3, layers);
     });
   }
-  // Triangles: the item mesh at L6 from the scene's top, 10 times.
+  // Triangles: the item mesh at L6 (or lower, see ceilingLevel) from the scene's top, 10 times.
   Scene scene = loadScene(scenePath);
-  ItemBuffer items(scene, 6, 512, 2.0 * glm::length(scene.boundsMax() - scene.boundsMin()));
+  c.triangleLevel = ceilingLevel(itemTriangleCount(scene, 0));
+  ItemBuffer items(scene, c.triangleLevel, 512, 2.0 * glm::length(scene.boundsMax() - scene.boundsMin()));
   ControlBlock control{};
   control.count = 1;
   glm::dvec3 lo = scene.boundsMin(), hi = scene.boundsMax();
