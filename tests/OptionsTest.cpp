@@ -32,7 +32,7 @@ void expectOneError(const std::string& args, const std::string& message) {
   CHECK_THAT(run.output, Contains(message));
 }
 
-const std::string kScene = test::sourcePath("scenes/analytic/parallel_squares.obj");
+const std::string kOptionsScene = test::sourcePath("scenes/analytic/parallel_squares.obj");
 
 }  // namespace
 
@@ -75,22 +75,22 @@ TEST_CASE("docs/cli.md is what `hemirad docs cli` prints from the table", "[cli]
 }
 
 TEST_CASE("A mistyped flag or subcommand is one error naming the closest valid one", "[cli][bad-input]") {
-  expectOneError("solve " + kScene + " --texel-sise 3", "did you mean --texel-size?");
-  expectOneError("solve " + kScene + " --converj=0.5", "did you mean --converge?");
-  expectOneError("solv " + kScene, "unknown subcommand 'solv': did you mean solve?");
-  expectOneError("validate " + kScene + " --shots 3", "--shots is not a flag of hemirad validate");
+  expectOneError("solve " + kOptionsScene + " --texel-sise 3", "did you mean --texel-size?");
+  expectOneError("solve " + kOptionsScene + " --converj=0.5", "did you mean --converge?");
+  expectOneError("solv " + kOptionsScene, "unknown subcommand 'solv': did you mean solve?");
+  expectOneError("validate " + kOptionsScene + " --shots 3", "--shots is not a flag of hemirad validate");
   expectOneError("bench --scnees x.obj", "did you mean --scenes?");
 }
 
 TEST_CASE("The --converge flag is checked the same in every command that takes it", "[cli][bad-input]") {
-  for (const std::string& command : {"solve " + kScene, "view " + kScene, std::string("bench")})
+  for (const std::string& command : {"solve " + kOptionsScene, "view " + kOptionsScene, std::string("bench")})
     for (const std::string value : {"0", "1", "nan", "x"})
       expectOneError(command + " --converge " + value, "--converge: must be in (0, 1), not '" + value + "'");
 }
 
 TEST_CASE("validate takes --gpu, the EGL device index, as solve does", "[cli][backend]") {
-  expectOneError("validate " + kScene + " --gpu -1", "--gpu");
-  test::Run run = test::hemirad("validate " + kScene + " --backend egl --gpu 99 --levels 0 --shooters 1");
+  expectOneError("validate " + kOptionsScene + " --gpu -1", "--gpu");
+  test::Run run = test::hemirad("validate " + kOptionsScene + " --backend egl --gpu 99 --levels 0 --shooters 1");
   INFO(run.output);
   CHECK(run.exitCode == 1);
   CHECK(count(run.output, "hemirad: error:") == 1);

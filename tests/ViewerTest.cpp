@@ -17,7 +17,7 @@ using Catch::Contains;
 
 namespace {
 
-const std::string kScene = test::sourcePath("scenes/cornell/cornell.obj");
+const std::string kViewerScene = test::sourcePath("scenes/cornell/cornell.obj");
 
 // `hemirad view ARGS` on a fresh virtual display; exit 97 says xvfb-run is missing.
 test::Run viewUnderXvfb(const std::string& args) {
@@ -50,7 +50,7 @@ float maxDifference(const Image& a, const Image& b) {
 }  // namespace
 
 TEST_CASE("The viewer under Xvfb shows the same picture as solve after the same shots", "[viewer]") {
-  const std::string common = kScene + " --elements 1500 --width 160 --height 120";
+  const std::string common = kViewerScene + " --elements 1500 --width 160 --height 120";
   const auto [a, b] = viewAndSolve(common + " --frame-shots 8 --frame-count 5", common + " --shots 40",
                                    "hemirad view: progressive, 40 shots", "progressive");
   REQUIRE(a.width == 160);
@@ -68,7 +68,7 @@ TEST_CASE("The viewer under Xvfb shows the same picture as solve after the same 
 TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-count shots", "[heavy][viewer]") {
   for (std::string algorithm : {"progressive", "importance", "perspective"}) {
     const std::string shot = test::tempPath("viewer-" + algorithm + ".png");
-    test::Run view = viewUnderXvfb(kScene + " --elements 600 --width 64 --height 48 --algorithm " + algorithm +
+    test::Run view = viewUnderXvfb(kViewerScene + " --elements 600 --width 64 --height 48 --algorithm " + algorithm +
                                    " --frame-shots 16 --frame-count 3 --screenshot " + shot);
     INFO(algorithm << "\n" << view.output);
     REQUIRE(view.exitCode == 0);
@@ -83,20 +83,20 @@ TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-cou
 }
 
 TEST_CASE("The viewer shows instant radiosity as solve --method instant renders it, interleaved", "[heavy][viewer][instant]") {
-  const std::string common = kScene + " --method instant --vpls 64 --shadow-res 32 --interleave 2 --width 64 --height 48";
+  const std::string common = kViewerScene + " --method instant --vpls 64 --shadow-res 32 --interleave 2 --width 64 --height 48";
   const auto [a, b] = viewAndSolve(common + " --frame-count 3", common,
                                    "hemirad view: instant, 64 VPLs, deferred shading, interleave 2, 3 frames", "instant");
   CHECK(test::meanPixel(a) > 0.2);
   CHECK(maxDifference(a, b) <= 1.0f / 255 + 1e-6f);  // as the progressive view: the same render and tone map
   // Refused before any window opens: no display needed.
-  test::Run refused = test::shell("env -u DISPLAY \"$HEMIRAD\" view " + kScene + " --interleave 2");
+  test::Run refused = test::shell("env -u DISPLAY \"$HEMIRAD\" view " + kViewerScene + " --interleave 2");
   CHECK(refused.exitCode == 2);
   CHECK_THAT(refused.output, Contains("--interleave is for --method instant"));
 }
 
 TEST_CASE("Without a display the viewer fails with one error line", "[viewer]") {
   const std::string shot = test::tempPath("never.png");
-  test::Run run = test::shell("env -u DISPLAY -u WAYLAND_DISPLAY \"$HEMIRAD\" view " + kScene +
+  test::Run run = test::shell("env -u DISPLAY -u WAYLAND_DISPLAY \"$HEMIRAD\" view " + kViewerScene +
                               " --elements 600 --frame-count 1 --screenshot " + shot);
   INFO(run.output);
   CHECK(run.exitCode == 1);

@@ -13,7 +13,7 @@
 using namespace hemirad;
 
 namespace {
-std::vector<std::vector<std::string>> readCsv(const std::string& path) {
+std::vector<std::vector<std::string>> readFramesCsv(const std::string& path) {
   std::vector<std::vector<std::string>> rows;
   std::ifstream in(path);
   for (std::string line; std::getline(in, line);) {
@@ -74,7 +74,7 @@ TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly wi
                                 (twice ? " && $HEMIRAD solve " + scene + flags + " --frames " + b : std::string()));
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
-    const auto rows = readCsv(a + "/frames.csv"), again = readCsv((twice ? b : a) + "/frames.csv");
+    const auto rows = readFramesCsv(a + "/frames.csv"), again = readFramesCsv((twice ? b : a) + "/frames.csv");
     REQUIRE(rows.size() == 6);  // header + frames at 0, 0.25, ... 1 s
     CHECK(rows[0][0] == "frame");
     CHECK(rows[0].back() == "shown_rms");
@@ -118,7 +118,7 @@ TEST_CASE("hemirad-bench experiment, the lean binary for GPU machines, walks as 
   test::Run run = test::shell("$HEMIRAD" + flags + full + " && \"$(dirname \"$HEMIRAD\")/hemirad-bench\"" + flags + lean);
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
-  const auto a = readCsv(full + "/building_4_perspective.csv"), b = readCsv(lean + "/building_4_perspective.csv");
+  const auto a = readFramesCsv(full + "/building_4_perspective.csv"), b = readFramesCsv(lean + "/building_4_perspective.csv");
   REQUIRE(a.size() > 2);
   REQUIRE(a.size() == b.size());
   for (std::size_t r = 0; r < a.size(); ++r)

@@ -23,7 +23,7 @@ namespace hemirad {
 namespace {
 
 // solve's instant radiosity: the seed and item mesh of the other methods' defaults (1, level 3).
-InstantSettings solveDefaults() {
+InstantSettings instantSolveDefaults() {
   InstantSettings s;
   s.seed = 1;
   s.itemSubdivision = 3;
@@ -31,7 +31,7 @@ InstantSettings solveDefaults() {
 }
 
 struct InstantRun {
-  InstantSettings settings = solveDefaults();
+  InstantSettings settings = instantSolveDefaults();
   Shading shading = Shading::Deferred;
 };
 

@@ -44,7 +44,7 @@ class StochasticRun final : public AtlasRun {
 
 // solve's stochastic iteration takes progressive refinement's item buffer, 512^2 (bench,
 // compare-methods and animate keep StochasticSettings' 256^2).
-StochasticSettings solveDefaults() {
+StochasticSettings stochasticSolveDefaults() {
   StochasticSettings s;
   s.itemResolution = 512;
   return s;
@@ -82,7 +82,7 @@ class StochasticMethod final : public AtlasMethod {
   const StopRule& stop() const override { return settings_.stop; }
 
  private:
-  StochasticSettings settings_ = solveDefaults();
+  StochasticSettings settings_ = stochasticSolveDefaults();
 };
 
 }  // namespace
