@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <ctime>
-#include <utility>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -57,12 +56,7 @@ double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveSta
   backend.finish();
   Progress bar(progress ? *progress : StopRule{}, progress != nullptr);
   auto t0 = Clock::now();
-  unsigned batch = 1;
-  while (!status.done) {  // one batch at a time, sized as advanceWhile sizes them
-    bool once = true;
-    status = advanceWhile(solver, status, batch, [&] { return std::exchange(once, false); });
-    bar.update(status);
-  }
+  status = advanceToStop(solver, status, [&](const SolveStatus& s) { bar.update(s); });
   backend.finish();
   bar.finish();
   return msSince(t0);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace hemirad {
@@ -59,7 +60,9 @@ class Solver;
 // sizes never change the result, only how often the status is read.
 template <class More>
 SolveStatus advanceWhile(Solver& solver, SolveStatus status, unsigned& batch, More more);
-// The same until the stop rule fires.
+// The same until the stop rule fires, calling `afterBatch(status)` after each batch (a progress bar).
+template <class AfterBatch>
+SolveStatus advanceToStop(Solver& solver, SolveStatus status, AfterBatch afterBatch);
 SolveStatus advanceToStop(Solver& solver, SolveStatus status);
 
 class Solver {
@@ -84,6 +87,17 @@ SolveStatus advanceWhile(Solver& solver, SolveStatus status, unsigned& batch, Mo
     const auto t0 = std::chrono::steady_clock::now();
     status = solver.advance(batch);
     batch = nextBatch(batch, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  return status;
+}
+
+template <class AfterBatch>
+SolveStatus advanceToStop(Solver& solver, SolveStatus status, AfterBatch afterBatch) {
+  unsigned batch = 1;
+  while (!status.done) {
+    bool once = true;  // one batch per advanceWhile, sized as it sizes them
+    status = advanceWhile(solver, status, batch, [&] { return std::exchange(once, false); });
+    afterBatch(status);
   }
   return status;
 }

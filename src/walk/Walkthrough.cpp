@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <utility>
 #include <fmt/format.h>
 
 #include "src/base/AtomicFile.h"
@@ -20,13 +19,7 @@ ConvergedViews::ConvergedViews(const Scene& scene, const Atlas& atlas, Progressi
   ProgressiveSolver solver(state_, settings);
   if (progress) fmt::print(stderr, "hemirad: the reference solve, to convergence {}\n", convergence);
   Progress bar(settings.stop, progress);
-  SolveStatus status;
-  unsigned batch = 1;
-  while (!status.done) {  // one batch at a time (sized as advanceWhile sizes them), the bar after each
-    bool once = true;
-    status = advanceWhile(solver, status, batch, [&] { return std::exchange(once, false); });
-    bar.update(status);
-  }
+  const SolveStatus status = advanceToStop(solver, {}, [&](const SolveStatus& s) { bar.update(s); });
   bar.finish();
   shots_ = status.shots;
 }
