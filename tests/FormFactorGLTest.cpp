@@ -23,7 +23,7 @@ double gpuFormFactor(const Scene& s, double texelSize, int itemSubdivision, int 
   settings.shootLevel = shootLevel;
   settings.itemSubdivision = itemSubdivision;
   settings.projection = projection;
-  if (itemResolution > 0) settings.itemResolution = itemResolution;  // else the default
+  settings.itemResolution = itemResolution > 0 ? itemResolution : kSeed003Plan.itemResolution;  // else seed 003's 512
   settings.stop.maxShots = emitterElements;
   test::Solved r = test::solve(s, texelSize, settings);
   REQUIRE(r.status.shots == emitterElements);

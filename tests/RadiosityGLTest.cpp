@@ -41,10 +41,9 @@ TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho) wi
        {std::tuple{0.5, 16, 0, Projection::Orthographic}, {0.5, 1, 2, Projection::Orthographic},
         {0.5, 16, kAutoShootLevel, Projection::Orthographic}, {0.5, 16, kAutoShootLevel, Projection::Hemicube}}) {
     Scene s = furnace(rho, 1.0);
-    ProgressiveSettings settings;
+    ProgressiveSettings settings;  // the hemicube row: the default (the fast preset)
+    if (projection == Projection::Orthographic) settings.usePreset("seed003");  // L3, 512^2
     settings.shootLevel = level;
-    settings.projection = projection;
-    if (projection == Projection::Hemicube) settings.itemSubdivision = 0;
     if (level == kAutoShootLevel) settings.itemResolution = kAutoItemResolution;
     settings.shootersPerPass = shooters;
     settings.stop.targetConvergence = 0.9995;  // what is left unshot lowers B by < 0.05%

@@ -171,10 +171,7 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   add(cmd, "--scenes", o.scenes);
   add(cmd, "--elements", o.elements);
   add(cmd, "--converge", o.converge);
-  add(cmd, "--shoot-level", o.progressive.shootLevel);
-  add(cmd, "--item-subdiv", o.progressive.itemSubdivision);
-  add(cmd, "--item-res", o.progressive.itemResolution);
-  add(cmd, "--hemisphere", o.progressive.projection, "orthographic");
+  options::addItemPlan(cmd, o.progressive);  // --preset, --hemisphere, --item-subdiv, --item-res, --shoot-level
   add(cmd, "--shooters-per-pass", o.shootersPerPass);
   add(cmd, "--algorithm", o.progressive.algorithm);
   add(cmd, "--method", o.method)->transform(options::oneOfNames({"progressive", "stochastic", "instant"}));
@@ -258,14 +255,18 @@ nlohmann::json rowJson(const BenchRow& r) {
 // The stochastic method's rows and JSON (src/bench/StochasticBench.h).
 template <class Say>
 void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
-  say(fmt::format("hemirad bench, {}, {} ({}), stochastic iteration, item mesh L{}, item buffer {}^2\n\n", date,
-                  backend.name(), backend.renderer(), o.progressive.itemSubdivision, o.progressive.itemResolution));
+  say(fmt::format("hemirad bench, {}, {} ({}), stochastic iteration, preset {}: item mesh L{}, {} item buffer {}\n\n", date,
+                  backend.name(), backend.renderer(), o.progressive.presetLabel(), o.progressive.itemSubdivision,
+                  projectionName(o.progressive.projection),
+                  printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
   const nlohmann::json rows = benchStochastic(backend, o, say);
   if (!o.json.empty())
     writeTextFile(o.json, nlohmann::json{{"date", date},
                                          {"backend", backend.name()},
                                          {"renderer", backend.renderer()},
                                          {"method", "stochastic"},
+                                         {"preset", o.progressive.presetLabel()},
+                                         {"projection", projectionName(o.progressive.projection)},
                                          {"item_subdivision", o.progressive.itemSubdivision},
                                          {"item_resolution", o.progressive.itemResolution},
                                          {"rows", rows},
@@ -293,8 +294,9 @@ void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const ch
 // Time to convergence per scene, element count and shooters a pass, against the measured ceilings.
 template <class Say>
 void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
-  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, shoot level {}, item mesh L{}, {} item buffer {}\n\n",
+  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, preset {}: shoot level {}, item mesh L{}, {} item buffer {}\n\n",
                   date, backend.name(), backend.renderer(), algorithmName(o.progressive.algorithm), o.converge,
+                  o.progressive.presetLabel(),
                   printedSetting(o.progressive.shootLevel, kAutoShootLevel), o.progressive.itemSubdivision, projectionName(o.progressive.projection),
                   printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
   Ceilings ceiling;
@@ -328,6 +330,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
                           {"renderer", backend.renderer()},
                           {"algorithm", algorithmName(o.progressive.algorithm)},
                           {"converge", o.converge},
+                          {"preset", o.progressive.presetLabel()},
                           {"shoot_level", o.progressive.shootLevel},
                           {"item_subdivision", o.progressive.itemSubdivision},
                           {"item_resolution", o.progressive.itemResolution},

@@ -57,6 +57,7 @@ StochasticRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atl
   settings.shooters = shooters;
   settings.itemSubdivision = o.progressive.itemSubdivision;
   settings.itemResolution = o.progressive.itemResolution;
+  settings.projection = o.progressive.projection;
   settings.timings = gl::TimerMode::Off;
   settings.stop.maxShots = 1;  // warm-up: shaders compile and buffers page in at first use
   {

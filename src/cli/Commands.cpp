@@ -39,7 +39,7 @@ Commands::Commands() {
 
   infoCmd = app.add_subcommand("info", "Describe a scene: objects, polygons, area, emitters, elements, GPU and resident memory");
   addScene(infoCmd, info.scene, info.load, info.discretisation);
-  add(infoCmd, "--item-subdiv", info.itemSubdivision);
+  add(infoCmd, "--item-subdiv", info.itemSubdivision, options::defaultText("--item-subdiv"));
 
   addValidate();
   benchCmd = app.add_subcommand("bench", "Time the solver: shots and time to convergence, per-pass split");
@@ -126,15 +126,14 @@ void Commands::addView() {
   add(w, "--frame-shots", view.shotsPerFrame)->excludes(frameMs);
   add(w, "--frame-count", view.frames);
   add(w, "--screenshot", view.screenshot);
-  add(w, "--item-subdiv", p.itemSubdivision);
-  add(w, "--item-res", p.itemResolution);
-  add(w, "--shoot-level", p.shootLevel);
+  options::addItemPlan(w, p);
   add(w, "--shooters-per-pass", p.shootersPerPass);
   add(w, "--converge", p.stop.targetConvergence);
   add(w, "--shots", p.stop.maxShots);
   add(w, "--method", view.method)->transform(options::oneOfNames(methods.names()));
   InstantSettings& i = view.instant;
-  i.seed = 1;  // as solve's
+  i.seed = 1;              // as solve's
+  i.itemSubdivision = 3;   // as solve's (src/method/instant): hemispherical shadow maps, curved edges
   viewInstantOnly = {add(w, "--vpls", i.vpls), add(w, "--vpl-bounces", i.bounces), add(w, "--vpl-clamp", i.clamp),
                      add(w, "--shadow-res", i.shadowResolution), add(w, "--shading", viewShading),
                      add(w, "--interleave", i.interleave), add(w, "--seed", i.seed)};
@@ -148,7 +147,10 @@ int Commands::runView() {
   if (view.method != "instant")
     for (const CLI::Option* o : viewInstantOnly)
       if (*o) throw InputError(o->get_name() + " is for --method instant");
-  view.instant.itemSubdivision = view.progressive.itemSubdivision;
+  // Instant radiosity's shadow maps are hemispherical (curved edges): they keep their own item-mesh
+  // level unless --item-subdiv says otherwise, not the default preset's 0.
+  if (*viewCmd->get_option("--item-subdiv")) view.instant.itemSubdivision = view.progressive.itemSubdivision;
+  view.progressive.projection = options::oneProjection(int(view.progressive.projection));  // refuses `all`
   view.shading = viewShading == "forward" ? Shading::Forward : Shading::Deferred;
   return hemirad::runView(view);
 }
@@ -188,8 +190,7 @@ void Commands::addComparison() {
   add(c, "--reference-convergence", m.referenceConvergence);
   add(c, "--shots", m.iterations, "1024 (stochastic iterations; progressive gets as much solver time)");
   add(c, "--shooters-per-pass", m.progressive.shootersPerPass);
-  add(c, "--item-res", m.progressive.itemResolution);
-  add(c, "--item-subdiv", m.progressive.itemSubdivision);
+  options::addItemPlan(c, m.progressive, false);  // the shooters are one texel each (shoot level 0)
   add(c, "--seed", m.seed);
   add(c, "--out-dir", m.out);
   add(c, "--figure-size", m.figureSize);
@@ -281,7 +282,10 @@ int Commands::run() {
   if (*benchCmd) return runBench(bench);
   if (*viewCmd) return runView();
   if (*experimentCmd) return runExperiment();
-  if (*comparisonCmd) return runMethodComparison(comparison);
+  if (*comparisonCmd) {
+    comparison.progressive.projection = options::oneProjection(int(comparison.progressive.projection));
+    return runMethodComparison(comparison);
+  }
   if (*vplErrorCmd) return runVplError(vplError);
   if (*animateCmd) {
     animation.stochastic.timings = gl::TimerMode::Off;

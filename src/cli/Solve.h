@@ -9,6 +9,7 @@
 #include "src/output/Image.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/SceneLoader.h"
+#include "src/solver/Presets.h"
 #include "src/walk/Walkthrough.h"
 
 namespace hemirad {
@@ -49,7 +50,7 @@ struct InfoOptions {
   std::string scene;
   LoadOptions load;
   Discretisation discretisation;
-  int itemSubdivision = 3;
+  int itemSubdivision = kFastPlan.itemSubdivision;  // the item mesh a solve's default preset draws
 };
 
 int runInfo(const InfoOptions& options);

@@ -32,7 +32,7 @@ MethodFlag switchFlag(const std::string& name, Set set) {
 // --hemisphere, one projection (`all` is validate's).
 inline MethodFlag projectionFlag(Projection& field) {
   return {"--hemisphere", [&field](const CLI::Option& o) { field = options::oneProjection(o.as<int>()); },
-          "orthographic", {}};
+          options::defaultText("--hemisphere"), {}};
 }
 
 // One of solve's own flags (SolveOptions) that this method takes: others refuse it.

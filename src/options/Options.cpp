@@ -14,6 +14,8 @@
 #include "src/base/Error.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/Control.h"
+#include "src/solver/Presets.h"
+#include "src/solver/ProgressiveSolver.h"
 #include "src/solver/Projection.h"
 #include "src/solver/Solver.h"
 #include "src/solver/ShootingPlan.h"
@@ -115,6 +117,19 @@ CLI::Validator autoOr(int autoValue, int lo, int hi) {
       "auto or " + range);
 }
 
+// --preset: a name from the preset table (src/solver/Presets.h); the error names them all.
+CLI::Validator presetChoice() {
+  std::vector<std::string> listed;
+  for (const Preset& p : presets()) listed.emplace_back(p.name);
+  return CLI::Validator(
+      [](std::string& v) {
+        for (const Preset& p : presets())
+          if (v == p.name) return std::string();
+        return fmt::format("'{}' is not a preset; the presets are {} (the default: {})", v, presetNames(), kDefaultPreset);
+      },
+      fmt::format("{}", fmt::join(listed, "|")));
+}
+
 std::vector<Flag> sceneAndSolverFlags() {
   const auto positive = number([](double x) { return x > 0; }, "> 0", "must be a positive number");
   const auto unit = number([](double x) { return x > 0 && x < 1; }, "in (0, 1)", "must be in (0, 1)");
@@ -148,6 +163,12 @@ std::vector<Flag> sceneAndSolverFlags() {
        projectionChoice()},
       {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
        "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, 0, 8)},
+      {"--preset", "NAME",
+       "Start the item buffer and shooters from a named plan (docs/cli.md#presets): fast (the default: hemicube at "
+       "item-mesh level 0, planned shooter blocks and resolution), seed003 (seed 003's orthographic hemisphere, L3, "
+       "512^2, level-1 shooting: the default before issue 30, bitwise) or reference (element-by-element shooting, "
+       "hemicube 1024^2); --hemisphere, --item-subdiv, --item-res and --shoot-level given beside it override its values",
+       presetChoice(), std::string(kDefaultPreset)},
       {"--algorithm", "NAME",
        "Progressive shooter choice: progressive; importance: shooters ranked by unshot power x importance from "
        "the camera; perspective: importance-driven, and only what the view sees receives (seed 004)",
@@ -338,6 +359,44 @@ CLI::Option* declare(CLI::App* cmd, const std::string& name, const std::string& 
   CLI::Option* option = detail::finish(cmd->add_option(f.name, f.help), f, false, defaultText);
   if (option->get_default_str().empty()) option->default_str(value);
   return option;
+}
+
+namespace {
+
+std::string autoText(int value, int autoValue) {
+  return fmt::format("{} (preset {})", value == autoValue ? std::string("auto") : std::to_string(value), kDefaultPreset);
+}
+
+}  // namespace
+
+std::string defaultText(const std::string& flag) {
+  if (flag == "--hemisphere") return fmt::format("{} (preset {})", projectionName(kFastPlan.projection), kDefaultPreset);
+  if (flag == "--item-subdiv") return fmt::format("{} (preset {})", kFastPlan.itemSubdivision, kDefaultPreset);
+  if (flag == "--item-res") return autoText(kFastPlan.itemResolution, kAutoItemResolution);
+  if (flag == "--shoot-level") return autoText(kFastPlan.shootLevel, kAutoShootLevel);
+  throw std::logic_error(flag + " is not set by a preset");
+}
+
+void applyPreset(ProgressiveSettings& p, const std::string& name, const std::function<bool(const std::string&)>& given) {
+  const ItemPlan before = p.plan();  // a flag given beside the preset may already be stored
+  p.usePreset(name);
+  if (given("--hemisphere")) p.projection = before.projection;
+  if (given("--item-subdiv")) p.itemSubdivision = before.itemSubdivision;
+  if (given("--item-res")) p.itemResolution = before.itemResolution;
+  if (given("--shoot-level")) p.shootLevel = before.shootLevel;
+}
+
+void addItemPlan(CLI::App* cmd, ProgressiveSettings& p, bool shootLevel) {
+  add(cmd, "--preset", p.preset)->each([cmd, &p](const std::string& name) {
+    applyPreset(p, name, [cmd](const std::string& flag) {
+      const CLI::Option* o = cmd->get_option_no_throw(flag);
+      return o && o->count() > 0;
+    });
+  });
+  add(cmd, "--hemisphere", p.projection, defaultText("--hemisphere"));
+  add(cmd, "--item-subdiv", p.itemSubdivision, defaultText("--item-subdiv"));
+  add(cmd, "--item-res", p.itemResolution, defaultText("--item-res"));
+  if (shootLevel) add(cmd, "--shoot-level", p.shootLevel, defaultText("--shoot-level"));
 }
 
 Projection oneProjection(int stored) {

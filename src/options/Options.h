@@ -5,12 +5,17 @@
 // validate or viewer library: the lean hemirad-bench links it.
 #pragma once
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "src/solver/Projection.h"
+
+namespace hemirad {
+struct ProgressiveSettings;
+}
 
 namespace hemirad::options {
 
@@ -53,5 +58,15 @@ CLI::Validator oneOfNames(const std::vector<std::string>& names);
 constexpr int kAllProjections = -1;
 // The projection stored for a command that takes one (solve, bench): InputError for `all`.
 Projection oneProjection(int stored);
+
+// Presets (src/solver/Presets.h). The default shown for a flag a preset sets (--hemisphere,
+// --item-subdiv, --item-res, --shoot-level): the default preset's value, "auto (preset fast)".
+std::string defaultText(const std::string& flag);
+// `p` from preset `name`, but keeping the values of the flags `given` says were given: flags given
+// beside --preset override it, whichever order they come in and whichever is stored first.
+void applyPreset(ProgressiveSettings& p, const std::string& name, const std::function<bool(const std::string&)>& given);
+// --preset, --hemisphere, --item-subdiv, --item-res and (with `shootLevel`) --shoot-level, bound to
+// `p` (bench, view, experiment, compare-methods; solve's progressive method binds its own).
+void addItemPlan(CLI::App* cmd, ProgressiveSettings& p, bool shootLevel = true);
 
 }  // namespace hemirad::options

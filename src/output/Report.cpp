@@ -28,7 +28,7 @@ nlohmann::json historyJson(const std::vector<float>& h) {
 
 nlohmann::json reportJson(const RunInfo& r) {
   using nlohmann::json;
-  return {
+  json report = {
       {"backend", r.backend},
       {"renderer", r.renderer},
       {"method", r.method},
@@ -58,6 +58,9 @@ nlohmann::json reportJson(const RunInfo& r) {
       {"objects", objectsJson(r.objects)},
       {"provenance", provenanceJson(provenance(r.backend, r.renderer))},
   };
+  if (!r.preset.empty()) report["preset"] = r.preset;
+  if (!r.projection.empty()) report["projection"] = r.projection;
+  return report;
 }
 
 void writeReport(const std::string& path, const RunInfo& run) {

@@ -12,6 +12,9 @@ namespace hemirad {
 
 struct RunInfo {
   std::string backend, renderer, method, algorithm, scene;  // method: `solve --method`
+  // Progressive refinement: the item buffer's projection and the preset its plan started from,
+  // with the flags that overrode it (src/solver/Presets.h); empty for the other methods.
+  std::string projection, preset;
   double texelSize = 0;
   int itemSubdivision = 0, itemResolution = 0, shootLevel = 0, shootersPerPass = 0;
   unsigned importanceShots = 0;  // importance-driven solves

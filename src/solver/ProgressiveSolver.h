@@ -13,6 +13,7 @@
 #include "src/solver/ImportanceView.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/solver/PerspectiveView.h"
+#include "src/solver/Presets.h"
 #include "src/solver/ShooterTree.h"
 #include "src/solver/ShootingPlan.h"
 #include "src/solver/Solver.h"
@@ -21,10 +22,21 @@
 namespace hemirad {
 
 struct ProgressiveSettings {
-  int itemSubdivision = 3;   // 1-to-4 splits of the item mesh
-  int itemResolution = 512;  // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
-  Projection projection = Projection::Orthographic;
-  int shootLevel = 1;        // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
+  // The item buffer and shooters start as the default preset's, `fast` (src/solver/Presets.h).
+  int itemSubdivision = kFastPlan.itemSubdivision;  // 1-to-4 splits of the item mesh
+  int itemResolution = kFastPlan.itemResolution;    // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
+  Projection projection = kFastPlan.projection;
+  int shootLevel = kFastPlan.shootLevel;            // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
+  std::string preset{kDefaultPreset};               // the preset the four above started from (the report names it)
+  ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel}; }
+  // Starts from preset `name` (InputError for an unknown name): its four values and its name.
+  void usePreset(std::string_view name) {
+    const Preset& p = findPreset(name);
+    preset = std::string(p.name);
+    projection = p.plan.projection, itemSubdivision = p.plan.itemSubdivision;
+    itemResolution = p.plan.itemResolution, shootLevel = p.plan.shootLevel;
+  }
+  std::string presetLabel() const { return hemirad::presetLabel(preset, plan()); }
   // A block whose elements' unshot radiosity spans more than uniformRatio (least / largest
   // luminance) shoots its brightest quadrant, down to splitDepth levels (ShooterTree.h).
   // Depth 3 and 0.1: within 1 % of per-element shooting on the Cornell box's objects with

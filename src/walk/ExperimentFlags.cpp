@@ -13,6 +13,10 @@ std::vector<CLI::Option*> addExperimentFlags(CLI::App* x, ExperimentOptions& e) 
       add(x, "--width", e.walkthrough.width), add(x, "--height", e.walkthrough.height),
       add(x, "--ambient", e.walkthrough.ambient), add(x, "--reference-convergence", e.referenceConvergence),
       add(x, "--fov-decay", e.progressive.fovDecayShots)};
+  // --preset alone: the walkthroughs' item buffer and shooters (seed 004's runs: --preset seed003).
+  flags.push_back(options::add(x, "--preset", e.progressive.preset)->each([&e](const std::string& name) {
+    e.progressive.usePreset(name);
+  }));
   flags.push_back(add(x, "--frame-shots", e.walkthrough.frameShots)->excludes(x->get_option("--frame-ms")));
   flags.push_back(add(x, "--backend", e.backend.kind));
   flags.push_back(add(x, "--gpu", e.backend.gpu));

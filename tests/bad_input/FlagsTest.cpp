@@ -49,3 +49,12 @@ TEST_CASE("Bad input: a flag of the other method, a seed that is not a number, o
     expectRefused("method-flags", stochastic + " " + flag, {flag.substr(0, flag.find(' '))});
   expectRefused("method-flags", "solve " + obj + " --quiet --method stochastic", {"--method stochastic needs --shots"});
 }
+
+TEST_CASE("Bad input: a bad preset name is one error line naming the presets, exit 2", "[cli][bad-input][preset]") {
+  std::string obj = writeScene("preset", kQuad + "f 1 2 3 4\n");
+  for (std::string name : {"fastest", "Seed003", "''"})
+    expectRefused("preset", solve(obj) + " --preset " + name,
+                  {"--preset", "is not a preset; the presets are fast, seed003, reference (the default: fast)"});
+  expectRefused("preset", solve(obj) + " --method stochastic --preset seed003",
+                {"--preset is for --method progressive, not stochastic"});
+}

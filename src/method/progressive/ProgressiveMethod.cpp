@@ -25,6 +25,8 @@ class ProgressiveRun final : public AtlasRun {
   bool ambient() const override { return true; }
   // The item buffer is the one the solver used (planned with auto), the shoot level as given.
   void describe(RunInfo& run) const override {
+    run.preset = settings_.presetLabel();
+    run.projection = projectionName(settings_.projection);
     run.itemSubdivision = settings_.itemSubdivision;
     run.itemResolution = solver_.plan().itemResolution;
     run.shootLevel = settings_.shootLevel;
@@ -66,12 +68,15 @@ class ProgressiveMethod final : public AtlasMethod {
   std::string name() const override { return "progressive"; }
   std::vector<MethodFlag> flags() override {
     ProgressiveSettings& p = settings_;
-    return {bindFlag("--converge", p.stop.targetConvergence, "0.9; 0.9999 with --camera-path"),
+    // --preset first: choose() binds in this order, so the flags given beside it override it.
+    return {parseFlag("--preset", p.preset, [&p](const std::string& name) { return p.usePreset(name), p.preset; },
+                      std::string(kDefaultPreset)),
+            bindFlag("--converge", p.stop.targetConvergence, "0.9; 0.9999 with --camera-path"),
             bindFlag("--shots", p.stop.maxShots),
-            bindFlag("--item-subdiv", p.itemSubdivision),
-            bindFlag("--item-res", p.itemResolution),
+            bindFlag("--item-subdiv", p.itemSubdivision, options::defaultText("--item-subdiv")),
+            bindFlag("--item-res", p.itemResolution, options::defaultText("--item-res")),
             projectionFlag(p.projection),
-            bindFlag("--shoot-level", p.shootLevel),
+            bindFlag("--shoot-level", p.shootLevel, options::defaultText("--shoot-level")),
             bindFlag("--algorithm", p.algorithm),
             bindFlag("--fov-decay", p.fovDecayShots),
             bindFlag("--shooters-per-pass", p.shootersPerPass),

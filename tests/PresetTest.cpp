@@ -1,0 +1,129 @@
+// Presets (issue 30, src/solver/Presets.h): the default is the exact fast plan, `--preset seed003`
+// is the old default bit for bit, flags beside a preset override it, and the report names it.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "src/solver/Presets.h"
+#include "tests/support/Files.h"
+#include "tests/support/Support.h"
+
+using namespace hemirad;
+using Catch::Contains;
+
+namespace {
+
+const std::string kPresetScene = test::sourcePath("scenes/cornell/cornell.obj");
+
+// `hemirad solve` of the Cornell box with `flags`; its report.
+nlohmann::json presetSolve(const std::string& flags) {
+  const std::string report = test::tempPath("preset" + std::to_string(std::hash<std::string>{}(flags)) + ".json");
+  test::Run run = test::hemirad("solve " + kPresetScene + " --quiet " + flags + " --report " + report);
+  INFO("solve " << flags << "\n" << run.output);
+  REQUIRE(run.exitCode == 0);
+  return test::readJson(report);
+}
+
+double luminance(const nlohmann::json& rgb) {
+  return 0.2126 * rgb[0].get<double>() + 0.7152 * rgb[1].get<double>() + 0.0722 * rgb[2].get<double>();
+}
+
+}  // namespace
+
+TEST_CASE("The default solve is the fast plan and matches element-by-element shooting within 1.2 % on the Cornell box",
+          "[heavy][cli][preset]") {
+  // Cornell box, 2,500 elements, convergence 0.999 (what is left unshot lowers B by < 0.1 %).
+  // The fast plan takes each coarse block's visibility from one origin, which is wrong for
+  // receivers close to it (issue 30: -0.93 % on the short block at 10k elements). Measured here
+  // (llvmpipe): short block -0.93 %, tall block -0.54 %, the rest within 0.18 %, in 1,056 shots
+  // against 11,472; asserted 1.2 %. Element by element: the reference preset, its hemicube at
+  // 256^2 (exact: CGAL agreement 1.00000 at 10k elements, docs/design.md#item-buffer-projection).
+  // About a minute on 2 loaded cores (the element-by-element solve): [heavy].
+  const std::string common = "--elements 2500 --converge 0.999";
+  const nlohmann::json fast = presetSolve(common), reference = presetSolve(common + " --preset reference --item-res 256");
+  CHECK(fast["preset"] == "fast");
+  CHECK(fast["projection"] == "hemicube");
+  CHECK(fast["item_subdivision"] == 0);
+  CHECK(fast["shoot_level"] == kAutoShootLevel);
+  CHECK(reference["preset"] == "reference with --item-res 256");
+  CHECK(reference["shoot_level"] == 0);
+  CHECK(fast["shots"].get<unsigned>() * 4 < reference["shots"].get<unsigned>());  // coarse shooters: far fewer shots
+  double worst = 0;
+  for (const auto& f : fast["objects"])
+    for (const auto& r : reference["objects"])
+      if (f["name"] == r["name"] && f["name"] != "light") {
+        const double a = luminance(f["mean_radiosity"]), b = luminance(r["mean_radiosity"]);
+        UNSCOPED_INFO(f["name"].get<std::string>() << ": fast " << a << ", element by element " << b << " ("
+                                                   << (a / b - 1) * 100 << " %)");
+        worst = std::max(worst, std::abs(a / b - 1));
+      }
+  INFO("worst object " << worst * 100 << " % (fast " << fast["shots"] << " shots, element by element "
+                       << reference["shots"] << ")");
+  CHECK(worst < 0.012);
+}
+
+TEST_CASE("The seed003 preset reproduces the old default bitwise: seed 003's item buffer and level-1 shooting",
+          "[cli][preset]") {
+  const std::string common = "--elements 1500 --shots 64";
+  const nlohmann::json preset = presetSolve(common + " --preset seed003");
+  const nlohmann::json explicitFlags =
+      presetSolve(common + " --hemisphere orthographic --item-subdiv 3 --item-res 512 --shoot-level 1");
+  CHECK(preset["radiosity_hash"] == explicitFlags["radiosity_hash"]);
+  CHECK(preset["preset"] == "seed003");
+  CHECK(explicitFlags["preset"] == "fast with --hemisphere orthographic --item-subdiv 3 --item-res 512 --shoot-level 1");
+  for (const char* field : {"projection", "item_subdivision", "item_resolution", "shoot_level", "item_triangles"})
+    CHECK(preset[field] == explicitFlags[field]);
+  CHECK(preset["projection"] == "orthographic");
+  CHECK(preset["item_resolution"] == 512);
+  const nlohmann::json byDefault = presetSolve(common);
+  CHECK(byDefault["radiosity_hash"] != preset["radiosity_hash"]);  // the default changed: the fast plan
+  CHECK(byDefault["preset"] == "fast");
+}
+
+TEST_CASE("Explicit flags override a preset, given before or after it, and the report names what was overridden",
+          "[cli][preset]") {
+  const std::string common = "--elements 1500 --shots 32";
+  const nlohmann::json after = presetSolve(common + " --preset seed003 --item-res 256 --shoot-level 2");
+  const nlohmann::json before = presetSolve(common + " --item-res 256 --shoot-level 2 --preset seed003");
+  const nlohmann::json plain =
+      presetSolve(common + " --hemisphere orthographic --item-subdiv 3 --item-res 256 --shoot-level 2");
+  CHECK(after["item_resolution"] == 256);
+  CHECK(after["shoot_level"] == 2);
+  CHECK(after["item_subdivision"] == 3);  // the preset's
+  CHECK(after["projection"] == "orthographic");
+  CHECK(after["preset"] == "seed003 with --item-res 256 --shoot-level 2");
+  CHECK(before["preset"] == after["preset"]);
+  CHECK(before["radiosity_hash"] == after["radiosity_hash"]);
+  CHECK(plain["radiosity_hash"] == after["radiosity_hash"]);
+
+  // bench: the same rule, and its JSON names the preset.
+  const std::string json = test::tempPath("preset-bench.json");
+  test::Run bench = test::hemirad("bench --scenes " + test::sourcePath("scenes/analytic/parallel_squares.obj") +
+                                  " --elements 200 --split-shots 4 --item-subdiv 1 --preset seed003 --json " + json);
+  INFO(bench.output);
+  REQUIRE(bench.exitCode == 0);
+  const nlohmann::json b = test::readJson(json);
+  CHECK(b["preset"] == "seed003 with --item-subdiv 1");
+  CHECK(b["item_subdivision"] == 1);
+  CHECK(b["item_resolution"] == 512);
+  CHECK(b["projection"] == "orthographic");
+  CHECK_THAT(bench.output, Contains("preset seed003 with --item-subdiv 1"));
+}
+
+TEST_CASE("Every command that solves by progressive refinement takes --preset, and without it shows the fast plan as "
+          "its default",
+          "[cli][preset]") {
+  for (const char* command : {"solve", "bench", "view", "experiment", "compare-methods"}) {
+    test::Run help = test::hemirad(std::string(command) + " --help");
+    INFO(command << "\n" << help.output);
+    CHECK(help.exitCode == 0);
+    CHECK_THAT(help.output, Contains("--preset"));
+    CHECK_THAT(help.output, Contains("fast|seed003|reference"));
+  }
+  for (const char* command : {"solve", "bench", "view"}) {
+    test::Run help = test::hemirad(std::string(command) + " --help");
+    CHECK_THAT(help.output, Contains("hemicube (preset fast)"));
+    CHECK_THAT(help.output, Contains("auto (preset fast)"));
+  }
+}
