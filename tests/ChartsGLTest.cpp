@@ -105,3 +105,66 @@ TEST_CASE("A floor of 32 x 32 triangle pairs is one chart: shots to 90 % as for 
   }
   CHECK(rows == 40);
 }
+
+namespace {
+// A vertical tube (radius 1, height 1, 48 x 4 quads facing in) standing on a 2.4 x 2.4 floor,
+// lit by a 0.4 x 0.4 lamp at height 0.9 facing down.
+Scene litTube() {
+  Scene s;
+  const int grey = test::material(s, 0.6, 0.0), lamp = test::material(s, 0.0, 5.0);
+  const int tube = s.addObject("tube"), floor = s.addObject("floor"), light = s.addObject("lamp");
+  auto at = [](int k, int j) { return glm::dvec3(std::cos(k * M_PI / 24), j / 4.0, std::sin(k * M_PI / 24)); };
+  for (int j = 0; j < 4; ++j)
+    for (int k = 0; k < 48; ++k) s.addPolygon({at(k, j), at(k + 1, j), at(k + 1, j + 1), at(k, j + 1)}, grey, tube);
+  const glm::dvec3 X(1, 0, 0), Z(0, 0, 1);
+  s.addPolygon(test::rectangle({-1.2, 0, -1.2}, Z, X, 2.4, 2.4), grey, floor);
+  s.addPolygon(test::rectangle({-0.2, 0.9, -0.2}, X, Z, 0.4, 0.4), lamp, light);
+  return s;
+}
+
+test::Solved solveCharts(const Scene& s, double texel, double angle, const ProgressiveSettings& p) {
+  test::Solved out;
+  test::backend();
+  out.atlas = buildAtlas(s, texel, 16384, 0, angle);
+  SolverState state(s, out.atlas);
+  ProgressiveSolver solver(state, p);
+  while (!out.status.done) out.status = solver.advance(64);
+  out.B = state.readRadiosity();
+  out.objects = objectRadiosity(s, out.atlas, out.B);
+  return out;
+}
+}  // namespace
+
+TEST_CASE("--chart-angle 30 on a tessellated tube: a tenth of the charts, every polygon's area covered once, the "
+          "tube's radiosity as with a chart per facet", "[gl][charts]") {
+  const Scene s = litTube();
+  const Atlas atlas = buildAtlas(s, 0.05, 16384, 0, 30);
+  CHECK(atlas.charts.size() * 10 < s.polygons().size());
+  // Each curved chart's parts are its polygons: the pieces of part k over all texels sum to its area.
+  double pieces = 0, polygons = 0;
+  for (const Chart& c : atlas.charts) {
+    const std::vector<Poly3> all = atlas.blockShape(s, glm::ivec4(c.origin, c.size));
+    double sum = 0;
+    for (const Poly3& piece : all) sum += area(piece);
+    double expected = 0;
+    for (int p : c.polygons) expected += s.polygons()[std::size_t(p)].area;
+    CHECK(sum == Approx(expected).epsilon(1e-12));
+    pieces += sum, polygons += expected;
+    for (int y = c.origin.y; y < c.origin.y + c.size.y; ++y)  // texel by texel: the same area, in double
+      for (int x = c.origin.x; x < c.origin.x + c.size.x; ++x)
+        for (const Poly3& piece : atlas.elementShape(s, x, y)) sum -= area(piece);
+    CHECK(std::abs(sum) < 1e-12 * expected);
+  }
+  CHECK(pieces == Approx(s.totalArea()).epsilon(1e-12));
+  ProgressiveSettings p = fastPlan(0.95);
+  p.shootLevel = 2;
+  const test::Solved charts = solveCharts(s, 0.05, 30, p), facets = solveCharts(s, 0.03, 0, p);
+  const double curved = test::object(charts, "tube").mean.x, reference = test::object(facets, "tube").mean.x;
+  INFO("tube mean B: " << curved << " with " << charts.atlas.charts.size() << " charts, " << charts.atlas.elements
+                       << " elements; " << reference << " with a chart per facet column, " << facets.atlas.elements
+                       << " elements");
+  // Measured 0.14 % apart (0.06859 against 0.06850 at 0.95 convergence): the pieces' exact shapes
+  // and mean normals lose nothing to the projection; 1 % leaves room for the two discretisations.
+  CHECK(curved == Approx(reference).epsilon(0.01));
+  CHECK(test::object(charts, "floor").mean.x == Approx(test::object(facets, "floor").mean.x).epsilon(0.01));
+}
