@@ -22,10 +22,14 @@ float visibility(uint shooter, vec3 o, vec3 x, uint polygon) {
   ivec3 centre = itemTexel(local, size) + ivec3(0, 0, int(shooter) * ITEM_FACES);
   float eps = 4e-7 * farDistance;
   uint tested = NO_POLYGON;
+  // The receiver's own chart does not occlude it: a planar one cannot, and a curved one's element
+  // centre (its pieces' centroid) sits off its facets, which would shadow it across a convex fold.
+  // (A shooter's chart still does: its facets hide what lies behind a curved block.)
+  uint receiverChart = chartOf(polygon);
   for (int k = 0; k < 9; ++k) {
     ivec3 p = ivec3(clamp(centre.xy + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), size - 1), centre.z);
     uint q = texelFetch(itemId, p, 0).r;
-    if (q == NO_POLYGON || q == polygon || q == tested || (chartOf(q) == chartOf(polygon) && polygons[q].vertices.w == 1u)) continue;
+    if (q == NO_POLYGON || q == polygon || q == tested || chartOf(q) == receiverChart) continue;
     tested = q;
     if (blocksSegment(q, o, x, eps)) return 0.0;
   }

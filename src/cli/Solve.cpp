@@ -164,6 +164,7 @@ RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, con
   run.scene = o.scene;
   run.texelSize = atlas.texelSize;
   run.elements = atlas.elements;
+  run.charts = atlas.charts.size();
   method.describe(run);
   run.atlasWidth = atlas.width;
   run.atlasHeight = atlas.height;

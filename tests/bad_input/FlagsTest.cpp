@@ -51,7 +51,7 @@ TEST_CASE("Bad input: a flag of the other method, a seed that is not a number, o
   expectRefused("method-flags", "solve " + obj + " --quiet --method stochastic", {"--method stochastic needs --shots"});
 }
 
-TEST_CASE("Bad input: stochastic iteration with --chart-angle over a chart of many polygons is one error; without "
+TEST_CASE("Bad input: stochastic iteration with --chart-angle over a chart of many polygons is one error, and without "
           "the flag it keeps a chart per polygon", "[cli][bad-input]") {
   // Two coplanar quads sharing an edge: one chart at any --chart-angle.
   const std::string obj = writeScene("stochastic_charts", kQuad + "v 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n");
