@@ -1,5 +1,6 @@
-// Bilinear lookup of B that only weighs texels of the fragment's own polygon, so charts
-// never bleed into each other and partial edge texels are used as they are.
+// Bilinear lookup of B that only weighs texels of the fragment's own chart, so charts never
+// bleed into each other, a chart's polygons (a tessellated wall) blend across their edges, and
+// partial edge texels are used as they are. Its CPU twin is Atlas::sample.
 #include "scene.glsl"
 
 layout(binding = SAMPLER_ATLAS_VALUES) uniform sampler2D radiosity;
@@ -11,6 +12,7 @@ flat in uint vPolygon;
 layout(location = 0) out vec4 color;
 
 void main() {
+  uint chart = chartOf(vPolygon);
   vec2 c = vAtlas - 0.5;
   ivec2 i0 = ivec2(floor(c));
   vec2 f = c - vec2(i0);
@@ -19,7 +21,7 @@ void main() {
   for (int k = 0; k < 4; ++k) {
     ivec2 o = ivec2(k & 1, k >> 1);
     float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
-    if (texelFetch(atlasPolygon, i0 + o, 0).r == vPolygon) {
+    if (chartOf(texelFetch(atlasPolygon, i0 + o, 0).r) == chart) {
       sum += w * texelFetch(radiosity, i0 + o, 0).rgb;
       weight += w;
     }
@@ -28,7 +30,7 @@ void main() {
     ivec2 centre = ivec2(floor(vAtlas));
     for (int k = 0; k < 9 && weight <= 0.0; ++k) {
       ivec2 t = centre + ivec2(k % 3 - 1, k / 3 - 1);
-      if (texelFetch(atlasPolygon, t, 0).r == vPolygon) sum = texelFetch(radiosity, t, 0).rgb, weight = 1.0;
+      if (chartOf(texelFetch(atlasPolygon, t, 0).r) == chart) sum = texelFetch(radiosity, t, 0).rgb, weight = 1.0;
     }
   }
   vec3 b = weight > 0.0 ? sum / weight : vec3(0.0);

@@ -24,8 +24,8 @@ float contourTerm(vec3 xr, vec3 n, vec3 p, vec3 q) {
   return s > 0.0 ? atan(s, dot(a, a + e)) * dot(k, n) / s : 0.0;
 }
 
-float pointToPolygon(vec3 x, vec3 n, uint shape, vec3 nf) {
-  uint base = shape * SHAPE_STRIDE;
+// F to the piece whose slot starts at `base`.
+float pointToPiece(vec3 x, vec3 n, uint base, vec3 nf) {
   int count = int(shooterShape[base].x);
   vec3 v0 = shooterShape[base + 1u].xyz;
   if (count < 3 || dot(x - v0, nf) <= 0.0) return 0.0;
@@ -43,4 +43,31 @@ float pointToPolygon(vec3 x, vec3 n, uint shape, vec3 nf) {
   }
   if (cut) sum += contourTerm(xr, n, leave, enter);
   return max(0.0, -sum / (2.0 * PI));
+}
+
+// F to the single convex piece in slot `shape`.
+float pointToPolygon(vec3 x, vec3 n, uint shape, vec3 nf) { return pointToPiece(x, n, shape * SHAPE_STRIDE, nf); }
+
+// The front normal of the piece at `base` (Newell's, unnormalised: only its sign is used).
+vec3 pieceNormal(uint base) {
+  int count = int(shooterShape[base].x);
+  vec3 sum = vec3(0.0), v0 = shooterShape[base + 1u].xyz;
+  for (int i = 1; i + 1 < count; ++i)
+    sum += cross(shooterShape[base + 1u + uint(i)].xyz - v0, shooterShape[base + 2u + uint(i)].xyz - v0);
+  return sum;
+}
+
+// F to a shape of one or more convex pieces (a block over several polygons of a chart): the
+// contour integral is linear in the shape, so the pieces' sum is exact, coplanar or not. The
+// header's y holds the piece count and z the first other piece's slot (bits; 0: one piece).
+float pointToShape(vec3 x, vec3 n, uint shape, vec3 nf) {
+  uint base = shape * SHAPE_STRIDE, pieces = floatBitsToUint(shooterShape[base].y);
+  if (pieces <= 1u) return pointToPiece(x, n, base, nf);
+  uint first = floatBitsToUint(shooterShape[base].z);
+  float sum = pointToPiece(x, n, base, pieceNormal(base));
+  for (uint k = 1u; k < pieces; ++k) {
+    uint b = (first + k - 1u) * SHAPE_STRIDE;
+    sum += pointToPiece(x, n, b, pieceNormal(b));
+  }
+  return sum;
 }

@@ -15,7 +15,7 @@ void main() {
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(t, atlasSize))) return;
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
-  if (polygon == NO_POLYGON || polygon == control.shooter[0].polygon) {
+  if (polygon == NO_POLYGON || chartOf(polygon) == chartOf(control.shooter[0].polygon)) {
     imageStore(probe, t, vec4(0.0));
     return;
   }

@@ -12,8 +12,9 @@ flat in uint vPolygon;
 void main() {
   if (!countPixels) return;
   ivec2 t = ivec2(floor(vAtlas));
-  // A sliver of the polygon whose own texel holds no element: the nearest texel that does.
-  for (int k = 0; k < 9 && texelFetch(atlasPolygon, t, 0).r != vPolygon; ++k)
+  uint chart = chartOf(vPolygon);
+  // A sliver of the chart whose own texel holds no element: the nearest texel that does.
+  for (int k = 0; k < 9 && chartOf(texelFetch(atlasPolygon, t, 0).r) != chart; ++k)
     t = ivec2(floor(vAtlas)) + ivec2(k % 3 - 1, k / 3 - 1);
-  if (texelFetch(atlasPolygon, t, 0).r == vPolygon) imageAtomicAdd(pixels, t, 1u);
+  if (chartOf(texelFetch(atlasPolygon, t, 0).r) == chart) imageAtomicAdd(pixels, t, 1u);
 }

@@ -7,7 +7,8 @@ struct Polygon {
   vec4 normal;       // xyz unit front normal, w the plane offset n . p
   vec4 reflectance;  // rgb rho
   vec4 emission;     // rgb E
-  uvec4 vertices;    // first, count in polygonVertex (convex, counter-clockwise around the normal)
+  uvec4 vertices;    // first, count in polygonVertex (convex, counter-clockwise around the normal);
+                     // its chart (src/scene/Charts.h); 1 if that chart is planar
 };
 
 layout(std430, binding = SSBO_POLYGONS) readonly buffer Polygons { Polygon polygons[]; };
@@ -15,3 +16,6 @@ layout(std430, binding = SSBO_POLYGON_VERTICES) readonly buffer PolygonVertices 
 
 layout(binding = SAMPLER_ATLAS_POSITION_AREA) uniform sampler2D atlasPositionArea;  // xyz element centre, w area (0: none)
 layout(binding = SAMPLER_ATLAS_POLYGON) uniform usampler2D atlasPolygon;      // polygon id or NO_POLYGON
+layout(binding = SAMPLER_ATLAS_NORMAL) uniform sampler2D atlasNormal;        // xyz the element's receiver normal
+
+uint chartOf(uint polygon) { return polygon == NO_POLYGON ? NO_POLYGON : polygons[polygon].vertices.z; }

@@ -5,7 +5,7 @@
 void describeNode(uint slot, uint node, uint block) {
   Node n = nodes[node];
   control.shooter[slot].positionArea = n.centreArea;
-  control.shooter[slot].normal = vec4(polygons[n.polygon].normal.xyz, 0.0);
+  control.shooter[slot].normal = vec4(n.normal.xyz, 0.0);
   control.shooter[slot].shot = vec4(0.0);
   control.shooter[slot].rect = n.rect;
   control.shooter[slot].polygon = n.polygon;

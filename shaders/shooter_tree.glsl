@@ -10,6 +10,7 @@ struct Node {
   uint firstChild;   // four consecutive children, or NO_CHILD
   uint firstLeaf;    // blocks only: their 4^depth leaves
   uint depth;        // blocks only
+  vec4 normal;       // xyz its shooting normal: its chart's plane, or a curved chart's area-weighted mean
 };
 
 struct NodeStats {

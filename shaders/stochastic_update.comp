@@ -24,7 +24,7 @@ void main() {
   if (polygon == NO_POLYGON) return;
   vec3 received = vec3(0.0);
   for (uint s = 0u; s < control.count; ++s) {
-    if (control.shooter[s].polygon == polygon || control.shooter[s].polygon == NO_POLYGON) continue;
+    if (control.shooter[s].polygon == NO_POLYGON || chartOf(control.shooter[s].polygon) == chartOf(polygon)) continue;
     bool facing;
     float visible;
     float F = shooterFormFactor(s, t, polygon, facing, visible);

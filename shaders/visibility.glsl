@@ -22,20 +22,25 @@ float visibility(uint shooter, vec3 o, vec3 x, uint polygon) {
   ivec3 centre = itemTexel(local, size) + ivec3(0, 0, int(shooter) * ITEM_FACES);
   float eps = 4e-7 * farDistance;
   uint tested = NO_POLYGON;
+  // The receiver's own chart does not occlude it: a planar one cannot, and a curved one's element
+  // centre (its pieces' centroid) sits off its facets, which would shadow it across a convex fold.
+  // (A shooter's chart still does: its facets hide what lies behind a curved block.)
+  uint receiverChart = chartOf(polygon);
   for (int k = 0; k < 9; ++k) {
     ivec3 p = ivec3(clamp(centre.xy + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), size - 1), centre.z);
     uint q = texelFetch(itemId, p, 0).r;
-    if (q == NO_POLYGON || q == polygon || q == tested) continue;
+    if (q == NO_POLYGON || q == polygon || q == tested || chartOf(q) == receiverChart) continue;
     tested = q;
     if (blocksSegment(q, o, x, eps)) return 0.0;
   }
   return 1.0;
 }
 
-// Receiver texel t (of `polygon`) lies in the block of shooter s: coplanar, it receives nothing.
+// Receiver texel t (of `polygon`) lies in the block of shooter s (on the shooter's chart): it
+// receives nothing from it.
 bool inShooterBlock(uint s, ivec2 t, uint polygon) {
   ivec4 r = control.shooter[s].rect;
-  return polygon == control.shooter[s].polygon && all(greaterThanEqual(t, r.xy)) && all(lessThan(t, r.xy + r.zw));
+  return all(greaterThanEqual(t, r.xy)) && all(lessThan(t, r.xy + r.zw)) && chartOf(polygon) == chartOf(control.shooter[s].polygon);
 }
 
 // Unoccluded form factor from the receiver point x (normal nr) to shooter s: exact (contour
@@ -44,7 +49,7 @@ bool inShooterBlock(uint s, ivec2 t, uint polygon) {
 float unoccludedFormFactor(uint s, vec3 x, vec3 nr) {
   uint shape = control.shooter[s].shape;
   vec3 ns = control.shooter[s].normal.xyz;
-  if (shooterShape[shape * SHAPE_STRIDE].x >= 3.0) return pointToPolygon(x, nr, shape, ns);
+  if (shooterShape[shape * SHAPE_STRIDE].x >= 3.0) return pointToShape(x, nr, shape, ns);
   vec3 d = x - control.shooter[s].positionArea.xyz;
   float r2 = dot(d, d);
   vec3 w = d * inversesqrt(r2);
@@ -60,7 +65,7 @@ float shooterFormFactor(uint s, ivec2 t, uint polygon, out bool facing, out floa
   vec3 x = texelFetch(atlasPositionArea, t, 0).xyz;
   vec3 origin = control.shooter[s].positionArea.xyz;
   facing = dot(x - origin, control.shooter[s].normal.xyz) > 0.0;  // cheap, first: half the scene fails it
-  float F = facing ? unoccludedFormFactor(s, x, polygons[polygon].normal.xyz) : 0.0;
+  float F = facing ? unoccludedFormFactor(s, x, texelFetch(atlasNormal, t, 0).xyz) : 0.0;
   facing = F > 0.0;
   visible = facing ? visibility(s, origin, x, polygon) : 0.0;
   return visible * F;

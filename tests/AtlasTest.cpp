@@ -19,49 +19,133 @@ Scene shapes() {
   s.addPolygon(pentagon, m, o);
   return s;
 }
+
+// shapes() and charts over many polygons: a square wall of 6 x 6 quads cut into triangles, an
+// L of coplanar quads (a concave union: its chart keeps the quads as parts) and a cylinder of
+// 24 x 3 quads (curved: one chart per 30 degrees at --chart-angle 30).
+Scene charted() {
+  Scene s = shapes();
+  int m = test::material(s, 0.5, 0.0), o = s.addObject("charted");
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) {
+      glm::dvec3 a(4 + i / 6.0, j / 6.0, 0), b = a + glm::dvec3(1 / 6.0, 0, 0), c = b + glm::dvec3(0, 1 / 6.0, 0),
+                 d = a + glm::dvec3(0, 1 / 6.0, 0);
+      s.addPolygon({a, b, c}, m, o), s.addPolygon({a, c, d}, m, o);
+    }
+  for (auto [x, y] : {std::pair{0, 0}, {1, 0}, {0, 1}}) s.addPolygon(test::rectangle({6 + 0.4 * x, 0.4 * y, 0}, {1, 0, 0}, {0, 1, 0}, 0.4, 0.4), m, o);
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 24; ++k) {
+      auto at = [&](int kk, int jj) { return glm::dvec3(9 + std::cos(kk * M_PI / 12), jj / 3.0, std::sin(kk * M_PI / 12)); };
+      s.addPolygon({at(k, j), at(k, j + 1), at(k + 1, j + 1), at(k + 1, j)}, m, o);
+    }
+  return s;
+}
+
+// Per chart, the area of its polygons.
+std::vector<double> chartAreas(const Scene& s, const Atlas& a) {
+  std::vector<double> out(a.charts.size(), 0.0);
+  for (std::size_t p = 0; p < s.polygons().size(); ++p) out[a.chartOf[p]] += s.polygons()[p].area;
+  return out;
+}
 }  // namespace
 
-TEST_CASE("Atlas element areas sum to each polygon's area, partial texels included", "[cpu]") {
-  Scene s = shapes();
-  for (double ts : {0.5, 0.11, 0.037}) {
-    Atlas a = buildAtlas(s, ts);
-    std::vector<double> sum(s.polygons().size(), 0.0);
-    for (size_t t = 0; t < a.polygonOf.size(); ++t)
-      if (a.polygonOf[t] != kNoPolygon) sum[a.polygonOf[t]] += a.positionArea[t].w;
-    for (size_t p = 0; p < sum.size(); ++p) CHECK(sum[p] == Approx(s.polygons()[p].area).epsilon(1e-6));
+TEST_CASE("Charts join coplanar neighbours at angle 0 and curved ones at 30 degrees, one material and object each", "[cpu]") {
+  Scene s = charted();
+  const Atlas flat = buildAtlas(s, 0.05), curved = buildAtlas(s, 0.05, 16384, 0, 30);
+  // shapes' 3 polygons, the wall (one merged outline), the L (3 parts), 24 x 3 cylinder quads.
+  CHECK(flat.charts.size() == 3 + 1 + 1 + 24);
+  CHECK(curved.charts.size() < 3 + 1 + 1 + 24 / 2);
+  const Chart& wall = flat.charts[flat.chartOf[3]];
+  CHECK(wall.polygons.size() == 72);
+  CHECK(wall.parts.size() == 1);  // the merged square: the grid an untessellated wall gets
+  CHECK(wall.parts[0].size() == 4);
+  CHECK(flat.charts[flat.chartOf[3 + 72]].parts.size() == 3);
+  for (const Atlas* a : {&flat, &curved})
+    for (const Chart& c : a->charts)
+      for (int p : c.polygons) {
+        CHECK(s.polygons()[std::size_t(p)].material == s.polygons()[std::size_t(c.polygon)].material);
+        CHECK(s.polygons()[std::size_t(p)].object == s.polygons()[std::size_t(c.polygon)].object);
+        CHECK(glm::dot(s.polygons()[std::size_t(p)].normal, c.frame.n) > std::cos((a == &flat ? 1e-3 : 30.0 * M_PI / 180)));
+      }
+}
+
+TEST_CASE("Element pieces sum to their chart's polygon area in double, over multi-polygon and curved charts", "[cpu]") {
+  Scene s = charted();
+  for (double angle : {0.0, 30.0}) {
+    Atlas a = buildAtlas(s, 0.037, 16384, 0, angle);
+    std::vector<double> sum(a.charts.size(), 0.0);
+    for (int y = 0; y < a.height; ++y)
+      for (int x = 0; x < a.width; ++x) {
+        const std::size_t t = std::size_t(y) * a.width + x;
+        if (a.polygonOf[t] == kNoPolygon) continue;
+        double pieces = 0;
+        for (const Poly3& piece : a.elementShape(s, x, y)) pieces += area(piece);
+        CHECK(pieces == Approx(a.positionArea[t].w).epsilon(1e-6));  // the element is its pieces
+        sum[a.chartAt(t)] += pieces;
+      }
+    const std::vector<double> expected = chartAreas(s, a);
+    for (std::size_t c = 0; c < sum.size(); ++c) CHECK(sum[c] == Approx(expected[c]).epsilon(1e-9));
   }
 }
 
-TEST_CASE("Atlas element centres lie on their polygon and match their cut's centroid", "[cpu]") {
-  Scene s = shapes();
-  Atlas a = buildAtlas(s, 0.09);
+TEST_CASE("Atlas element areas sum to each chart's polygon area, partial texels included", "[cpu]") {
+  Scene s = charted();
+  for (double angle : {0.0, 30.0})
+    for (double ts : {0.5, 0.11, 0.037}) {
+      Atlas a = buildAtlas(s, ts, 16384, 0, angle);
+      std::vector<double> sum(a.charts.size(), 0.0);
+      for (size_t t = 0; t < a.polygonOf.size(); ++t)
+        if (a.polygonOf[t] != kNoPolygon) sum[a.chartAt(t)] += a.positionArea[t].w;
+      const std::vector<double> expected = chartAreas(s, a);
+      for (size_t c = 0; c < sum.size(); ++c) CHECK(sum[c] == Approx(expected[c]).epsilon(1e-6));
+    }
+}
+
+TEST_CASE("Atlas element centres lie on their chart and match their pieces' centroid", "[cpu]") {
+  Scene s = charted();
+  Atlas a = buildAtlas(s, 0.09);  // planar charts: the centre is in the pieces' plane, inside their union
   for (int y = 0; y < a.height; ++y)
     for (int x = 0; x < a.width; ++x) {
       size_t t = size_t(y) * a.width + x;
       if (a.polygonOf[t] == kNoPolygon) continue;
       const ScenePolygon& p = s.polygons()[a.polygonOf[t]];
-      glm::dvec3 c(a.positionArea[t]);
+      glm::dvec3 c(a.positionArea[t]), weighted(0.0);
       CHECK(std::abs(glm::dot(c - p.vertices[0], p.normal)) < 1e-5);
-      Poly3 cut = a.elementShape(s, x, y);
-      CHECK(area(cut) == Approx(a.positionArea[t].w).epsilon(1e-5));
-      // The cut is convex, so its centroid is inside it: inside every edge's half-plane.
-      for (size_t k = 0; k < cut.size(); ++k)
-        CHECK(glm::dot(glm::cross(cut[(k + 1) % cut.size()] - cut[k], c - cut[k]), p.normal) > -1e-6);
+      double total = 0;
+      bool inside = false;
+      for (const Poly3& cut : a.elementShape(s, x, y)) {
+        Poly2 flat;
+        const PlaneFrame f = planeFrame(cut, p.normal);
+        for (auto& v : cut) flat.push_back(f.project(v));
+        weighted += area(cut) * f.lift(centroid(flat)), total += area(cut);
+        // A convex piece holds c if c is inside every edge's half-plane.
+        bool in = true;
+        for (size_t k = 0; k < cut.size(); ++k)
+          in = in && glm::dot(glm::cross(cut[(k + 1) % cut.size()] - cut[k], c - cut[k]), p.normal) > -1e-6;
+        inside = inside || in;
+      }
+      CHECK(total == Approx(a.positionArea[t].w).epsilon(1e-5));
+      CHECK(glm::length(weighted / total - c) < 1e-5);
+      // One piece: its centroid is inside it (convex). Several: the union of a chart's pieces
+      // in a texel need not be convex, so only one piece's element is checked.
+      if (a.elementShape(s, x, y).size() == 1) CHECK(inside);
     }
 }
 
-TEST_CASE("Atlas charts are padded: no two polygons' texels touch, even diagonally", "[cpu]") {
-  Scene s = shapes();
-  Atlas a = buildAtlas(s, 0.05);
-  for (int y = 0; y + 1 < a.height; ++y)
-    for (int x = 0; x + 1 < a.width; ++x) {
-      std::uint32_t p = a.polygonOf[size_t(y) * a.width + x];
-      if (p == kNoPolygon) continue;
-      for (auto [dx, dy] : {std::pair{1, 0}, {0, 1}, {1, 1}}) {
-        std::uint32_t q = a.polygonOf[size_t(y + dy) * a.width + x + dx];
-        CHECK((q == kNoPolygon || q == p));
+TEST_CASE("Atlas charts are padded: no two charts' texels touch, even diagonally", "[cpu]") {
+  Scene s = charted();
+  for (double angle : {0.0, 30.0}) {
+    Atlas a = buildAtlas(s, 0.05, 16384, 0, angle);
+    for (int y = 0; y + 1 < a.height; ++y)
+      for (int x = 0; x + 1 < a.width; ++x) {
+        std::uint32_t p = a.chartAt(size_t(y) * a.width + x);
+        if (p == kNoPolygon) continue;
+        for (auto [dx, dy] : {std::pair{1, 0}, {0, 1}, {1, 1}}) {
+          std::uint32_t q = a.chartAt(size_t(y + dy) * a.width + x + dx);
+          CHECK((q == kNoPolygon || q == p));
+        }
       }
-    }
+  }
 }
 
 TEST_CASE("The --elements flag picks a texel size giving about that many elements", "[cpu]") {
@@ -73,7 +157,7 @@ TEST_CASE("The --elements flag picks a texel size giving about that many element
 }
 
 TEST_CASE("Shooter blocks at level k tile every element exactly once", "[cpu]") {
-  Scene s = shapes();
+  Scene s = charted();
   Atlas a = buildAtlas(s, 0.04);
   for (int level : {0, 1, 2, 3}) {
     std::vector<int> covered(a.polygonOf.size(), 0);
@@ -83,11 +167,11 @@ TEST_CASE("Shooter blocks at level k tile every element exactly once", "[cpu]") 
       std::uint32_t owner = kNoPolygon;
       for (int y = b.rect.y; y < b.rect.y + b.rect.w; ++y)
         for (int x = b.rect.x; x < b.rect.x + b.rect.z; ++x) {
-          std::uint32_t p = a.polygonOf[size_t(y) * a.width + x];
+          std::uint32_t p = a.chartAt(size_t(y) * a.width + x);
           ++covered[size_t(y) * a.width + x];
           if (p == kNoPolygon) continue;
           if (owner == kNoPolygon) owner = p;
-          CHECK(p == owner);  // one block, one polygon
+          CHECK(p == owner);  // one block, one chart
         }
     }
     for (size_t t = 0; t < covered.size(); ++t)

@@ -23,14 +23,21 @@ double insideBy(const Poly3& poly, const glm::dvec3& p) {
   return d;
 }
 
-// Whether the bilinear footprint of `coord` holds a texel that is not of `polygon`.
+// Whether the bilinear footprint of `coord` holds a texel that is not of `polygon`'s chart.
 bool masked(const Atlas& atlas, int polygon, glm::dvec2 coord) {
   const glm::ivec2 i0(glm::floor(coord - 0.5));
   for (int k = 0; k < 4; ++k) {
     const glm::ivec2 t = i0 + glm::ivec2(k & 1, k >> 1);
-    if (atlas.polygonOf[std::size_t(t.y) * atlas.width + t.x] != std::uint32_t(polygon)) return true;
+    if (atlas.chartAt(std::size_t(t.y) * atlas.width + t.x) != atlas.chartOf[std::size_t(polygon)]) return true;
   }
   return false;
+}
+
+// A fan of triangles over convex `p` (one chart at --chart-angle 0: its outline is p).
+std::vector<Poly3> fan(const Poly3& p) {
+  std::vector<Poly3> out;
+  for (std::size_t k = 1; k + 1 < p.size(); ++k) out.push_back({p[0], p[k], p[k + 1]});
+  return out;
 }
 
 // Atlas::sample at p, or nothing where it jumps within `step` (float rounding in the shader's
@@ -48,12 +55,16 @@ std::optional<glm::vec3> stableSample(const Atlas& atlas, const std::vector<glm:
 
 TEST_CASE("camera.frag's masked bilinear atlas lookup equals Atlas::sample pixel by pixel", "[gl][camera]") {
   test::backend();
-  Scene scene;
-  const int m = test::material(scene, 0.5, 0.0), o = scene.addObject("shapes");
   const std::vector<Poly3> shapes = {Poly3{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
                                      Poly3{{1.2, 0, 0}, {2.2, 0.1, 0}, {2.3, 0.7, 0}, {1.7, 1.0, 0}, {1.2, 0.6, 0}}};
-  for (const Poly3& s : shapes) REQUIRE(scene.addPolygon(s, m, o));
+  // Each shape a polygon, or a fan of triangles: one chart each either way, looked up across the cuts.
+  const bool tessellated = GENERATE(false, true);
+  Scene scene;
+  const int m = test::material(scene, 0.5, 0.0), o = scene.addObject("shapes");
+  for (const Poly3& s : shapes)
+    for (const Poly3& piece : tessellated ? fan(s) : std::vector<Poly3>{s}) REQUIRE(scene.addPolygon(piece, m, o));
   const Atlas atlas = buildAtlas(scene, 0.2);  // texels of 14 x 14 pixels: wide masked bands along the edges
+  REQUIRE(atlas.charts.size() == 2);
   // Elements get values in [0.2, 1]; texels of no element 100, so any that leaks in shows.
   std::mt19937 rng(27);
   std::uniform_real_distribution<float> u(0.2f, 1.0f);
@@ -83,7 +94,7 @@ TEST_CASE("camera.frag's masked bilinear atlas lookup equals Atlas::sample pixel
         ++background;
         continue;
       }
-      const int polygon = in0 > in1 ? 0 : 1;
+      const int polygon = in0 > in1 ? 0 : 1;  // a polygon of the shape's chart (the triangle's fan is itself)
       if (std::max(in0, in1) < pixel) continue;  // at an edge: coverage is the rasteriser's call
       const std::optional<glm::vec3> expect = stableSample(atlas, values, polygon, p, 1e-3 * atlas.texelSize);
       if (!expect) continue;

@@ -48,8 +48,8 @@ FacePower facePower(const Scene& s, const Atlas& a, const SolverState& state) {
     double gathered = 0;
     for (std::size_t L = 0; L < B.size(); ++L) {
       if (a.polygonOf[L] == kNoPolygon || a.polygonOf[L] == face) continue;
-      const Poly3 shape = a.elementShape(s, int(L % a.width), int(L / a.width));
-      gathered += cpu::pointToPolygon(pj, nj, shape, s.polygons()[a.polygonOf[L]].normal) * (B[L].x - dB[L].x);
+      for (const Poly3& shape : a.elementShape(s, int(L % a.width), int(L / a.width)))
+        gathered += cpu::pointToPolygon(pj, nj, shape, s.polygons()[a.polygonOf[L]].normal) * (B[L].x - dB[L].x);
     }
     out.held[face] += B[j].x * a.positionArea[j].w;
     out.shotAt[face] += kRho * gathered * a.positionArea[j].w;

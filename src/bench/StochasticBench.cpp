@@ -25,18 +25,18 @@ struct StochasticRow {
 
 // The finest texel size whose atlas fits `side` texels a side (bisection on the size).
 Atlas atlasFilling(const Scene& scene, int side, int maxTexture) {
-  double fits = texelSizeForElements(scene, 1000), tooFine = fits;
+  double fits = texelSizeForElements(scene, 1000, kPolygonCharts), tooFine = fits;
   while (true) {
-    Atlas a = buildAtlas(scene, tooFine, maxTexture);
+    Atlas a = buildAtlas(scene, tooFine, maxTexture, 0, kPolygonCharts);
     if (std::max(a.width, a.height) > side) break;
     fits = tooFine, tooFine /= 2;
   }
   for (int k = 0; k < 12; ++k) {
     const double mid = 0.5 * (fits + tooFine);
-    Atlas a = buildAtlas(scene, mid, maxTexture);
+    Atlas a = buildAtlas(scene, mid, maxTexture, 0, kPolygonCharts);
     (std::max(a.width, a.height) > side ? tooFine : fits) = mid;
   }
-  return buildAtlas(scene, fits, maxTexture);
+  return buildAtlas(scene, fits, maxTexture, 0, kPolygonCharts);
 }
 
 // Runs to the solver's stop rule from B = E; returns the wall milliseconds (setup excluded).

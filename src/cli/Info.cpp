@@ -46,7 +46,7 @@ void printFootprint(const Scene& scene, const Atlas& atlas, const InfoOptions& o
 int runInfo(const InfoOptions& o) {
   Scene scene = loadScene(o.scene, o.load);
   double ts = chooseTexelSize(scene, o.discretisation);
-  Atlas atlas = buildAtlas(scene, ts);
+  Atlas atlas = buildAtlas(scene, ts, 16384, 0, o.discretisation.chartAngle);
   const double u = scene.unitScale;  // printed in the file's units
   glm::dvec3 lo = scene.boundsMin() / u, hi = scene.boundsMax() / u;
 
@@ -75,6 +75,8 @@ int runInfo(const InfoOptions& o) {
   fmt::print("area         {:.6g}\n", scene.totalArea() / (u * u));
   fmt::print("emitters     {} polygons, emitted power {:.6g} (luminance E*A)\n", emitters, scene.emittedPower() / (u * u));
   fmt::print("texel size   {:.6g}\nelements     {}\natlas        {} x {}\n", ts / u, atlas.elements, atlas.width, atlas.height);
+  fmt::print("charts       {} at --chart-angle {:g} (texel use {:.1f} %)\n", atlas.charts.size(), o.discretisation.chartAngle,
+             100.0 * double(atlas.elements) / std::max(1.0, double(atlas.width) * atlas.height));
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);
   fmt::print("triangles    {}\n", triangleCount(scene));

@@ -164,6 +164,7 @@ RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, con
   run.scene = o.scene;
   run.texelSize = atlas.texelSize;
   run.elements = atlas.elements;
+  run.charts = atlas.charts.size();
   method.describe(run);
   run.atlasWidth = atlas.width;
   run.atlasHeight = atlas.height;
@@ -191,7 +192,9 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   auto backend = gl::createBackend(o.backend);
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
-  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize());
+  Discretisation d = o.discretisation;
+  if (!chartsSpanPolygons() && d.chartAngle == 0) d.chartAngle = kPolygonCharts;
+  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle);
   SolverState state(scene, atlas);
   const std::unique_ptr<AtlasRun> run = start(state);
   Solver& solver = run->solver();

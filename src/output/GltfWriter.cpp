@@ -57,7 +57,7 @@ int addFloats(tinygltf::Model& m, const std::vector<float>& v, int components, i
 // its plane coordinates in scene units (for material textures), TEXCOORD_1 the lightmap's.
 void addPolygon(Streams& s, const Scene& scene, const Atlas& atlas, const Lightmap& map, int id) {
   const ScenePolygon& p = scene.polygons()[std::size_t(id)];
-  const Chart& chart = atlas.charts[std::size_t(id)];
+  const Chart& chart = atlas.charts[atlas.chartOf[std::size_t(id)]];
   const auto first = std::uint32_t(s.position.size() / 3);
   for (const glm::dvec3& v : p.vertices) {
     const glm::dvec2 plane = chart.frame.project(v), uv = map.uv(atlas, id, atlas.atlasCoord(id, v));

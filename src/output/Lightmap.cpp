@@ -54,23 +54,24 @@ void dilate(glm::ivec2 size, std::vector<glm::vec3>& value, std::vector<char>& f
 // Copies chart `c`'s elements into the lightmap at its origin (transposed if so placed) and, if
 // asked, dilates them over its cells without element and its gutter; what falls outside the
 // image (the gutter on the border) is left out.
-void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, const Chart& c, int gutter, bool dilateGutter,
+void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, std::size_t chart, int gutter, bool dilateGutter,
                Lightmap& map) {
+  const Chart& c = atlas.charts[chart];
   const glm::ivec2 size = c.size + 2 * gutter;
   std::vector<glm::vec3> value(std::size_t(size.x) * size.y, glm::vec3(0.0f));
   std::vector<char> filled(value.size(), 0);
   for (int j = 0; j < c.size.y; ++j)
     for (int i = 0; i < c.size.x; ++i) {
       const std::size_t t = std::size_t(c.origin.y + j) * atlas.width + std::size_t(c.origin.x + i);
-      if (atlas.polygonOf[t] != std::uint32_t(c.polygon)) continue;
+      if (atlas.chartAt(t) != std::uint32_t(chart)) continue;
       const std::size_t local = std::size_t(j + gutter) * size.x + std::size_t(i + gutter);
       value[local] = glm::vec3(B[t]);
       filled[local] = 1;
       ++map.elements;
     }
   if (dilateGutter) dilate(size, value, filled);
-  const glm::ivec2 corner = map.origins[std::size_t(c.polygon)] - gutter;
-  const bool transposed = map.transposed[std::size_t(c.polygon)];
+  const glm::ivec2 corner = map.origins[chart] - gutter;
+  const bool transposed = map.transposed[chart];
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
       const glm::ivec2 t = corner + (transposed ? glm::ivec2(y, x) : glm::ivec2(x, y));
@@ -83,8 +84,9 @@ void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, const Chart&
 }  // namespace
 
 glm::dvec2 Lightmap::coord(const Atlas& atlas, int polygon, glm::dvec2 atlasCoord) const {
-  const glm::dvec2 local = atlasCoord - glm::dvec2(atlas.charts[std::size_t(polygon)].origin);
-  return (transposed[std::size_t(polygon)] ? glm::dvec2(local.y, local.x) : local) + glm::dvec2(origins[std::size_t(polygon)]);
+  const std::size_t chart = atlas.chartOf[std::size_t(polygon)];
+  const glm::dvec2 local = atlasCoord - glm::dvec2(atlas.charts[chart].origin);
+  return (transposed[chart] ? glm::dvec2(local.y, local.x) : local) + glm::dvec2(origins[chart]);
 }
 
 glm::dvec2 Lightmap::uv(const Atlas& atlas, int polygon, glm::dvec2 atlasCoord) const {
@@ -101,7 +103,7 @@ Lightmap buildLightmap(const Atlas& atlas, const std::vector<glm::vec4>& B, cons
   map.width = layout.width, map.height = layout.height, map.gutter = g, map.transposed = layout.transposed;
   for (glm::ivec2 corner : layout.corners) map.origins.push_back(corner + g);
   map.rgb.assign(std::size_t(map.width) * map.height, glm::vec3(0.0f));
-  for (const Chart& c : atlas.charts) fillChart(atlas, B, c, g, options.dilate, map);
+  for (std::size_t c = 0; c < atlas.charts.size(); ++c) fillChart(atlas, B, c, g, options.dilate, map);
   return map;
 }
 

@@ -30,21 +30,24 @@ std::string encodePly(const Scene& scene, const Atlas& atlas, const std::vector<
     for (int x = 0; x < atlas.width; ++x) {
       std::uint32_t polygon = atlas.polygonOf[size_t(y) * atlas.width + x];
       if (polygon == kNoPolygon) continue;
-      std::vector<std::uint32_t> face;
-      for (const glm::dvec3& p : atlas.elementShape(scene, x, y)) {
-        auto key = std::make_pair(polygon, std::array<long long, 3>{std::llround(p.x / quantum), std::llround(p.y / quantum),
+      const std::uint32_t chart = atlas.chartOf[polygon];
+      for (const Poly3& piece : atlas.elementShape(scene, x, y)) {  // a face per piece
+        std::vector<std::uint32_t> face;
+        for (const glm::dvec3& p : piece) {
+          auto key = std::make_pair(chart, std::array<long long, 3>{std::llround(p.x / quantum), std::llround(p.y / quantum),
                                                                     std::llround(p.z / quantum)});
-        auto [it, added] = welded.try_emplace(key, std::uint32_t(vertices.size()));
-        if (added) {
-          glm::vec3 b = atlas.sample(B, int(polygon), atlas.atlasCoord(int(polygon), p));
-          Image one{1, 1, {b.x, b.y, b.z}};
-          std::vector<unsigned char> c = toneMap(one, scale);
-          const glm::dvec3 at = p / scene.unitScale;  // in the file's units
-          vertices.push_back({float(at.x), float(at.y), float(at.z), c[0], c[1], c[2], b.x, b.y, b.z});
+          auto [it, added] = welded.try_emplace(key, std::uint32_t(vertices.size()));
+          if (added) {
+            glm::vec3 b = atlas.sample(B, int(polygon), atlas.atlasCoord(int(polygon), p));
+            Image one{1, 1, {b.x, b.y, b.z}};
+            std::vector<unsigned char> c = toneMap(one, scale);
+            const glm::dvec3 at = p / scene.unitScale;  // in the file's units
+            vertices.push_back({float(at.x), float(at.y), float(at.z), c[0], c[1], c[2], b.x, b.y, b.z});
+          }
+          if (face.empty() || face.back() != it->second) face.push_back(it->second);
         }
-        if (face.empty() || face.back() != it->second) face.push_back(it->second);
+        if (face.size() >= 3) faces.push_back(std::move(face));
       }
-      if (face.size() >= 3) faces.push_back(std::move(face));
     }
 
   std::ostringstream out;

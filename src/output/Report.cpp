@@ -35,6 +35,8 @@ nlohmann::json reportJson(const RunInfo& r) {
       {"algorithm", r.algorithm},
       {"scene", r.scene},
       {"elements", r.elements},
+      {"charts", r.charts},
+      {"disc_shapes", r.discShapes},
       {"texel_size", r.texelSize},
       {"atlas", {{"width", r.atlasWidth}, {"height", r.atlasHeight}}},
       {"shots", r.status.shots},

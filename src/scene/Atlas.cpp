@@ -9,6 +9,7 @@
 #include <string>
 
 #include "src/base/Error.h"
+#include "src/scene/Charts.h"
 
 namespace hemirad {
 
@@ -27,21 +28,22 @@ constexpr double kBytesPerTexel = 128;
 constexpr std::size_t kMaxCountedElements = std::size_t(1) << 24;
 
 struct ChartShape {
+  ChartGroup group;
   PlaneFrame frame;
-  Poly2 poly;        // polygon in chart plane coordinates
-  glm::dvec2 corner;  // lower-left of the texel grid
+  std::vector<Poly2> parts;  // the group's parts in plane coordinates
+  glm::dvec2 corner;          // lower-left of the texel grid
   glm::ivec2 size;
 };
 
-// The grid is centred on the polygon's bounds so partial texels are shared by both sides.
-ChartShape chartShape(const ScenePolygon& p, double ts) {
+// The grid is centred on the chart's bounds so partial texels are shared by both sides.
+ChartShape chartShape(const ChartGroup& g, double ts) {
   ChartShape c;
-  c.frame = planeFrame(p.vertices, p.normal);
+  c.group = g;
+  c.frame = planeFrame(g.parts.front(), g.axis);
   glm::dvec2 lo(1e300), hi(-1e300);
-  for (auto& v : p.vertices) {
-    glm::dvec2 q = c.frame.project(v);
-    c.poly.push_back(q);
-    lo = glm::min(lo, q), hi = glm::max(hi, q);
+  for (const Poly3& part : g.parts) {
+    Poly2& q = c.parts.emplace_back();
+    for (auto& v : part) q.push_back(c.frame.project(v)), lo = glm::min(lo, q.back()), hi = glm::max(hi, q.back());
   }
   glm::dvec2 extent = hi - lo;
   glm::dvec2 cells = glm::ceil(extent / ts - 1e-9);
@@ -53,18 +55,73 @@ ChartShape chartShape(const ScenePolygon& p, double ts) {
   return c;
 }
 
-template <class Fn>  // fn(i, j, cut polygon in plane coordinates)
-void forEachCut(const ChartShape& c, double ts, Fn&& fn) {
-  for (int j = 0; j < c.size.y; ++j)
-    for (int i = 0; i < c.size.x; ++i) {
-      Poly2 cut = clipToBox(c.poly, c.corner + glm::dvec2(i, j) * ts, c.corner + glm::dvec2(i + 1, j + 1) * ts);
-      if (cut.size() >= 3 && signedArea(cut) > kMinCutFraction * ts * ts) fn(i, j, cut);
-    }
+// Chart-plane point q moved along the chart's axis onto the plane of polygon `on` (a planar
+// chart's pieces lie in the frame's plane already).
+glm::dvec3 liftOnto(const PlaneFrame& f, bool planar, const ScenePolygon& on, glm::dvec2 q) {
+  glm::dvec3 p = f.lift(q);
+  return planar ? p : p + f.n * (glm::dot(on.vertices[0] - p, on.normal) / glm::dot(f.n, on.normal));
 }
 
-std::vector<ChartShape> chartShapes(const Scene& scene, double ts) {
+template <class Fn>  // fn(i, j, part, cut polygon in plane coordinates)
+void forEachCut(const ChartShape& c, double ts, Fn&& fn) {
+  for (std::size_t k = 0; k < c.parts.size(); ++k) {
+    glm::ivec2 lo(0), hi = c.size;
+    if (c.parts.size() > 1) {  // only the cells under this part's bounds
+      glm::dvec2 plo(1e300), phi(-1e300);
+      for (auto& q : c.parts[k]) plo = glm::min(plo, q), phi = glm::max(phi, q);
+      lo = glm::clamp(glm::ivec2(glm::floor((plo - c.corner) / ts)) - 1, glm::ivec2(0), c.size);
+      hi = glm::clamp(glm::ivec2(glm::floor((phi - c.corner) / ts)) + 2, glm::ivec2(0), c.size);
+    }
+    for (int j = lo.y; j < hi.y; ++j)
+      for (int i = lo.x; i < hi.x; ++i) {
+        Poly2 cut = clipToBox(c.parts[k], c.corner + glm::dvec2(i, j) * ts, c.corner + glm::dvec2(i + 1, j + 1) * ts);
+        if (cut.size() >= 3 && signedArea(cut) > kMinCutFraction * ts * ts) fn(i, j, int(k), cut);
+      }
+  }
+}
+
+// One texel's element, summed over its pieces.
+struct ElementSum {
+  double area = 0, largest = 0;
+  glm::dvec3 centre{0.0}, normal{0.0};
+  int pieces = 0, polygon = -1;
+  glm::dvec3 firstCentre{0.0};
+};
+
+// Every cell's element of chart c (row-major over c.size).
+std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, double ts) {
+  std::vector<ElementSum> cells(std::size_t(c.size.x) * std::size_t(c.size.y));
+  forEachCut(c, ts, [&](int i, int j, int k, const Poly2& cut) {
+    const int poly = c.group.partPolygon[std::size_t(k)];
+    const ScenePolygon& on = scene.polygons()[std::size_t(poly)];
+    const double a = signedArea(cut) / (c.group.planar ? 1.0 : glm::dot(c.frame.n, on.normal));
+    const glm::dvec3 centre = liftOnto(c.frame, c.group.planar, on, centroid(cut));
+    ElementSum& e = cells[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
+    if (e.pieces++ == 0) e.firstCentre = centre, e.area = a;
+    else e.area += a;
+    e.centre += a * centre, e.normal += a * on.normal;
+    if (a > e.largest) e.largest = a, e.polygon = poly;
+  });
+  return cells;
+}
+
+std::size_t countElements(const ChartShape& c, double ts) {
+  std::size_t n = 0;
+  if (c.parts.size() == 1) {
+    forEachCut(c, ts, [&](int, int, int, const Poly2&) { ++n; });
+    return n;
+  }
+  std::vector<char> hit(std::size_t(c.size.x) * std::size_t(c.size.y), 0);
+  forEachCut(c, ts, [&](int i, int j, int, const Poly2&) {
+    char& h = hit[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
+    n += h == 0, h = 1;
+  });
+  return n;
+}
+
+std::vector<ChartShape> chartShapes(const std::vector<ChartGroup>& groups, double ts) {
   std::vector<ChartShape> shapes;
-  for (auto& p : scene.polygons()) shapes.push_back(chartShape(p, ts));
+  for (auto& g : groups) shapes.push_back(chartShape(g, ts));
   return shapes;
 }
 
@@ -118,13 +175,14 @@ double hostMemoryBytes() {
 }
 
 // The error for an atlas over a limit, with the texel size that fits (found by packing, 5 % steps).
-[[noreturn]] void failOverLimit(const Scene& scene, double ts, const Layout& l, int maxSize, double maxBytes) {
+[[noreturn]] void failOverLimit(const Scene& scene, const std::vector<ChartGroup>& groups, double ts, const Layout& l,
+                                int maxSize, double maxBytes) {
   const double texels = l.width * l.height;
   std::string limit = !l.packed ? fmt::format("over the GPU's limit of {} texels a side (GL_MAX_TEXTURE_SIZE)", maxSize)
                                 : fmt::format("{} of memory, over the memory limit of {}",
                                               bytesText(texels * kBytesPerTexel), bytesText(maxBytes));
   double fit = ts * std::sqrt(std::max({1.0, texels / (double(maxSize) * maxSize), texels * kBytesPerTexel / maxBytes}));
-  for (int i = 0; i < 200 && !fits(pack(chartShapes(scene, fit), maxSize), maxBytes); ++i) fit *= 1.05;
+  for (int i = 0; i < 200 && !fits(pack(chartShapes(groups, fit), maxSize), maxBytes); ++i) fit *= 1.05;
   double elements = scene.totalArea() / (fit * fit);
   double digits = std::pow(10.0, std::floor(std::log10(std::max(elements, 1.0))) - 1);  // two significant
   fail("texel size {:.4g} needs a {:.0f} x {:.0f} texel atlas, {}; use --texel-size {:.4g} or larger (or --elements {:.0f} "
@@ -133,29 +191,57 @@ double hostMemoryBytes() {
        std::max(1.0, std::floor(elements / digits) * digits));
 }
 
+// Writes chart c's elements into the atlas.
+void cutChart(const Scene& scene, const ChartShape& shape, const Chart& c, Atlas& atlas) {
+  const std::vector<ElementSum> cells = chartElements(scene, shape, atlas.texelSize);
+  for (int j = 0; j < c.size.y; ++j)
+    for (int i = 0; i < c.size.x; ++i) {
+      const ElementSum& e = cells[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
+      if (e.pieces == 0) continue;
+      const std::size_t t = std::size_t(c.origin.y + j) * std::size_t(atlas.width) + std::size_t(c.origin.x + i);
+      // One piece: its own centroid, bit for bit what a chart per polygon gives.
+      const glm::dvec3 centre = e.pieces == 1 ? e.firstCentre : e.centre / e.area;
+      atlas.positionArea[t] = glm::vec4(glm::vec3(centre), float(e.area));
+      atlas.polygonOf[t] = std::uint32_t(e.polygon);
+      atlas.normalOf[t] = glm::vec3(e.pieces == 1 ? scene.polygons()[std::size_t(e.polygon)].normal : glm::normalize(e.normal));
+      ++atlas.elements;
+    }
+}
+
+Chart makeChart(const ChartShape& s, glm::ivec2 origin) {
+  Chart c;
+  c.polygon = s.group.polygons.front();
+  c.polygons = s.group.polygons;
+  c.planar = s.group.planar;
+  c.parts = s.group.parts;
+  c.partPolygon = s.group.partPolygon;
+  c.origin = origin;
+  c.size = s.size;
+  c.frame = s.frame;
+  c.corner = s.corner;
+  return c;
+}
+
 }  // namespace
 
-Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes) {
+Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes, double chartAngle) {
   if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
   const auto& polys = scene.polygons();
   Atlas atlas;
   atlas.texelSize = ts;
   const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
+  const std::vector<ChartGroup> groups = groupCharts(scene, chartAngle);
   // Charts cover at least the scene's area: far over the texture limit, say so before cutting
   // the scene into more cells than any GPU holds.
   if (double least = scene.totalArea() / (ts * ts); least > double(maxSize) * maxSize)
-    failOverLimit(scene, ts, {false, std::sqrt(least), std::sqrt(least), {}}, maxSize, memory);
-  std::vector<ChartShape> shapes = chartShapes(scene, ts);
+    failOverLimit(scene, groups, ts, {false, std::sqrt(least), std::sqrt(least), {}}, maxSize, memory);
+  std::vector<ChartShape> shapes = chartShapes(groups, ts);
   Layout layout = pack(shapes, maxSize);
-  if (!fits(layout, memory)) failOverLimit(scene, ts, layout, maxSize, memory);
-  atlas.charts.resize(polys.size());
-  for (size_t id = 0; id < polys.size(); ++id) {
-    Chart& c = atlas.charts[id];
-    c.polygon = int(id);
-    c.origin = layout.origins[id];
-    c.size = shapes[id].size;
-    c.frame = shapes[id].frame;
-    c.corner = shapes[id].corner;
+  if (!fits(layout, memory)) failOverLimit(scene, groups, ts, layout, maxSize, memory);
+  atlas.chartOf.assign(polys.size(), 0);
+  for (size_t id = 0; id < shapes.size(); ++id) {
+    atlas.charts.push_back(makeChart(shapes[id], layout.origins[id]));
+    for (int p : shapes[id].group.polygons) atlas.chartOf[std::size_t(p)] = std::uint32_t(id);
   }
   atlas.width = int(layout.width);
   atlas.height = int(layout.height);
@@ -163,23 +249,15 @@ Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxByte
   size_t texels = size_t(atlas.width) * atlas.height;
   atlas.positionArea.assign(texels, glm::vec4(0.0f));
   atlas.polygonOf.assign(texels, kNoPolygon);
-  for (size_t id = 0; id < polys.size(); ++id) {
-    const Chart& c = atlas.charts[id];
-    forEachCut(shapes[id], ts, [&](int i, int j, const Poly2& cut) {
-      size_t t = size_t(c.origin.y + j) * atlas.width + (c.origin.x + i);
-      glm::dvec3 centre = c.frame.lift(centroid(cut));
-      atlas.positionArea[t] = glm::vec4(glm::vec3(centre), float(signedArea(cut)));
-      atlas.polygonOf[t] = std::uint32_t(id);
-      ++atlas.elements;
-    });
-  }
+  atlas.normalOf.assign(texels, glm::vec3(0.0f));
+  for (size_t id = 0; id < shapes.size(); ++id) cutChart(scene, shapes[id], atlas.charts[id], atlas);
   if (atlas.elements == 0 && !polys.empty())
     fail("texel size {} leaves no element: every polygon is a sliver under {} of a texel; use a smaller --texel-size",
          ts, kMinCutFraction);
   return atlas;
 }
 
-double texelSizeForElements(const Scene& scene, std::size_t elements) {
+double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle) {
   if (elements == 0) fail("--elements must be positive");
   if (scene.polygons().empty()) fail("{}: the scene has no faces with area", scene.path);
   double ts = std::sqrt(scene.totalArea() / double(elements));
@@ -188,9 +266,10 @@ double texelSizeForElements(const Scene& scene, std::size_t elements) {
   for (auto& p : scene.polygons())
     for (auto& v : p.vertices) ts = std::max(ts, glm::length(v - p.vertices.front()) / double(elements));
   // Partial texels add elements; a few fixed-point steps on the real count settle it.
+  const std::vector<ChartGroup> groups = elements <= kMaxCountedElements ? groupCharts(scene, chartAngle) : std::vector<ChartGroup>{};
   for (int iter = 0; iter < 4 && elements <= kMaxCountedElements; ++iter) {
     size_t count = 0;
-    for (auto& p : scene.polygons()) forEachCut(chartShape(p, ts), ts, [&](int, int, const Poly2&) { ++count; });
+    for (auto& g : groups) count += countElements(chartShape(g, ts), ts);
     if (count == 0) break;  // only slivers: buildAtlas says so
     ts *= std::sqrt(double(count) / double(elements));
   }
@@ -198,32 +277,39 @@ double texelSizeForElements(const Scene& scene, std::size_t elements) {
 }
 
 glm::dvec2 Atlas::atlasCoord(int polygon, const glm::dvec3& p) const {
-  const Chart& c = charts[polygon];
+  const Chart& c = charts[chartOf[std::size_t(polygon)]];
   return glm::dvec2(c.origin) + (c.frame.project(p) - c.corner) / texelSize;
 }
 
-Poly3 Atlas::elementShape(const Scene& scene, int x, int y) const {
+std::vector<Poly3> Atlas::elementShape(const Scene& scene, int x, int y) const {
   if (polygonOf[size_t(y) * width + x] == kNoPolygon) return {};
   return blockShape(scene, glm::ivec4(x, y, 1, 1));
 }
 
-Poly3 Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const {
-  std::uint32_t id = kNoPolygon;
-  for (int y = rect.y; y < rect.y + rect.w && id == kNoPolygon; ++y)
-    for (int x = rect.x; x < rect.x + rect.z && id == kNoPolygon; ++x) id = polygonOf[size_t(y) * width + x];
-  if (id == kNoPolygon) return {};
-  const Chart& c = charts[id];
-  Poly2 poly;
-  for (auto& v : scene.polygons()[id].vertices) poly.push_back(c.frame.project(v));
+std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const {
+  std::uint32_t chart = kNoPolygon;
+  for (int y = rect.y; y < rect.y + rect.w && chart == kNoPolygon; ++y)
+    for (int x = rect.x; x < rect.x + rect.z && chart == kNoPolygon; ++x) chart = chartAt(size_t(y) * width + x);
+  if (chart == kNoPolygon) return {};
+  const Chart& c = charts[chart];
   glm::dvec2 lo(rect.x - c.origin.x, rect.y - c.origin.y), hi = lo + glm::dvec2(rect.z, rect.w);
-  Poly3 out;
-  for (auto& q : clipToBox(poly, c.corner + lo * texelSize, c.corner + hi * texelSize)) out.push_back(c.frame.lift(q));
+  std::vector<Poly3> out;
+  for (std::size_t k = 0; k < c.parts.size(); ++k) {
+    Poly2 poly;
+    for (auto& v : c.parts[k]) poly.push_back(c.frame.project(v));
+    Poly2 cut = clipToBox(poly, c.corner + lo * texelSize, c.corner + hi * texelSize);
+    if (cut.size() < 3 || signedArea(cut) <= kMinCutFraction * texelSize * texelSize) continue;
+    const ScenePolygon& on = scene.polygons()[std::size_t(c.partPolygon[k])];
+    Poly3& piece = out.emplace_back();
+    for (auto& q : cut) piece.push_back(liftOnto(c.frame, c.planar, on, q));
+  }
   return out;
 }
 
 glm::vec3 Atlas::sample(const std::vector<glm::vec4>& values, int polygon, glm::dvec2 coord) const {
+  const std::uint32_t chart = chartOf[std::size_t(polygon)];
   auto owned = [&](glm::ivec2 t) {
-    return t.x >= 0 && t.y >= 0 && t.x < width && t.y < height && polygonOf[size_t(t.y) * width + t.x] == std::uint32_t(polygon);
+    return t.x >= 0 && t.y >= 0 && t.x < width && t.y < height && chartAt(size_t(t.y) * width + t.x) == chart;
   };
   glm::dvec2 c = coord - 0.5;
   glm::ivec2 i0(glm::floor(c));
@@ -248,10 +334,11 @@ std::vector<ShooterBlock> Atlas::shooterBlocks(int level) const {
   return shooterBlocks(std::vector<int>(charts.size(), level));
 }
 
-std::vector<ShooterBlock> Atlas::shooterBlocks(const std::vector<int>& polygonLevel) const {
+std::vector<ShooterBlock> Atlas::shooterBlocks(const std::vector<int>& chartLevel) const {
   std::vector<ShooterBlock> blocks;
-  for (const Chart& c : charts) {
-    const int b = 1 << polygonLevel[size_t(c.polygon)];
+  for (std::size_t id = 0; id < charts.size(); ++id) {
+    const Chart& c = charts[id];
+    const int b = 1 << chartLevel[id];
     for (int j = 0; j < c.size.y; j += b)
       for (int i = 0; i < c.size.x; i += b) {
         glm::ivec4 rect(c.origin.x + i, c.origin.y + j, std::min(b, c.size.x - i), std::min(b, c.size.y - j));
@@ -266,7 +353,7 @@ std::vector<ShooterBlock> Atlas::shooterBlocks(const std::vector<int>& polygonLe
 
 double chooseTexelSize(const Scene& scene, const Discretisation& d) {
   if (d.texelSize) return *d.texelSize * scene.unitScale;  // given in the file's units
-  return texelSizeForElements(scene, d.elements.value_or(Discretisation::kDefaultElements));
+  return texelSizeForElements(scene, d.elements.value_or(Discretisation::kDefaultElements), d.chartAngle);
 }
 
 }  // namespace hemirad

@@ -44,7 +44,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   const bool perspective = settings.algorithm == Algorithm::Perspective;
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
   plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution, settings.projection);
-  setUpTree(state.atlas.shooterBlocks(plan_.polygonLevel), defines);
+  setUpTree(state.atlas.shooterBlocks(plan_.chartLevel), defines);
   setUpReduction(keep, defines);
 
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
@@ -80,7 +80,11 @@ void ProgressiveSolver::setUpTree(const std::vector<ShooterBlock>& blocks, const
   nodeStats_ = gl::Buffer(tree.nodes.size() * sizeof(glm::vec4[4]));
   std::vector<glm::ivec4> rects;
   for (const ShooterNode& n : tree.nodes) rects.push_back(n.rect);
-  shapes_ = gl::Buffer(std::span<const glm::vec4>(shapeTable(state_.scene, state_.atlas, rects)));
+  const ShapeTable shapes = shapeTable(state_.scene, state_.atlas, rects);
+  gl::requireStorageBlock(shapes.slots.size() * sizeof(glm::vec4),
+                          fmt::format("the shapes of {} shooter-tree nodes", tree.nodes.size()));
+  discShapes_ = shapes.discShapes;
+  shapes_ = gl::Buffer(std::span<const glm::vec4>(shapes.slots));
   const unsigned threads = std::clamp(std::bit_ceil(tree.largestBlock), 1u << (2 * tree.depth), 256u);
   gl::Defines statsDefines = defines;
   statsDefines.push_back({"BLOCK_THREADS", std::to_string(threads)});

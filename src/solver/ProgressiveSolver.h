@@ -93,6 +93,8 @@ class ProgressiveSolver final : public Solver {
   std::size_t itemTriangles() const { return itemBuffer_->triangles(); }
   std::size_t itemPixels() const { return itemBuffer_->pixelsPerShooter(); }
   std::size_t shooterBlocks() const { return blockCount_; }
+  // Shooter-tree nodes whose shape is past the piece budget (kMaxShapePieces): the disc form factor.
+  std::size_t discShapes() const { return discShapes_; }
   const ShootingPlan& plan() const { return plan_; }
 
  private:
@@ -129,6 +131,7 @@ class ProgressiveSolver final : public Solver {
   ShootingPlan plan_;
   gl::Program stats_, reduce_, select_, gather_;
   gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
+  std::size_t discShapes_ = 0;
   gl::Buffer shapes_;  // per node: its exact shape (shapeTable), what the gather integrates over
   std::unique_ptr<ItemBuffer> itemBuffer_;
   std::unique_ptr<ImportanceView> view_;  // importance-driven solves only

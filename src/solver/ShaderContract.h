@@ -52,6 +52,7 @@
   /* Texture units */                                                                                    \
   X(SAMPLER_ATLAS_POSITION_AREA, 0) /* scene.glsl */                                                     \
   X(SAMPLER_ATLAS_POLYGON, 1)     /* scene.glsl */                                                       \
+  X(SAMPLER_ATLAS_NORMAL, 3)      /* scene.glsl: per texel the receiver normal */                        \
   X(SAMPLER_ITEM_ID, 2)           /* visibility.glsl: the item buffer's polygon ids */                   \
   X(SAMPLER_ATLAS_VALUES, 2)      /* camera.frag: the per-element values shown */                        \
   X(SAMPLER_SHADOW_ID, 4)         /* instant_shade.glsl: the VPL shadow maps */                          \
@@ -72,6 +73,8 @@ inline constexpr unsigned kShooterSlots = 2 * kMaxPassShooters;  // control.glsl
 // A convex polygon of <= 8 sides cut by a block's rectangle (formfactor.glsl, texel_shape.glsl).
 inline constexpr int kMaxShapeVertices = 12;
 inline constexpr int kShapeStride = kMaxShapeVertices + 1;  // the count, then the vertices
+// Convex pieces a shooter's shape may have (a block over several polygons of one chart).
+inline constexpr int kMaxShapePieces = 64;
 
 // The table as #define lines (slots, limits, LUMINANCE: the Rec. 709 weights of src/scene/Scene.h).
 const gl::Defines& contractDefines();

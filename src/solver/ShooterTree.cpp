@@ -10,7 +10,7 @@ namespace {
 ShooterNode makeNode(const Atlas& atlas, glm::ivec4 rect) {
   ShooterNode n;
   n.rect = rect;
-  glm::dvec3 centre(0.0);
+  glm::dvec3 centre(0.0), normal(0.0);
   double area = 0;
   for (int y = rect.y; y < rect.y + rect.w; ++y)
     for (int x = rect.x; x < rect.x + rect.z; ++x) {
@@ -18,9 +18,13 @@ ShooterNode makeNode(const Atlas& atlas, glm::ivec4 rect) {
       if (atlas.polygonOf[t] == kNoPolygon || atlas.positionArea[t].w <= 0) continue;
       centre += glm::dvec3(atlas.positionArea[t]) * double(atlas.positionArea[t].w);
       area += atlas.positionArea[t].w;
+      normal += glm::dvec3(atlas.normalOf[t]) * double(atlas.positionArea[t].w);
       n.polygon = atlas.polygonOf[t];
+      // A planar chart: every element's normal is the plane's (bit for bit a polygon's own).
+      if (atlas.charts[atlas.chartOf[n.polygon]].planar) n.normal = glm::vec4(atlas.normalOf[t], 0.0f);
     }
   if (area > 0) n.centreArea = glm::vec4(glm::vec3(centre / area), float(area));
+  if (area > 0 && !atlas.charts[atlas.chartOf[n.polygon]].planar) n.normal = glm::vec4(glm::vec3(glm::normalize(normal)), 0.0f);
   return n;
 }
 

@@ -39,9 +39,9 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
   const glm::dvec3 size = scene.boundsMax() - scene.boundsMin();
   const double extent = std::max({size.x, size.y, size.z});
   ShootingPlan plan;
-  for (const ScenePolygon& p : scene.polygons()) {
-    const bool emitter = scene.materials[p.material].emissive();
-    plan.polygonLevel.push_back(shootLevel != kAutoShootLevel ? shootLevel
+  for (const Chart& c : atlas.charts) {
+    const bool emitter = scene.materials[scene.polygons()[std::size_t(c.polygon)].material].emissive();
+    plan.chartLevel.push_back(shootLevel != kAutoShootLevel ? shootLevel
                                 : levelFor(extent * (emitter ? kEmitterSide : kShooterSide), atlas.texelSize));
   }
   const int divisor = projection == Projection::Hemicube ? kHemicubeDivisor : 1;

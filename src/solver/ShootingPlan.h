@@ -16,7 +16,7 @@ inline constexpr int kAutoShootLevel = -1;   // ProgressiveSettings::shootLevel
 inline constexpr int kAutoItemResolution = 0;  // ProgressiveSettings::itemResolution
 
 struct ShootingPlan {
-  std::vector<int> polygonLevel;  // per polygon: it shoots from 2^level x 2^level texel blocks
+  std::vector<int> chartLevel;  // per chart: it shoots from 2^level x 2^level texel blocks
   int itemResolution = 512;       // item buffer pixels a side
 };
 

@@ -12,7 +12,7 @@ namespace hemirad {
 namespace {
 struct GpuPolygon {
   glm::vec4 plane, reflectance, emission;  // plane: unit normal, offset n . p
-  glm::uvec4 vertices;                     // first, count in polygonVertices
+  glm::uvec4 vertices;                     // first, count in polygonVertices; chart; chart planar (1) or not
 };
 }  // namespace
 
@@ -21,21 +21,27 @@ SolverState::SolverState(const Scene& s, const Atlas& a)
       atlas(a),
       positionArea(GL_RGBA32F, a.width, a.height),
       polygonOf(GL_R32UI, a.width, a.height),
+      normal(GL_RGBA32F, a.width, a.height),
       radiosity(GL_RGBA32F, a.width, a.height),
       deltaB(GL_RGBA32F, a.width, a.height) {
   std::vector<GpuPolygon> table;
   std::vector<glm::vec4> vertices;
-  for (auto& p : s.polygons()) {
+  for (std::size_t id = 0; id < s.polygons().size(); ++id) {
+    const ScenePolygon& p = s.polygons()[id];
     const Material& m = s.materials[p.material];
+    const std::uint32_t chart = a.chartOf[id];
     table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
                      glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
-                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), 0, 0)});
+                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), chart, a.charts[chart].planar ? 1u : 0u)});
     for (auto& v : p.vertices) vertices.push_back(glm::vec4(glm::vec3(v), 1));
   }
   polygons = gl::Buffer(std::span<const GpuPolygon>(table));
   polygonVertices = gl::Buffer(std::span<const glm::vec4>(vertices));
   positionArea.upload(GL_RGBA, GL_FLOAT, a.positionArea.data());
   polygonOf.upload(GL_RED_INTEGER, GL_UNSIGNED_INT, a.polygonOf.data());
+  std::vector<glm::vec4> normals(a.normalOf.size());
+  for (std::size_t t = 0; t < normals.size(); ++t) normals[t] = glm::vec4(a.normalOf[t], 0.0f);
+  normal.upload(GL_RGBA, GL_FLOAT, normals.data());
 
   std::vector<glm::vec4> emission(a.positionArea.size(), glm::vec4(0.0f));
   for (size_t t = 0; t < emission.size(); ++t) {
@@ -54,15 +60,28 @@ void SolverState::bindScene() const {
   polygonVertices.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGON_VERTICES);
   positionArea.bindUnit(slot::SAMPLER_ATLAS_POSITION_AREA);
   polygonOf.bindUnit(slot::SAMPLER_ATLAS_POLYGON);
+  normal.bindUnit(slot::SAMPLER_ATLAS_NORMAL);
 }
 
-std::vector<glm::vec4> shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects) {
-  std::vector<glm::vec4> out(rects.size() * kShapeStride, glm::vec4(0.0f));
+ShapeTable shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects) {
+  ShapeTable out;
+  out.slots.assign(rects.size() * kShapeStride, glm::vec4(0.0f));
+  auto write = [&](std::size_t slot, const Poly3& piece, float pieces, float first) {
+    out.slots[slot * kShapeStride] = glm::vec4(float(piece.size()), pieces, first, 0);
+    for (std::size_t i = 0; i < piece.size(); ++i) out.slots[slot * kShapeStride + 1 + i] = glm::vec4(glm::vec3(piece[i]), 1);
+  };
   for (std::size_t b = 0; b < rects.size(); ++b) {
-    Poly3 shape = atlas.blockShape(scene, rects[b]);
-    if (shape.size() < 3 || shape.size() > std::size_t(kMaxShapeVertices)) continue;
-    out[b * kShapeStride] = glm::vec4(float(shape.size()), 0, 0, 0);
-    for (std::size_t i = 0; i < shape.size(); ++i) out[b * kShapeStride + 1 + i] = glm::vec4(glm::vec3(shape[i]), 1);
+    const std::vector<Poly3> shape = atlas.blockShape(scene, rects[b]);
+    bool fits = !shape.empty() && shape.size() <= std::size_t(kMaxShapePieces);
+    for (const Poly3& piece : shape) fits = fits && piece.size() >= 3 && piece.size() <= std::size_t(kMaxShapeVertices);
+    if (!fits) {  // count 0: the gather takes the disc form factor
+      out.discShapes += !shape.empty();
+      continue;
+    }
+    const std::size_t first = out.slots.size() / kShapeStride;
+    write(b, shape[0], glm::uintBitsToFloat(unsigned(shape.size())), glm::uintBitsToFloat(unsigned(first)));
+    out.slots.resize(out.slots.size() + (shape.size() - 1) * kShapeStride, glm::vec4(0.0f));
+    for (std::size_t k = 1; k < shape.size(); ++k) write(first + k - 1, shape[k], 0, 0);
   }
   return out;
 }

@@ -23,6 +23,7 @@ class SolverState {
   const Atlas& atlas;
   gl::Texture positionArea;  // RGBA32F element centre and area
   gl::Texture polygonOf;     // R32UI polygon id per texel
+  gl::Texture normal;        // RGBA32F per texel the receiver normal (Atlas::normalOf)
   gl::Texture radiosity;     // RGBA32F B
   gl::Texture deltaB;        // RGBA32F dB (unshot)
   gl::Buffer polygons;       // per polygon: plane, reflectance, emission, vertex range
@@ -38,10 +39,16 @@ class SolverState {
   void restore(const std::vector<glm::vec4>& B, const std::vector<glm::vec4>& dB);
 };
 
-// Shooter shapes for shaders/formfactor.glsl: per atlas rectangle (shooter block) kShapeStride
-// vec4s, the first holding the vertex count, then the vertices of Atlas::blockShape. A shape of
-// more than kMaxShapeVertices vertices gets count 0 (the gather then falls back to the disc).
-std::vector<glm::vec4> shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects);
+// Shooter shapes for shaders/formfactor.glsl: per atlas rectangle (shooter block) a slot of
+// kShapeStride vec4s, its header the vertex count, the piece count and the first slot of the
+// other pieces (bits), then the vertices of Atlas::blockShape's first piece; the other pieces
+// follow the rectangles' slots, one slot each. A shape of more than kMaxShapePieces pieces or a
+// piece of more than kMaxShapeVertices vertices gets count 0: the gather then takes the disc.
+struct ShapeTable {
+  std::vector<glm::vec4> slots;
+  std::size_t discShapes = 0;  // shapes past the budget, shot with the disc form factor
+};
+ShapeTable shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects);
 
 // Area-weighted mean B per object (the report's `mean_radiosity`, docs/design.md#report), from a B readback.
 struct ObjectRadiosity {

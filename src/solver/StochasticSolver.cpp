@@ -59,6 +59,11 @@ StochasticSolver::StochasticSolver(SolverState& state, const StochasticSettings&
     throw InputError(fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shooters));
   if (settings.stop.targetConvergence > 0)
     throw InputError("--method stochastic has no convergence measure: stop it with --shots (iterations), not --converge");
+  for (const Chart& c : state.atlas.charts)  // its texel shapes are cut from one polygon (texel_shape.glsl)
+    if (c.polygons.size() > 1)
+      throw InputError(fmt::format("--method stochastic samples texels cut from one polygon, and a chart here spans {} "
+                                   "polygons; leave out --chart-angle (stochastic iteration keeps a chart per polygon)",
+                                   c.polygons.size()));
   itemResolution_ = planShooting(state.scene, state.atlas, 0, settings.itemResolution, settings.projection).itemResolution;
   while (side_ < unsigned(std::max(state.atlas.width, state.atlas.height))) side_ *= 2, ++levels_;
   std::size_t floats = 0;

@@ -19,17 +19,18 @@ DenseSystem buildDense(const Scene& scene, const Atlas& atlas, const cpu::ExactV
     fail("--solution needs a dense {} x {} form-factor matrix; use at most {} elements (--elements)", n, n,
          kDenseMaxElements);
 
-  std::vector<Poly3> shape(n);
+  std::vector<std::vector<Poly3>> shape(n);
   std::vector<glm::dvec3> centre(n), normal(n), &rho = sys.rho, &E = sys.E;
   rho.resize(n), E.resize(n);
-  std::vector<int> polygon(n);
+  std::vector<int> polygon(n), chart(n);
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t t = texel[i];
     polygon[i] = int(atlas.polygonOf[t]);
+    chart[i] = int(atlas.chartAt(t));
     shape[i] = atlas.elementShape(scene, int(t % atlas.width), int(t / atlas.width));
     centre[i] = glm::dvec3(atlas.positionArea[t]);
     const ScenePolygon& p = scene.polygons()[size_t(polygon[i])];
-    normal[i] = p.normal;
+    normal[i] = glm::normalize(glm::dvec3(atlas.normalOf[t]));
     rho[i] = scene.materials[p.material].reflectance;
     E[i] = scene.materials[p.material].emission;
   }
@@ -38,10 +39,12 @@ DenseSystem buildDense(const Scene& scene, const Atlas& atlas, const cpu::ExactV
   F.assign(n * n, 0.0f);
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
     for (std::size_t j = 0; j < n; ++j) {
-      if (polygon[i] == polygon[j]) continue;
+      if (chart[i] == chart[j]) continue;
       if (!cpu::facing(centre[j], normal[j], centre[i], normal[i])) continue;
       if (!visibility.visible(centre[i], polygon[i], centre[j], polygon[j])) continue;
-      F[i * n + j] = float(cpu::pointToPolygon(centre[i], normal[i], shape[j], normal[j]));
+      double f = 0;  // linear in the shape: the pieces' sum is the element's
+      for (const Poly3& piece : shape[j]) f += cpu::pointToPolygon(centre[i], normal[i], piece, glm::normalize(newellNormal(piece)));
+      F[i * n + j] = float(f);
     }
   });
   return sys;

@@ -22,7 +22,7 @@ FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int 
 std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   const Atlas& a = state_.atlas;
   const std::uint32_t polygon = a.polygonOf[s];
-  const glm::dvec3 n = state_.scene.polygons()[polygon].normal;
+  const glm::dvec3 n = glm::normalize(glm::dvec3(a.normalOf[s]));
   ControlBlock c{};
   c.count = 1;
   ShooterRecord& shooter = c.shooter[0];
@@ -33,7 +33,7 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   shooter.block = shooter.shape = 0;  // shape_ holds just this element's shape
   control_.upload(0, sizeof c, &c);
   const glm::ivec4 rect(shooter.rect[0], shooter.rect[1], 1, 1);
-  shape_ = gl::Buffer(std::span<const glm::vec4>(shapeTable(state_.scene, a, {rect})));
+  shape_ = gl::Buffer(std::span<const glm::vec4>(shapeTable(state_.scene, a, {rect}).slots));
 
   gl::finish();
   auto t0 = std::chrono::steady_clock::now();

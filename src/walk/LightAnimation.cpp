@@ -47,7 +47,9 @@ int runAnimation(AnimationOptions o) {
   validateSolvable(base);
   const Camera camera = resolveCamera(base, o.camera);
   auto backend = gl::createBackend(o.backend);
-  const Atlas baseAtlas = buildAtlas(base, chooseTexelSize(base, o.discretisation), backend->maxTextureSize());
+  Discretisation perPolygon = o.discretisation;  // stochastic iteration: a chart per polygon (Charts.h)
+  perPolygon.chartAngle = kPolygonCharts;
+  const Atlas baseAtlas = buildAtlas(base, chooseTexelSize(base, perPolygon), backend->maxTextureSize(), 0, kPolygonCharts);
   std::filesystem::create_directories(o.framesDir);
   const unsigned frames = unsigned(std::floor(path.duration() * o.fps + 1e-9)) + 1;
   std::string csv = "frame,time,iterations,relative_rms_error,radiosity_hash\n";

@@ -65,8 +65,12 @@ Scene withLightsMoved(const Scene& scene, const glm::dvec3& offset) {
 Atlas withLightsMoved(const Atlas& atlas, const Scene& scene, const glm::dvec3& offset) {
   Atlas out = atlas;
   auto emits = [&](std::size_t polygon) { return scene.materials[std::size_t(scene.polygons()[polygon].material)].emissive(); };
-  for (std::size_t p = 0; p < out.charts.size(); ++p)
-    if (emits(p)) out.charts[p].frame.origin += offset;
+  for (Chart& c : out.charts)  // a chart is one material: it moves whole
+    if (emits(std::size_t(c.polygon))) {
+      c.frame.origin += offset;
+      for (Poly3& part : c.parts)
+        for (glm::dvec3& v : part) v += offset;
+    }
   for (std::size_t t = 0; t < out.positionArea.size(); ++t)
     if (out.polygonOf[t] != kNoPolygon && emits(out.polygonOf[t]))
       out.positionArea[t] += glm::vec4(glm::vec3(offset), 0.0f);

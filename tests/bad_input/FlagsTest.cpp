@@ -4,6 +4,7 @@
 #include <string>
 
 #include "tests/bad_input/BadInput.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 using namespace hemirad::test::bad_input;
@@ -57,4 +58,14 @@ TEST_CASE("Bad input: a bad preset name is one error line naming the presets, ex
                   {"--preset", "is not a preset; the presets are fast, seed003, reference (the default: fast)"});
   expectRefused("preset", solve(obj) + " --method stochastic --preset seed003",
                 {"--preset is for --method progressive, not stochastic"});
+}
+
+TEST_CASE("Bad input: stochastic iteration with --chart-angle over a chart of many polygons is one error, and without "
+          "the flag it keeps a chart per polygon", "[cli][bad-input]") {
+  // Two coplanar quads sharing an edge: one chart at any --chart-angle.
+  const std::string obj = writeScene("stochastic_charts", kQuad + "v 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n");
+  expectRefused("stochastic_charts", solve(obj) + " --method stochastic --chart-angle 30",
+                {"--method stochastic", "spans 2 polygons", "--chart-angle"});
+  expectRefused("chart_angle_range", solve(obj) + " --chart-angle 61", {"--chart-angle"});
+  CHECK(test::hemirad(solve(obj) + " --method stochastic").exitCode == 0);
 }

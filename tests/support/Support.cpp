@@ -69,7 +69,7 @@ double discRowSum(const Scene& scene, const Atlas& a, size_t s) {
   glm::dvec3 ps(a.positionArea[s]), ns = scene.polygons()[a.polygonOf[s]].normal;
   double As = a.positionArea[s].w, sum = 0;
   for (size_t j = 0; j < a.polygonOf.size(); ++j) {
-    if (a.polygonOf[j] == kNoPolygon || a.polygonOf[j] == a.polygonOf[s]) continue;
+    if (a.polygonOf[j] == kNoPolygon || a.chartAt(j) == a.chartAt(s)) continue;
     glm::dvec3 d = glm::dvec3(a.positionArea[j]) - ps;
     double r2 = glm::dot(d, d);
     glm::dvec3 w = d / std::sqrt(r2);
@@ -80,13 +80,13 @@ double discRowSum(const Scene& scene, const Atlas& a, size_t s) {
 }
 
 double exactRowSum(const Scene& scene, const Atlas& a, size_t s) {
-  const Poly3 shape = a.elementShape(scene, int(s % a.width), int(s / a.width));
-  const glm::dvec3 ns = scene.polygons()[a.polygonOf[s]].normal;
+  const std::vector<Poly3> shape = a.elementShape(scene, int(s % a.width), int(s / a.width));
   double sum = 0;
   for (size_t j = 0; j < a.polygonOf.size(); ++j) {
-    if (a.polygonOf[j] == kNoPolygon || a.polygonOf[j] == a.polygonOf[s]) continue;
-    const glm::dvec3 nj = scene.polygons()[a.polygonOf[j]].normal;
-    sum += cpu::pointToPolygon(glm::dvec3(a.positionArea[j]), nj, shape, ns) * a.positionArea[j].w;
+    if (a.polygonOf[j] == kNoPolygon || a.chartAt(j) == a.chartAt(s)) continue;
+    const glm::dvec3 nj = glm::normalize(glm::dvec3(a.normalOf[j]));
+    for (const Poly3& piece : shape)
+      sum += cpu::pointToPolygon(glm::dvec3(a.positionArea[j]), nj, piece, glm::normalize(newellNormal(piece))) * a.positionArea[j].w;
   }
   return sum / a.positionArea[s].w;
 }

@@ -35,6 +35,7 @@ class ProgressiveRun final : public AtlasRun {
     run.deliveryShots = solver_.deliveryShots();
     run.fovDecayShots = solver_.fovDecayShots();
     run.itemTriangles = solver_.itemTriangles();
+    run.discShapes = solver_.discShapes();
   }
   std::string reached(const SolveStatus& status) const override {
     return fmt::format("{} shots, convergence {:.4f}", status.shots, status.convergence);

@@ -52,6 +52,7 @@ StochasticSettings stochasticSolveDefaults() {
 
 class StochasticMethod final : public AtlasMethod {
  public:
+  bool chartsSpanPolygons() const override { return false; }
   std::string name() const override { return "stochastic"; }
   std::vector<MethodFlag> flags() override {
     StochasticSettings& s = settings_;
