@@ -136,7 +136,7 @@ test::Solved solveCharts(const Scene& s, double texel, double angle, const Progr
 }  // namespace
 
 TEST_CASE("Curved charts at --chart-angle 30 on a tessellated tube: a tenth of the charts, every polygon's area covered once, the "
-          "tube's radiosity as with a chart per facet", "[gl][charts]") {
+          "tube's radiosity as with a chart per facet", "[heavy][gl][charts]") {
   const Scene s = litTube();
   const Atlas atlas = buildAtlas(s, 0.05, 16384, 0, 30);
   CHECK(atlas.charts.size() * 10 < s.polygons().size());
