@@ -8,7 +8,7 @@ struct Polygon {
   vec4 reflectance;  // rgb rho
   vec4 emission;     // rgb E
   uvec4 vertices;    // first, count in polygonVertex (convex, counter-clockwise around the normal);
-                     // its chart (src/scene/Charts.h); 1 if that chart is planar
+                     // its chart (src/scene/Charts.h)
 };
 
 layout(std430, binding = SSBO_POLYGONS) readonly buffer Polygons { Polygon polygons[]; };

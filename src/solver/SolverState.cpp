@@ -12,7 +12,7 @@ namespace hemirad {
 namespace {
 struct GpuPolygon {
   glm::vec4 plane, reflectance, emission;  // plane: unit normal, offset n . p
-  glm::uvec4 vertices;                     // first, count in polygonVertices; chart; chart planar (1) or not
+  glm::uvec4 vertices;                     // first, count in polygonVertices; chart
 };
 }  // namespace
 
@@ -32,7 +32,7 @@ SolverState::SolverState(const Scene& s, const Atlas& a)
     const std::uint32_t chart = a.chartOf[id];
     table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
                      glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
-                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), chart, a.charts[chart].planar ? 1u : 0u)});
+                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), chart, 0u)});
     for (auto& v : p.vertices) vertices.push_back(glm::vec4(glm::vec3(v), 1));
   }
   polygons = gl::Buffer(std::span<const GpuPolygon>(table));
