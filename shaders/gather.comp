@@ -13,6 +13,11 @@
 #include "control.glsl"
 #include "formfactor.glsl"
 #include "visibility.glsl"
+#ifdef REFINE_NEAR
+#include "shooter_tree.glsl"
+#include "bvh.glsl"
+#include "refine_near.glsl"
+#endif
 #ifdef PERSPECTIVE
 #include "perspective.glsl"
 uniform uint viewMode;
@@ -54,7 +59,20 @@ void main() {
     if (s < control.shootersPerPass && !receivesRadiosity) continue;
     bool facing;
     float visible;
+#ifdef REFINE_NEAR
+    // A radiosity shot (not a stored entry's delivery) near its receiver: visibility part by part.
+    vec3 x = texelFetch(atlasPositionArea, t, 0).xyz;
+    float F;
+    if (s < control.shootersPerPass && !deferred && nearNode(control.shooter[s].shape, x)) {
+      vec3 nr = texelFetch(atlasNormal, t, 0).xyz;
+      F = unoccludedFormFactor(s, x, nr);
+      if (F > 0.0) F *= visibleShare(control.shooter[s].shape, x, nr, polygon);
+    } else {
+      F = shooterFormFactor(s, t, polygon, facing, visible);
+    }
+#else
     float F = shooterFormFactor(s, t, polygon, facing, visible);
+#endif
     if (F > 0.0) received += shot * F;
   }
   if (keep == vec4(1.0) && received == vec4(0.0)) return;

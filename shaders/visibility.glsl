@@ -43,17 +43,21 @@ bool inShooterBlock(uint s, ivec2 t, uint polygon) {
   return all(greaterThanEqual(t, r.xy)) && all(lessThan(t, r.xy + r.zw)) && chartOf(polygon) == chartOf(control.shooter[s].polygon);
 }
 
-// Unoccluded form factor from the receiver point x (normal nr) to shooter s: exact (contour
-// integral over the block's shape, formfactor.glsl), or the disc formula for a shape too
-// complex for the table.
-float unoccludedFormFactor(uint s, vec3 x, vec3 nr) {
-  uint shape = control.shooter[s].shape;
-  vec3 ns = control.shooter[s].normal.xyz;
+// Unoccluded form factor from the receiver point x (normal nr) to a shooter-tree node's shape
+// (front normal ns): exact (contour integral, formfactor.glsl), or the disc formula, the disc of its
+// area at `centre`, for a shape too complex for the table.
+float shapeFormFactor(uint shape, vec3 centre, float area, vec3 ns, vec3 x, vec3 nr) {
   if (shooterShape[shape * SHAPE_STRIDE].x >= 3.0) return pointToShape(x, nr, shape, ns);
-  vec3 d = x - control.shooter[s].positionArea.xyz;
+  vec3 d = x - centre;
   float r2 = dot(d, d);
   vec3 w = d * inversesqrt(r2);
-  return discFormFactor(dot(ns, w), -dot(nr, w), r2, control.shooter[s].positionArea.w);
+  return discFormFactor(dot(ns, w), -dot(nr, w), r2, area);
+}
+
+// The same to shooter s of the pass: its node's shape, seen from its origin.
+float unoccludedFormFactor(uint s, vec3 x, vec3 nr) {
+  vec4 pa = control.shooter[s].positionArea;
+  return shapeFormFactor(control.shooter[s].shape, pa.xyz, pa.w, control.shooter[s].normal.xyz, x, nr);
 }
 
 // Form factor from receiver element t (of `polygon`) to shooter s of the pass, visibility

@@ -166,11 +166,16 @@ std::vector<Flag> sceneAndSolverFlags() {
        projectionChoice()},
       {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
        "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, 0, 8)},
+      {"--refine-near", "K",
+       "A receiver nearer a shooter block than K times the block's side gets the block's quadrants' light one by one, "
+       "each from its own origin with exact visibility (hierarchical radiosity's link refinement; 0: off)",
+       CLI::Range(0.0, 16.0)},
       {"--preset", "NAME",
        "Start the item buffer and shooters from a named plan (docs/cli.md#presets): fast (the default: hemicube at "
        "item-mesh level 0, planned shooter blocks and resolution), seed003 (seed 003's orthographic hemisphere, L3, "
        "512^2, level-1 shooting: the default before issue 30, bitwise) or reference (element-by-element shooting, "
-       "hemicube 1024^2); --hemisphere, --item-subdiv, --item-res and --shoot-level given beside it override its values",
+       "hemicube 1024^2); --hemisphere, --item-subdiv, --item-res, --shoot-level and --refine-near given beside it override its "
+       "values",
        presetChoice(), std::string(kDefaultPreset)},
       {"--algorithm", "NAME",
        "Progressive shooter choice: progressive; importance: shooters ranked by unshot power x importance from "
@@ -377,6 +382,7 @@ std::string defaultText(const std::string& flag) {
   if (flag == "--item-subdiv") return fmt::format("{} (preset {})", kFastPlan.itemSubdivision, kDefaultPreset);
   if (flag == "--item-res") return autoText(kFastPlan.itemResolution, kAutoItemResolution);
   if (flag == "--shoot-level") return autoText(kFastPlan.shootLevel, kAutoShootLevel);
+  if (flag == "--refine-near") return fmt::format("{:g} (preset {})", kFastPlan.refineNear, kDefaultPreset);
   throw std::logic_error(flag + " is not set by a preset");
 }
 
@@ -387,6 +393,7 @@ void applyPreset(ProgressiveSettings& p, const std::string& name, const std::fun
   if (given("--item-subdiv")) p.itemSubdivision = before.itemSubdivision;
   if (given("--item-res")) p.itemResolution = before.itemResolution;
   if (given("--shoot-level")) p.shootLevel = before.shootLevel;
+  if (given("--refine-near")) p.refineNear = before.refineNear;
 }
 
 void addItemPlan(CLI::App* cmd, ProgressiveSettings& p, bool shootLevel) {
@@ -400,6 +407,7 @@ void addItemPlan(CLI::App* cmd, ProgressiveSettings& p, bool shootLevel) {
   add(cmd, "--item-subdiv", p.itemSubdivision, defaultText("--item-subdiv"));
   add(cmd, "--item-res", p.itemResolution, defaultText("--item-res"));
   if (shootLevel) add(cmd, "--shoot-level", p.shootLevel, defaultText("--shoot-level"));
+  if (shootLevel) add(cmd, "--refine-near", p.refineNear, defaultText("--refine-near"));
 }
 
 Projection oneProjection(int stored) {

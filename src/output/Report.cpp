@@ -45,6 +45,7 @@ nlohmann::json reportJson(const RunInfo& r) {
       {"item_resolution", r.itemResolution},
       {"item_triangles", r.itemTriangles},
       {"shoot_level", r.shootLevel},
+      {"refine_near", r.refineNear},
       {"shooters_per_pass", r.shootersPerPass},
       {"importance_shots", r.importanceShots},
       {"delivery_shots", r.deliveryShots},

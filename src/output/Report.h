@@ -17,6 +17,7 @@ struct RunInfo {
   std::string projection, preset;
   double texelSize = 0;
   int itemSubdivision = 0, itemResolution = 0, shootLevel = 0, shootersPerPass = 0;
+  double refineNear = 0;  // progressive: receivers nearer than this many shooter sides see its parts
   unsigned importanceShots = 0;  // importance-driven solves
   unsigned deliveryShots = 0;    // perspective-driven solves: item buffers that delivered stored entries
   unsigned fovDecayShots = 0;    // ... and their decay interval

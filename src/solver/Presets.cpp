@@ -37,9 +37,10 @@ const std::vector<Preset>& presets() {
 }
 
 std::string presetFlags(const ItemPlan& plan) {
-  return fmt::format("--hemisphere {} --item-subdiv {} --item-res {} --shoot-level {}", projectionName(plan.projection),
-                     plan.itemSubdivision, setting(plan.itemResolution, kAutoItemResolution),
-                     setting(plan.shootLevel, kAutoShootLevel));
+  return fmt::format("--hemisphere {} --item-subdiv {} --item-res {} --shoot-level {} --refine-near {:g}",
+                     projectionName(plan.projection), plan.itemSubdivision,
+                     setting(plan.itemResolution, kAutoItemResolution), setting(plan.shootLevel, kAutoShootLevel),
+                     plan.refineNear);
 }
 
 std::string presetNames() {
@@ -66,6 +67,7 @@ std::string presetLabel(std::string_view chosen, const ItemPlan& actual) {
   differs(actual.itemResolution != plan.itemResolution,
           "--item-res " + setting(actual.itemResolution, kAutoItemResolution));
   differs(actual.shootLevel != plan.shootLevel, "--shoot-level " + setting(actual.shootLevel, kAutoShootLevel));
+  differs(actual.refineNear != plan.refineNear, fmt::format("--refine-near {:g}", actual.refineNear));
   return label + with;
 }
 

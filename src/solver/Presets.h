@@ -19,6 +19,7 @@ struct ItemPlan {
   int itemSubdivision;  // item-mesh 1-to-4 splits
   int itemResolution;   // pixels a side; kAutoItemResolution: planned from the element size
   int shootLevel;       // 2^k x 2^k texel shooter blocks; kAutoShootLevel: planned from the scene
+  double refineNear;    // a receiver nearer a shooter than this many times its side sees it part by part (0: off)
   bool operator==(const ItemPlan&) const = default;
 };
 
@@ -30,19 +31,20 @@ struct Preset {
 };
 
 // The exact fast plan: hemicube item buffers at item-mesh level 0 (straight edges, so exact),
-// planned shooter blocks and resolution.
-inline constexpr ItemPlan kFastPlan{Projection::Hemicube, 0, kAutoItemResolution, kAutoShootLevel};
+// planned shooter blocks and resolution. Near-shooter refinement (--refine-near) is not in it: it
+// halves the blocks' error for 2-7x the time on llvmpipe (docs/design.md#near-shooter-refinement).
+inline constexpr ItemPlan kFastPlan{Projection::Hemicube, 0, kAutoItemResolution, kAutoShootLevel, 0.0};
 // Seed 003's configuration, the default until issue 30: orthographic hemisphere, L3, 512^2, level 1.
-inline constexpr ItemPlan kSeed003Plan{Projection::Orthographic, 3, 512, 1};
+inline constexpr ItemPlan kSeed003Plan{Projection::Orthographic, 3, 512, 1, 0.0};
 // Element-by-element shooting with a large exact item buffer: the reference the others are measured against.
-inline constexpr ItemPlan kReferencePlan{Projection::Hemicube, 0, 1024, 0};
+inline constexpr ItemPlan kReferencePlan{Projection::Hemicube, 0, 1024, 0, 0.0};
 
 inline constexpr std::string_view kDefaultPreset = "fast";
 
 const std::vector<Preset>& presets();  // `fast` (the default) first
 // The preset of that name; InputError naming the presets otherwise.
 const Preset& findPreset(std::string_view name);
-// "--hemisphere hemicube --item-subdiv 0 --item-res auto --shoot-level auto": the flags a plan sets.
+// "--hemisphere hemicube --item-subdiv 0 --item-res auto --shoot-level auto --refine-near 0": the flags a plan sets.
 std::string presetFlags(const ItemPlan& plan);
 // "fast, seed003, reference", for messages.
 std::string presetNames();

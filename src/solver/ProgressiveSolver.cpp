@@ -13,6 +13,7 @@
 #include "gl/State.h"
 #include "src/solver/Control.h"
 #include "src/base/Error.h"
+#include "src/solver/Bvh.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
@@ -54,7 +55,9 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   if (settings.importanceDriven()) view_ = std::make_unique<ImportanceView>(state);
   gl::Defines gatherDefines = itemBuffer_->defines();
   gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
+  setUpRefinement(gatherDefines);
   gather_ = computeProgram("gather.comp", gatherDefines);
+  if (refinesNear()) gather_.set("refineNear", float(settings.refineNear));
   if (perspective) {
     perspective_ = std::make_unique<PerspectiveView>(
         state, nodes_, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep),
@@ -73,6 +76,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
 void ProgressiveSolver::setUpTree(const std::vector<ShooterBlock>& blocks, const gl::Defines& defines) {
   const ShooterTree tree = buildShooterTree(state_.atlas, blocks, settings_.splitDepth);
   blockCount_ = tree.blocks;
+  treeDepth_ = tree.depth;
   // The largest per-node table: refused before any upload when one storage block cannot hold it.
   gl::requireStorageBlock(tree.nodes.size() * kShapeStride * sizeof(glm::vec4),
                           fmt::format("the shapes of {} shooter-tree nodes", tree.nodes.size()));
@@ -115,6 +119,16 @@ void ProgressiveSolver::setUpReduction(unsigned keep, const gl::Defines& defines
   select_.set("importanceFloor", floor);
   select_.set("importanceThreshold", 1e-6f);
   select_.set("uniformRatio", float(settings_.uniformRatio));
+}
+
+// Receivers near a shooter get its parts one by one with exact visibility, traced through the
+// scene's BVH (shaders/refine_near.glsl); nothing to refine where blocks have no parts.
+void ProgressiveSolver::setUpRefinement(gl::Defines& gatherDefines) {
+  if (!refinesNear()) return;
+  const Bvh bvh(state_.scene);
+  bvhNodes_ = gl::Buffer(std::span<const BvhNode>(bvh.nodes()));
+  bvhTriangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh.triangles()));
+  gatherDefines.push_back({"REFINE_NEAR", "1"});
 }
 
 // The control block: stop rule, convergence history.
@@ -224,6 +238,12 @@ void ProgressiveSolver::gatherPass(Receivers receivers) {
   state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_WRITE);
   state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_READ_WRITE);
   itemBuffer_->bindForLookup(state_, control_, shapes_);
+  if (refinesNear()) {
+    nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODES);
+    nodeStats_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODE_STATS);
+    bvhNodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_NODES);
+    bvhTriangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
+  }
   gather_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
                         gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));

@@ -27,14 +27,15 @@ struct ProgressiveSettings {
   int itemResolution = kFastPlan.itemResolution;    // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
   Projection projection = kFastPlan.projection;
   int shootLevel = kFastPlan.shootLevel;            // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
-  std::string preset{kDefaultPreset};               // the preset the four above started from (the report names it)
-  ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel}; }
-  // Starts from preset `name` (InputError for an unknown name): its four values and its name.
+  double refineNear = kFastPlan.refineNear;         // receivers nearer than this many shooter sides see its parts (0: off)
+  std::string preset{kDefaultPreset};               // the preset the five above started from (the report names it)
+  ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel, refineNear}; }
+  // Starts from preset `name` (InputError for an unknown name): its five values and its name.
   void usePreset(std::string_view name) {
     const Preset& p = findPreset(name);
     preset = std::string(p.name);
     projection = p.plan.projection, itemSubdivision = p.plan.itemSubdivision;
-    itemResolution = p.plan.itemResolution, shootLevel = p.plan.shootLevel;
+    itemResolution = p.plan.itemResolution, shootLevel = p.plan.shootLevel, refineNear = p.plan.refineNear;
   }
   std::string presetLabel() const { return hemirad::presetLabel(preset, plan()); }
   // A block whose elements' unshot radiosity spans more than uniformRatio (least / largest
@@ -113,6 +114,8 @@ class ProgressiveSolver final : public Solver {
   void setUpTree(const std::vector<ShooterBlock>& blocks, const gl::Defines& defines);
   void setUpReduction(unsigned keep, const gl::Defines& defines);
   void setUpControl(const StopRule& stop, unsigned keep);
+  bool refinesNear() const { return settings_.refineNear > 0 && treeDepth_ > 0; }
+  void setUpRefinement(gl::Defines& gatherDefines);
   void selectPass(bool importanceOnly = false);  // the stats, then the rankings and choices
   void rankPass(Rank rank, bool importanceShooters);
   void gatherPass(Receivers receivers);
@@ -133,6 +136,8 @@ class ProgressiveSolver final : public Solver {
   gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
   std::size_t discShapes_ = 0;
   gl::Buffer shapes_;  // per node: its exact shape (shapeTable), what the gather integrates over
+  int treeDepth_ = 0;  // levels below the deepest block
+  gl::Buffer bvhNodes_, bvhTriangles_;  // the scene's BVH: exact visibility near shooters (refine_near.glsl)
   std::unique_ptr<ItemBuffer> itemBuffer_;
   std::unique_ptr<ImportanceView> view_;  // importance-driven solves only
   std::unique_ptr<PerspectiveView> perspective_;  // perspective-driven solves only

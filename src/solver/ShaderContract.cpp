@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "src/scene/Scene.h"
+#include "src/solver/ShooterTree.h"
 
 namespace hemirad {
 
@@ -16,6 +17,7 @@ const gl::Defines& contractDefines() {
     d.push_back({"SHOOTER_SLOTS", fmt::format("{}u", kShooterSlots)});
     d.push_back({"MAX_SHAPE_VERTICES", fmt::format("{}", kMaxShapeVertices)});
     d.push_back({"SHAPE_STRIDE", fmt::format("{}u", kShapeStride)});
+    d.push_back({"MAX_SPLIT_DEPTH", fmt::format("{}", kMaxSplitDepth)});
     // Shortest round-trip text: the literals the shaders held before, so the same floats.
     d.push_back({"LUMINANCE", fmt::format("vec3({}, {}, {})", kLuminanceWeights[0], kLuminanceWeights[1],
                                           kLuminanceWeights[2])});

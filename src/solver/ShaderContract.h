@@ -67,7 +67,8 @@ enum Slot : unsigned { HEMIRAD_BINDING_SLOTS(HEMIRAD_SLOT_ENUMERATOR) };
 #undef HEMIRAD_SLOT_ENUMERATOR
 }  // namespace slot
 
-// Limits: shaders get them as SHOOTER_SLOTS and MAX_SHAPE_VERTICES (SHAPE_STRIDE).
+// Limits: shaders get them as SHOOTER_SLOTS and MAX_SHAPE_VERTICES (SHAPE_STRIDE); and
+// MAX_SPLIT_DEPTH, the shooter tree's kMaxSplitDepth (src/solver/ShooterTree.h).
 inline constexpr unsigned kMaxPassShooters = 64;  // radiosity shooters a pass; as many importance ones
 inline constexpr unsigned kShooterSlots = 2 * kMaxPassShooters;  // control.glsl's shooter array
 // A convex polygon of <= 8 sides cut by a block's rectangle (formfactor.glsl, texel_shape.glsl).

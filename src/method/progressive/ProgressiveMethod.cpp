@@ -30,6 +30,7 @@ class ProgressiveRun final : public AtlasRun {
     run.itemSubdivision = settings_.itemSubdivision;
     run.itemResolution = solver_.plan().itemResolution;
     run.shootLevel = settings_.shootLevel;
+    run.refineNear = settings_.refineNear;
     run.shootersPerPass = settings_.shootersPerPass;
     run.importanceShots = solver_.importanceShots();
     run.deliveryShots = solver_.deliveryShots();
@@ -78,6 +79,7 @@ class ProgressiveMethod final : public AtlasMethod {
             bindFlag("--item-res", p.itemResolution, options::defaultText("--item-res")),
             projectionFlag(p.projection),
             bindFlag("--shoot-level", p.shootLevel, options::defaultText("--shoot-level")),
+            bindFlag("--refine-near", p.refineNear, options::defaultText("--refine-near")),
             bindFlag("--algorithm", p.algorithm),
             bindFlag("--fov-decay", p.fovDecayShots),
             bindFlag("--shooters-per-pass", p.shootersPerPass),
@@ -99,6 +101,7 @@ class ProgressiveMethod final : public AtlasMethod {
                                {"item_resolution", p.itemResolution},
                                {"projection", projectionName(p.projection)},
                                {"shoot_level", p.shootLevel},
+                               {"refine_near", p.refineNear},
                                {"shooters_per_pass", p.shootersPerPass}};
     if (p.algorithm == Algorithm::Perspective) identity["fov_decay"] = p.fovDecayShots;  // 0: the default
     return identity;
