@@ -68,7 +68,7 @@ void Commands::addSolve() {
   add(s, "--height", solve.height);
   add(s, "--supersample", solve.supersample);
   add(s, "--exposure", solve.exposure);
-  add(s, "--ambient", solve.ambient);
+  add(s, "--ambient", solve.ambient, "off; on for --camera-path frames");
   addSolveOutputs(s);
   addWalkthrough(s);
 }

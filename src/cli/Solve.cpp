@@ -132,7 +132,7 @@ std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene
   double scale = 1;
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
     Renderer renderer(state);
-    renderer.setAmbient(o.ambient && run.ambient());
+    renderer.setAmbient(o.ambient.value_or(false) && run.ambient());
     view = renderer.render(camera, o.width, o.height, o.supersample);
     scale = exposureScale(view, o.exposure);
   }

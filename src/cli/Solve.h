@@ -1,10 +1,10 @@
 // `hemirad solve` and `hemirad info`: the commands, apart from flag parsing (src/cli/main.cpp).
 #pragma once
-#include "src/base/OutputPaths.h"
 #include <optional>
 #include <string>
 
 #include "gl/Backend.h"
+#include "src/base/OutputPaths.h"
 #include "src/method/MethodUnit.h"
 #include "src/output/Image.h"
 #include "src/scene/Atlas.h"
@@ -24,7 +24,9 @@ struct SolveOptions {
   std::optional<std::string> camera;
   int width = 512, height = 512, supersample = 2;
   double exposure = 0;  // stops over the automatic exposure
-  bool ambient = true;  // seed 004's ambient term on the camera images (never on B, report, atlas, PLY)
+  // Seed 004's ambient term on the camera images (never on B, report, atlas, PLY): a preview's device,
+  // so on for --camera-path frames and off for a solve's own images unless given (issue 31).
+  std::optional<bool> ambient;
   std::string out, image, atlas, ply, report;
   std::string gltf;  // OUT.glb, with OUT.lightmap.exr and OUT.lightmap.png beside it
   std::string checkpoint;           // written every checkpointEvery shots, at the end and on SIGINT/SIGTERM

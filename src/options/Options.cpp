@@ -237,8 +237,9 @@ std::vector<Flag> deviceAndOutputFlags() {
       {"--exposure", "STOPS", "Exposure in stops over the automatic one", any},
       {"--ambient", "on|off",
        "Seed 004's ambient term R x (area-averaged unshot radiosity; weighted by received importance in importance- "
-       "and perspective-driven solves) x rho on camera images; never in B, the report, the atlas or the PLY, nor "
-       "with --method stochastic (nothing is unshot)",
+       "and perspective-driven solves) x rho on camera images: a preview's estimate of the light not yet shot, so on "
+       "in view, walkthrough and experiment frames and off for a solve's images; never in B, the report, the atlas "
+       "or the PLY, nor with --method stochastic (nothing is unshot)",
        oneOf(std::map<std::string, bool>{{"on", true}, {"off", false}}, "on|off"), "on"},
       // Outputs.
       {"--out", "FILE", "Camera render: linear (.exr), or tone-mapped like --image (.png)", none},

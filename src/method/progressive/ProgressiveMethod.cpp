@@ -53,7 +53,7 @@ int ProgressiveRun::walkthrough(const SolveOptions& o, const Scene& scene, const
                                 const Camera& camera) {
   const CameraPath path = readCameraPath(o.cameraPath, camera, scene.unitScale);
   WalkthroughOptions w = o.walkthrough;
-  w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient, w.exposure = o.exposure;
+  w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient.value_or(true), w.exposure = o.exposure;
   w.writeFrame = writePng;
   w.progress = o.progress;
   ConvergedViews converged(scene, atlas, settings_, o.referenceConvergence, o.progress);
