@@ -315,7 +315,8 @@ std::vector<Flag> frameAndCommandFlags() {
       // reference and compare (issue 31, docs/reference.md).
       {"--spp", "N",
        "Reference: paths per pixel over all batches, a multiple of --batches; the standard error falls as "
-       "1/sqrt(N) (the Cornell box at 128^2: about a second per 256 on llvmpipe, docs/reference.md)",
+       "1/sqrt(N) (the Cornell box at 128^2 on 2 llvmpipe cores: 6 s at 16, 23 s at 64 with 7 % noise a pixel, "
+       "docs/reference.md#speed)",
        CLI::Range(1u, 1u << 24)},
       {"--batches", "K", "Reference: independent batches, whose spread gives each pixel's standard error",
        CLI::Range(2u, 1024u)},
