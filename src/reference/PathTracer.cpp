@@ -45,11 +45,10 @@ PathTracer::PathTracer(const Scene& scene) : bvh_(scene), program_(computeProgra
   program_.set("totalPower", float(power));
 }
 
-BatchSums PathTracer::render(const Camera& camera, const ReferenceSettings& s,
-                             const std::function<void(unsigned)>& done) {
+void PathTracer::render(const Camera& camera, const ReferenceSettings& s, const BatchConsumer& consume) {
   checkReferenceSettings(s);
   const std::size_t pixels = std::size_t(s.width) * s.height;
-  BatchSums out{s.width, s.height, s.batches, s.samples / s.batches, std::vector<glm::vec3>(pixels * s.batches)};
+  const unsigned perBatch = s.samples / s.batches;
   const Camera::PixelRays rays = camera.pixelRays(s.width, s.height);
   gl::Buffer sums(pixels * sizeof(glm::vec4));
   polygons_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGONS);
@@ -69,18 +68,16 @@ BatchSums PathTracer::render(const Camera& camera, const ReferenceSettings& s,
   std::vector<glm::vec4> batch(pixels);
   for (unsigned b = 0; b < s.batches; ++b) {
     sums.clear(0.0f);
-    for (unsigned i = 0; i < out.samplesPerBatch; i += kSamplesPerDispatch) {
-      program_.set("firstSample", b * out.samplesPerBatch + i);
-      program_.set("samples", std::min(kSamplesPerDispatch, out.samplesPerBatch - i));
+    for (unsigned i = 0; i < perBatch; i += kSamplesPerDispatch) {
+      program_.set("firstSample", b * perBatch + i);
+      program_.set("samples", std::min(kSamplesPerDispatch, perBatch - i));
       gl::dispatchLinear(gl::groupsFor(unsigned(pixels), 64));
       gl::barrier(gl::Barrier::Storage);
     }
     gl::barrier(gl::Barrier::BufferUpdate);
     sums.read(0, pixels * sizeof(glm::vec4), batch.data());
-    for (std::size_t p = 0; p < pixels; ++p) out.sums[b * pixels + p] = glm::vec3(batch[p]);
-    if (done) done(b);
+    consume(batch);
   }
-  return out;
 }
 
 }  // namespace hemirad

@@ -23,12 +23,8 @@ struct ReferenceSettings {
   int width = 128, height = 128;
 };
 
-// Per batch, per pixel (rows top-down) the sum of that batch's samples / batches paths.
-struct BatchSums {
-  int width = 0, height = 0;
-  unsigned batches = 0, samplesPerBatch = 0;
-  std::vector<glm::vec3> sums;  // batch-major: sums[b * width * height + pixel]
-};
+// Called after each batch with its per-pixel sums (rows top-down) of samples / batches paths.
+using BatchConsumer = std::function<void(const std::vector<glm::vec4>& sums)>;
 
 // Throws InputError for a batch count that does not divide the samples (before any work).
 void checkReferenceSettings(const ReferenceSettings& settings);
@@ -36,9 +32,8 @@ void checkReferenceSettings(const ReferenceSettings& settings);
 class PathTracer {
  public:
   explicit PathTracer(const Scene& scene);
-  // `done(batch)` is called after each batch (progress; it may throw to stop).
-  BatchSums render(const Camera& camera, const ReferenceSettings& settings,
-                   const std::function<void(unsigned)>& done = {});
+  // Hands each batch's sums to `consume` as it finishes (BatchStatistics.h adds them up).
+  void render(const Camera& camera, const ReferenceSettings& settings, const BatchConsumer& consume);
 
  private:
   Bvh bvh_;

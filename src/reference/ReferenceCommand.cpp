@@ -44,7 +44,10 @@ int runReference(const ReferenceOptions& o) {
   auto backend = gl::createBackend(o.backend);
   const auto t0 = std::chrono::steady_clock::now();
   PathTracer tracer(scene);
-  const ReferenceEstimate e = estimate(tracer.render(camera, o.settings));
+  const ReferenceSettings& s = o.settings;
+  BatchStatistics statistics(s.width, s.height, s.samples / s.batches);
+  tracer.render(camera, s, [&](const std::vector<glm::vec4>& sums) { statistics.add(sums); });
+  const ReferenceEstimate e = statistics.estimate();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   OutputBatch outputs;
   const double scale = exposureScale(e.mean, o.exposure);
@@ -52,7 +55,6 @@ int runReference(const ReferenceOptions& o) {
   if (!o.standardError.empty()) outputs.add("--stderr", o.standardError, encodeExr(e.standardError));
   if (!o.image.empty()) outputs.add("--image", o.image, encodePng(e.mean, scale));
   outputs.commit();
-  const ReferenceSettings& s = o.settings;
   fmt::print(stderr,
              "hemirad: reference: {} x {} px, {} paths per pixel ({} batches of {}, seed {}) in {:.2f} s on {}; mean B "
              "{:.6g}, mean standard error {:.4g} ({:.3f} % of it)\n",
