@@ -191,4 +191,6 @@ TEST_CASE("Bad reference and compare input is one error line and a nonzero exit 
   writeExr(small, Image{4, 4, std::vector<float>(48, 1.0f)});
   writeExr(large, Image{8, 8, std::vector<float>(192, 1.0f)});
   oneError("compare " + small + " " + large + " --scene " + furnace, "is 8 x 8 pixels, the images compared 4 x 4");
+  oneError("compare " + analyticScene("analytic.mtl") + " " + large + " --scene " + furnace,
+           "compare reads linear EXR images");
 }

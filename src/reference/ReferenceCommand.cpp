@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <filesystem>
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
@@ -65,6 +66,9 @@ int runReference(const ReferenceOptions& o) {
 }
 
 int runCompare(const CompareOptions& o) {
+  for (const std::string& path : {o.a, o.b, o.standardError})  // a PNG holds tone-mapped, not linear, light
+    if (!path.empty() && std::filesystem::path(path).extension() != ".exr")
+      throw InputError(path + ": compare reads linear EXR images (solve --out X.exr, reference --out X.exr)");
   std::vector<OutputPath> outputs;
   if (!o.errorMap.empty()) outputs.push_back({"--error-map", o.errorMap, {".png"}});
   if (!o.markdownOut.empty()) outputs.push_back({"--markdown", o.markdownOut, {".md"}, true});
