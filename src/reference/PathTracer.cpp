@@ -25,16 +25,8 @@ void checkReferenceSettings(const ReferenceSettings& s) {
 }
 
 PathTracer::PathTracer(const Scene& scene) : bvh_(scene), program_(computeProgram("reference.comp")) {
-  std::vector<GpuPolygon> table;
   std::vector<glm::vec4> vertices;
-  for (const ScenePolygon& p : scene.polygons()) {
-    const Material& m = scene.materials[p.material];
-    table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
-                     glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
-                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), 0, 0)});
-    for (const glm::dvec3& v : p.vertices) vertices.push_back(glm::vec4(glm::vec3(v), 1));
-  }
-  polygons_ = gl::Buffer(std::span<const GpuPolygon>(table));
+  polygons_ = gl::Buffer(std::span<const GpuPolygon>(gpuPolygonTable(scene, vertices)));
   polygonVertices_ = gl::Buffer(std::span<const glm::vec4>(vertices));
   nodes_ = gl::Buffer(std::span<const BvhNode>(bvh_.nodes()));
   triangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh_.triangles()));

@@ -29,6 +29,19 @@ double areaWeightedReflectance(const Scene& scene) {
 
 }  // namespace
 
+std::vector<GpuPolygon> gpuPolygonTable(const Scene& scene, std::vector<glm::vec4>& vertices) {
+  std::vector<GpuPolygon> table;
+  vertices.clear();
+  for (const ScenePolygon& p : scene.polygons()) {
+    const Material& m = scene.materials[p.material];
+    table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
+                     glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
+                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), 0, 0)});
+    for (const glm::dvec3& v : p.vertices) vertices.push_back(glm::vec4(glm::vec3(v), 1));
+  }
+  return table;
+}
+
 VplLevels planLevels(unsigned vpls, double rhoAvg, int bounces) {
   const int deepest = std::clamp(bounces, 0, kMaxVplLevels - 1);
   auto sum = [&](unsigned n) {
@@ -64,15 +77,8 @@ VplTracer::VplTracer(const Scene& scene, const InstantSettings& settings)
   rhoAvg_ = areaWeightedReflectance(scene);
   levels_ = planLevels(settings.vpls, rhoAvg_, settings.bounces);
   diagonal_ = glm::length(scene.boundsMax() - scene.boundsMin());
-  std::vector<GpuPolygon> table;
   std::vector<glm::vec4> vertices;
-  for (const ScenePolygon& p : scene.polygons()) {
-    const Material& m = scene.materials[p.material];
-    table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
-                     glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
-                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), 0, 0)});
-    for (const glm::dvec3& v : p.vertices) vertices.push_back(glm::vec4(glm::vec3(v), 1));
-  }
+  const std::vector<GpuPolygon> table = gpuPolygonTable(scene, vertices);
   polygonVertices_ = gl::Buffer(std::span<const glm::vec4>(vertices));
   const std::vector<GpuEmitter> emitters = emitterTable(scene, emitted_, "--method instant");
   emitters_ = unsigned(emitters.size());
