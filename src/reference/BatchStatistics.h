@@ -24,6 +24,7 @@ class BatchStatistics {
   BatchStatistics(int width, int height, unsigned samplesPerBatch);
   void add(const std::vector<glm::vec4>& sums);  // one batch's per-pixel sums of its paths
   ReferenceEstimate estimate() const;             // needs two batches
+  unsigned batches() const { return batches_; }
 
  private:
   int width_, height_;

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <filesystem>
 
+#include <unistd.h>
+
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
 #include "src/base/OutputPaths.h"
@@ -47,7 +49,13 @@ int runReference(const ReferenceOptions& o) {
   PathTracer tracer(scene);
   const ReferenceSettings& s = o.settings;
   BatchStatistics statistics(s.width, s.height, s.samples / s.batches);
-  tracer.render(camera, s, [&](const std::vector<glm::vec4>& sums) { statistics.add(sums); });
+  const bool terminal = isatty(STDERR_FILENO);  // a batch counter for long runs, never in logs
+  tracer.render(camera, s, [&](const std::vector<glm::vec4>& sums) {
+    statistics.add(sums);
+    if (terminal)
+      fmt::print(stderr, "\rhemirad: reference: batch {} of {}", statistics.batches(), s.batches);
+  });
+  if (terminal) fmt::print(stderr, "\n");
   const ReferenceEstimate e = statistics.estimate();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   OutputBatch outputs;
