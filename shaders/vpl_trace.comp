@@ -10,15 +10,9 @@ layout(local_size_x = 64) in;
 #include "scene.glsl"
 #include "bvh.glsl"
 #include "vpl.glsl"
+#include "emitters.glsl"
 #include "linear_group.glsl"
 
-struct Emitter {
-  vec4 v0;    // w: cumulative power fraction up to and including this triangle
-  vec4 e1;    // w (uint bits): polygon id
-  vec4 e2;
-  vec4 flux;  // rgb: E W / lum(E), a light sample's flux times n[0] (W: total lum(E) A)
-};
-layout(std430, binding = SSBO_EMITTERS) readonly buffer Emitters { Emitter emitter[]; };
 struct PathEnd {
   vec4 escaped;  // rgb flux that left the scene; a: 1 if it did
   vec4 behind;   // rgb flux that hit a polygon's back (black) side; a: 1 if it did
@@ -28,17 +22,7 @@ layout(std430, binding = SSBO_PATH_ENDS) writeonly buffer PathEnds { PathEnd pat
 const int MAX_LEVELS = 16;
 uniform uint levelCount[MAX_LEVELS];   // n[j]: paths that reach level j (0 after the last)
 uniform uint levelOffset[MAX_LEVELS];  // first VPL slot of level j
-uniform uint emitterCount;
 uniform uint seed;
-
-uint pickEmitter(float u) {
-  uint lo = 0u, hi = emitterCount - 1u;
-  while (lo < hi) {
-    uint mid = (lo + hi) / 2u;
-    if (emitter[mid].v0.w > u) hi = mid; else lo = mid + 1u;
-  }
-  return lo;
-}
 
 vec3 cosineDirection(vec3 n, uint path, uint level) {
   float u1 = uniformDraw(seed, path, level, 2u), u2 = uniformDraw(seed, path, level, 3u);

@@ -50,6 +50,8 @@ Commands::Commands() {
   addComparison();
   addAnimation();
   addVplError();
+  addReference();
+  addCompare();
 
   docsCmd = app.add_subcommand("docs", "Print docs/cli.md (this command line as markdown)")->group("");
   docsCmd->add_option("what", docs, "cli")->required()->check(CLI::IsMember({"cli"}));
@@ -245,6 +247,47 @@ void Commands::addVplError() {
   add(c, "--gpu", v.backend.gpu);
 }
 
+void Commands::addReference() {
+  CLI::App* r = referenceCmd = app.add_subcommand(
+      "reference", "Path-trace the camera view unbiased, in B units as solve's --out, with per-pixel standard errors "
+                   "from independent batches (docs/reference.md)");
+  ReferenceOptions& o = reference;
+  r->add_option("scene", o.scene, "Wavefront OBJ (materials from its MTL) or glTF 2.0 (.gltf, .glb)")
+      ->required()
+      ->type_name("SCENE")
+      ->transform(CLI::Validator([](std::string& path) { return path = findScene(path), std::string(); }, "", "shipped"))
+      ->check(CLI::ExistingFile);
+  add(r, "--emission", o.load.emission);
+  add(r, "--spp", o.settings.samples);
+  add(r, "--batches", o.settings.batches);
+  add(r, "--seed", o.settings.seed);
+  add(r, "--camera", o.camera);
+  add(r, "--width", o.settings.width);
+  add(r, "--height", o.settings.height);
+  add(r, "--out", o.out)->required();
+  add(r, "--stderr", o.standardError);
+  add(r, "--image", o.image);
+  add(r, "--exposure", o.exposure);
+  add(r, "--backend", o.backend.kind);
+  add(r, "--gpu", o.backend.gpu);
+}
+
+void Commands::addCompare() {
+  CLI::App* c = compareCmd = app.add_subcommand(
+      "compare", "Relative luminance error of image A against image B (the reference) over surface interiors, edge "
+                 "and corner bands and each object, and an error map (docs/reference.md)");
+  CompareOptions& o = compare;
+  c->add_option("a", o.a, "The image judged (.exr)")->required()->type_name("A")->check(CLI::ExistingFile);
+  c->add_option("b", o.b, "The reference (.exr)")->required()->type_name("B")->check(CLI::ExistingFile);
+  add(c, "--scene", o.scene)->required();
+  add(c, "--emission", o.load.emission);
+  add(c, "--camera", o.camera);
+  add(c, "--stderr", o.standardError)->check(CLI::ExistingFile);
+  add(c, "--error-map", o.errorMap);
+  add(c, "--error-range", o.errorRange);
+  add(c, "--markdown", o.markdownOut);
+}
+
 // The chosen method with its own flags bound and checked.
 void Commands::settle() {
   if (!*solveCmd) return;
@@ -288,6 +331,8 @@ int Commands::run() {
     return runMethodComparison(comparison);
   }
   if (*vplErrorCmd) return runVplError(vplError);
+  if (*referenceCmd) return runReference(reference);
+  if (*compareCmd) return runCompare(compare);
   if (*animateCmd) {
     animation.stochastic.timings = gl::TimerMode::Off;
     return runAnimation(animation);

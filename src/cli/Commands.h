@@ -8,6 +8,7 @@
 #include "src/cli/Solve.h"
 #include "src/cli/SweepCommand.h"
 #include "src/method/MethodChoice.h"
+#include "src/reference/ReferenceCommand.h"
 #include "src/validate/Validate.h"
 #include "src/viewer/Viewer.h"
 #include "src/walk/Experiment.h"
@@ -38,6 +39,8 @@ struct Commands {
   AnimationOptions animation;
   VplErrorOptions vplError;
   SweepCommandOptions sweep;
+  ReferenceOptions reference;
+  CompareOptions compare;
 
  private:
   void addSolve();
@@ -52,6 +55,8 @@ struct Commands {
   void addComparison();
   void addAnimation();
   void addVplError();
+  void addReference();
+  void addCompare();
   int runSolve();
 
   // Flags read into text, turned into the options after parsing.
@@ -62,7 +67,7 @@ struct Commands {
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
            *experimentCmd = nullptr, *docsCmd = nullptr,
            *comparisonCmd = nullptr, *animateCmd = nullptr, *vplErrorCmd = nullptr, *mergeCmd = nullptr,
-           *runTaskCmd = nullptr;
+           *runTaskCmd = nullptr, *referenceCmd = nullptr, *compareCmd = nullptr;
   MethodChoice methods;                       // solve's --method, each with its own flags
   std::vector<CLI::Option*> viewInstantOnly;  // flags view takes for --method instant only
   std::vector<CLI::Option*> seed004Only;      // experiment's flags that mean nothing to a SPEC sweep

@@ -190,8 +190,8 @@ std::vector<Flag> sceneAndSolverFlags() {
                                                "iteration: K random texels an iteration (at most {})",
                                                kMaxPassShooters),
        CLI::Range(1, int(kMaxPassShooters))},
-      {"--seed", "N", "Random seed of stochastic iteration and instant radiosity: the same seed and backend give "
-       "bitwise the same result",
+      {"--seed", "N", "Random seed of stochastic iteration, instant radiosity and the path-traced reference: the "
+       "same seed and backend give bitwise the same result",
        CLI::Range(0u, 0xFFFFFFFFu)},
       {"--transport", "WHAT",
        "Stochastic iteration: what the random operator carries each iteration, the last iterate (a chain, "
@@ -318,6 +318,24 @@ std::vector<Flag> frameAndCommandFlags() {
       {"--atlas-sides", "N", "Stochastic iteration: a row per atlas side, the texel size chosen to fill it",
        CLI::Range(16, 16384)},
       {"--compare", "FILE", "Another bench JSON: print per-object differences to its matching rows", none},
+      // reference and compare (issue 31, docs/reference.md).
+      {"--spp", "N",
+       "Reference: paths per pixel over all batches, a multiple of --batches; the standard error falls as "
+       "1/sqrt(N) (the Cornell box at 128^2 on 2 llvmpipe cores: 6 s at 16, 23 s at 64 with 7 % noise a pixel, "
+       "docs/reference.md#speed)",
+       CLI::Range(1u, 1u << 24)},
+      {"--batches", "K", "Reference: independent batches, whose spread gives each pixel's standard error",
+       CLI::Range(2u, 1024u)},
+      {"--stderr", "FILE",
+       "The reference's per-pixel standard error of B (.exr): reference writes it, compare reads image B's (a noise "
+       "column)",
+       none},
+      {"--scene", "SCENE", "The scene both images show: its edges and creases, traced from --camera, give the regions",
+       kScene},
+      {"--error-map", "FILE", "The signed relative error per pixel (.png): red where A is brighter, blue darker",
+       none},
+      {"--error-range", "F", "The error map's full colour: a relative error of F",
+       number([](double x) { return x > 0; }, "> 0", "must be above 0")},
       {"--ceiling", "",
        "Also measure the device's ceilings (load-store invocations/s, item-buffer triangles/s) and print each "
        "throughput as a fraction of them",

@@ -36,6 +36,7 @@
   X(SSBO_EMITTERS, 22)            /* vpl_trace.comp */                                                   \
   X(SSBO_VPLS, 23)                /* vpl.glsl */                                                         \
   X(SSBO_PATH_ENDS, 24)           /* vpl_trace.comp */                                                   \
+  X(SSBO_REFERENCE_SUMS, 25)      /* reference.comp: per pixel its batch's path sums */                  \
   X(SSBO_PROBE_IN, 0)             /* the *_probe.comp test kernels: inputs */                            \
   X(SSBO_PROBE_OUT, 1)            /* and outputs */                                                      \
   X(SSBO_PROBE_POINTS, 2)         /* projection_probe.comp: item-buffer points */                        \

@@ -6,16 +6,12 @@
 #include "gl/Limits.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
+#include "src/solver/EmitterTable.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
 namespace {
-
-struct GpuEmitter {
-  glm::vec4 v0, e1, e2, flux;
-};
-static_assert(sizeof(GpuEmitter) == 64);
 
 struct GpuPathEnd {
   glm::vec4 escaped, behind;
@@ -31,34 +27,20 @@ double areaWeightedReflectance(const Scene& scene) {
   return area > 0 ? std::clamp(sum / area, 0.0, 1.0) : 0.0;
 }
 
-// Emitter triangles with their cumulative power fraction; `power` gets W, the total lum(E) A.
-std::vector<GpuEmitter> emitterTable(const Scene& scene, double& power) {
-  std::vector<GpuEmitter> table;
-  std::vector<double> weight;
-  for (std::uint32_t id = 0; id < scene.polygons().size(); ++id) {
-    const ScenePolygon& p = scene.polygons()[id];
-    const glm::dvec3 E = scene.materials[p.material].emission;
-    if (luminance(E) <= 0) continue;
-    for (std::size_t k = 1; k + 1 < p.vertices.size(); ++k) {
-      const glm::dvec3 a = p.vertices[0], b = p.vertices[k], c = p.vertices[k + 1];
-      table.push_back({glm::vec4(glm::vec3(a), 0), glm::vec4(glm::vec3(b - a), uintBitsToFloat(id)),
-                       glm::vec4(glm::vec3(c - a), 0), glm::vec4(glm::vec3(E / luminance(E)), 0)});
-      weight.push_back(luminance(E) * 0.5 * glm::length(glm::cross(b - a, c - a)));
-    }
-  }
-  if (table.empty()) throw InputError("--method instant needs an emitter: no polygon's material emits");
-  power = 0;
-  for (double w : weight) power += w;
-  double cumulative = 0;
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    cumulative += weight[i];
-    table[i].v0.w = i + 1 == table.size() ? 2.0f : float(cumulative / power);  // the last catches u ~ 1
-    table[i].flux *= float(power);
+}  // namespace
+
+std::vector<GpuPolygon> gpuPolygonTable(const Scene& scene, std::vector<glm::vec4>& vertices) {
+  std::vector<GpuPolygon> table;
+  vertices.clear();
+  for (const ScenePolygon& p : scene.polygons()) {
+    const Material& m = scene.materials[p.material];
+    table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
+                     glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
+                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), 0, 0)});
+    for (const glm::dvec3& v : p.vertices) vertices.push_back(glm::vec4(glm::vec3(v), 1));
   }
   return table;
 }
-
-}  // namespace
 
 VplLevels planLevels(unsigned vpls, double rhoAvg, int bounces) {
   const int deepest = std::clamp(bounces, 0, kMaxVplLevels - 1);
@@ -95,17 +77,10 @@ VplTracer::VplTracer(const Scene& scene, const InstantSettings& settings)
   rhoAvg_ = areaWeightedReflectance(scene);
   levels_ = planLevels(settings.vpls, rhoAvg_, settings.bounces);
   diagonal_ = glm::length(scene.boundsMax() - scene.boundsMin());
-  std::vector<GpuPolygon> table;
   std::vector<glm::vec4> vertices;
-  for (const ScenePolygon& p : scene.polygons()) {
-    const Material& m = scene.materials[p.material];
-    table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
-                     glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
-                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), 0, 0)});
-    for (const glm::dvec3& v : p.vertices) vertices.push_back(glm::vec4(glm::vec3(v), 1));
-  }
+  const std::vector<GpuPolygon> table = gpuPolygonTable(scene, vertices);
   polygonVertices_ = gl::Buffer(std::span<const glm::vec4>(vertices));
-  const std::vector<GpuEmitter> emitters = emitterTable(scene, emitted_);
+  const std::vector<GpuEmitter> emitters = emitterTable(scene, emitted_, "--method instant");
   emitters_ = unsigned(emitters.size());
   polygons_ = gl::Buffer(std::span<const GpuPolygon>(table));
   nodes_ = gl::Buffer(std::span<const BvhNode>(bvh_.nodes()));

@@ -31,6 +31,8 @@ struct GpuPolygon {
   glm::uvec4 vertices;
 };
 static_assert(sizeof(GpuPolygon) == 64);
+// The table for every polygon of `scene` (chart 0: the tracers read no atlas), its vertices in `vertices`.
+std::vector<GpuPolygon> gpuPolygonTable(const Scene& scene, std::vector<glm::vec4>& vertices);
 
 struct InstantSettings {
   unsigned vpls = 256;    // VPL slots: exactly this many, over all levels

@@ -1,0 +1,29 @@
+// Where each pixel of a camera image lies relative to the scene's edges, for `hemirad compare`
+// (docs/reference.md#regions): the surface seen through each pixel centre, traced on the CPU
+// through the BVH (src/solver/Bvh.h) from the scene and camera the images were rendered with,
+// so any two images of that view can be compared, whoever rendered them. A surface is an
+// object's plane (a tessellated wall is one surface). A pixel's edge distance counts pixels
+// (Chebyshev) to the nearest pixel seeing another surface or nothing; its crease distance, to
+// the nearest such pixel across a concave crease: two surfaces meeting at an inside edge (the
+// room's corners, a block standing on the floor), where radiosity's discretisation errs most.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "src/scene/Camera.h"
+#include "src/scene/Scene.h"
+
+namespace hemirad {
+
+struct PixelRegions {
+  static constexpr int kEdgeReach = 4;    // edge distances are counted up to here
+  static constexpr int kCreaseReach = 3;  // crease distances up to here
+  static constexpr int kFar = 1 << 20;    // beyond the reach
+  int width = 0, height = 0;
+  std::vector<std::uint32_t> polygon;  // per pixel (rows top-down); kNoPolygon where none is seen
+  std::vector<int> edgeDistance, creaseDistance;
+};
+
+PixelRegions pixelRegions(const Scene& scene, const Camera& camera, int width, int height);
+
+}  // namespace hemirad

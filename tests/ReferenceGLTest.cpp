@@ -1,0 +1,196 @@
+// Issue 31's unbiased reference: `hemirad reference` reaches the furnace's exact B = 2 within its
+// own standard errors, the plates' and perpendicular squares' exact point form factors, and the
+// converged radiosity solution in surface interiors; a seed fixes its bytes; `hemirad compare`
+// prints known errors for images with known errors, per region; bad input is one error line.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <utility>
+
+#include "cpu/ExactFormFactor.h"
+#include "src/output/ImageFile.h"
+#include "src/reference/BatchStatistics.h"
+#include "src/reference/ErrorTable.h"
+#include "src/reference/PathTracer.h"
+#include "src/reference/PixelRegions.h"
+#include "src/scene/SceneLoader.h"
+#include "src/solver/Bvh.h"
+#include "tests/support/Support.h"
+
+using namespace hemirad;
+using Catch::Contains;
+
+namespace {
+
+std::string analyticScene(const std::string& name) { return test::sourcePath("scenes/analytic/" + name); }
+
+ReferenceEstimate referenceOf(const Scene& scene, const Camera& camera, int size, unsigned spp, unsigned seed = 7) {
+  test::backend();
+  ReferenceSettings s;
+  s.width = s.height = size, s.samples = spp, s.batches = 16, s.seed = seed;
+  BatchStatistics statistics(size, size, spp / s.batches);
+  PathTracer(scene).render(camera, s, [&](const std::vector<glm::vec4>& sums) { statistics.add(sums); });
+  return statistics.estimate();
+}
+
+double pixelLum(const Image& image, std::size_t p) {
+  return hemirad::luminance(glm::dvec3(image.rgb[3 * p], image.rgb[3 * p + 1], image.rgb[3 * p + 2]));
+}
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int countOf(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t p = 0; (p = text.find(what, p)) != std::string::npos; p += what.size()) ++n;
+  return n;
+}
+
+// The reference against B = rho F(x -> emitter) at each receiver pixel centre in a surface
+// interior (exact: the emitter is black, so light makes one bounce); returns the largest
+// |difference| in standard errors and sets the mean relative difference.
+double exactReceiverCheck(const std::string& name, const std::optional<std::string>& cameraText, double& meanRelative) {
+  const Scene scene = loadScene(analyticScene(name));
+  const Camera camera = resolveCamera(scene, cameraText);
+  const int size = 48;
+  const ReferenceEstimate e = referenceOf(scene, camera, size, 256);
+  const PixelRegions regions = pixelRegions(scene, camera, size, size);
+  const Bvh bvh(scene);
+  const ScenePolygon& emitter = scene.polygons()[0];
+  const cpu::Polygon shape(emitter.vertices.begin(), emitter.vertices.end());
+  const Camera::PixelRays rays = camera.pixelRays(size, size);
+  double worst = 0, sum = 0;
+  int n = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const std::size_t p = std::size_t(y) * size + x;
+      if (regions.polygon[p] != 1 || regions.edgeDistance[p] < PixelRegions::kEdgeReach) continue;
+      const glm::dvec3 d = glm::normalize(rays.corner + (x + 0.5) * rays.dx + (size - 1 - y + 0.5) * rays.dy);
+      const glm::dvec3 hit = camera.eye + double(bvh.intersect(glm::vec3(camera.eye), glm::vec3(d), kNoPolygon)->t) * d;
+      const ScenePolygon& r = scene.polygons()[1];
+      const double exact = 0.5 * cpu::pointToPolygon(hit, r.normal, shape, emitter.normal);
+      worst = std::max(worst, std::abs(pixelLum(e.mean, p) - exact) / e.luminanceError[p]);
+      sum += (pixelLum(e.mean, p) - exact) / exact, ++n;
+    }
+  REQUIRE(n > 100);
+  meanRelative = sum / n;
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("The reference sees the furnace's exact B = 2 at every pixel within 6 standard errors and on average within 0.5 %", "[gl][reference]") {
+  const Scene scene = loadScene(analyticScene("furnace.obj"));
+  const ReferenceEstimate e = referenceOf(scene, resolveCamera(scene, std::nullopt), 64, 64);
+  double worst = 0;
+  for (std::size_t p = 0; p < e.luminanceError.size(); ++p) {
+    REQUIRE(e.luminanceError[p] > 0);
+    worst = std::max(worst, std::abs(pixelLum(e.mean, p) - 2.0) / e.luminanceError[p]);
+  }
+  INFO("mean " << e.meanLuminance << ", mean standard error " << e.meanStandardError);
+  CHECK(worst < 6.0);  // Student's t with 15 degrees of freedom: P(|t| > 6) ~ 2e-5 a pixel
+  CHECK(std::abs(e.meanLuminance - 2.0) < 0.01);
+}
+
+TEST_CASE("The reference matches the plates' and the perpendicular squares' exact point form factors in surface interiors", "[gl][reference]") {
+  // The plates' own camera sees them edge on: this one looks at the receiver from between them.
+  const std::pair<std::string, std::optional<std::string>> views[] = {
+      {"parallel_squares.obj", "eye=0.5,0.5,0.05 target=0.5,0.5,1 up=0,1,0 fov=70"}, {"perpendicular_squares.obj", {}}};
+  for (const auto& [name, view] : views) {
+    double meanRelative = 0;
+    const double worst = exactReceiverCheck(name, view, meanRelative);
+    INFO(name << ": worst " << worst << " standard errors, mean relative difference " << meanRelative);
+    CHECK(worst < 6.0);
+    CHECK(std::abs(meanRelative) < 0.005);
+  }
+}
+
+TEST_CASE("The reference and a converged radiosity solve of the perpendicular squares agree in surface interiors within the solver's error and the reference's noise", "[gl][reference]") {
+  const Scene scene = loadScene(analyticScene("perpendicular_squares.obj"));
+  const Camera camera = resolveCamera(scene, std::nullopt);
+  ProgressiveSettings settings;
+  settings.stop = {0, 0.999};
+  Discretisation elements;
+  elements.elements = 2500;  // a quarter of the default: the solve in a few seconds
+  const test::Solved solved = test::solve(scene, chooseTexelSize(scene, elements), settings, &camera);  // 128^2
+  const ReferenceEstimate e = referenceOf(scene, camera, 128, 256);
+  const PixelRegions regions = pixelRegions(scene, camera, 128, 128);
+  const std::vector<ErrorRow> rows = errorTable(scene, regions, solved.view, e.mean, e.standardError);
+  INFO(markdown(rows));
+  const ErrorRow& interior = rows.front();
+  REQUIRE(interior.pixels > 2000);
+  // The solver's interior error (hemicube form factors, bilinear B between element centres) is
+  // under 0.5 %; the reference's noise averages down over the interior's pixels (3 standard
+  // errors of their mean) or, per pixel, stays about its own size (E|e| = 0.8 sigma for a normal e).
+  CHECK(std::abs(interior.bias) < 0.005 + 3 * interior.noise / std::sqrt(double(interior.pixels)));
+  CHECK(interior.meanAbsolute < 0.005 + interior.noise);
+}
+
+TEST_CASE("A reference's bytes are fixed by its seed: the same seed writes identical files, another seed different ones", "[gl][reference][cli]") {
+  auto run = [](unsigned seed, const std::string& name) {
+    const std::string out = test::tempPath(name);
+    const test::Run r = test::hemirad("reference " + analyticScene("furnace.obj") + " --spp 32 --batches 4 --width 24 --height 24 --seed " +
+                                      std::to_string(seed) + " --out " + out + ".exr --stderr " + out + "_se.exr");
+    INFO(r.output);
+    REQUIRE(r.exitCode == 0);
+    return fileBytes(out + ".exr") + fileBytes(out + "_se.exr");
+  };
+  const std::string a = run(1, "seed1a"), b = run(1, "seed1b"), c = run(2, "seed2");
+  CHECK(a == b);
+  CHECK(a != c);
+}
+
+TEST_CASE("compare prints the known error of an image scaled by 1.01 in every region, and a bias put on the corner band lands there alone", "[gl][reference][cli]") {
+  const std::string scene = analyticScene("perpendicular_squares.obj");
+  const Scene loaded = loadScene(scene);
+  const int size = 64;
+  const PixelRegions regions = pixelRegions(loaded, resolveCamera(loaded, std::nullopt), size, size);
+  Image b{size, size, std::vector<float>(3 * size * size)}, a = b, cornered = b;
+  for (std::size_t p = 0; p < b.rgb.size() / 3; ++p)
+    for (int c = 0; c < 3; ++c) {
+      b.rgb[3 * p + c] = 0.25f + 0.001f * float(p % 97) + 0.1f * float(c);
+      a.rgb[3 * p + c] = b.rgb[3 * p + c] * 1.01f;
+      cornered.rgb[3 * p + c] = b.rgb[3 * p + c] * (regions.creaseDistance[p] == 1 ? 0.98f : 1.0f);
+    }
+  const std::string pa = test::tempPath("scaled.exr"), pb = test::tempPath("truth.exr"),
+                    pc = test::tempPath("cornered.exr"), map = test::tempPath("map.png");
+  writeExr(pa, a), writeExr(pb, b), writeExr(pc, cornered);
+  const test::Run r = test::hemirad("compare " + pa + " " + pb + " --scene " + scene + " --error-map " + map);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK(countOf(r.output, "| 1.000 % | 1.000 % | +1.000 % |") == 8);  // 3 bands, interior, edge, 2 objects, image
+  CHECK(std::ifstream(map).good());
+  const std::vector<ErrorRow> rows = errorTable(loaded, regions, cornered, b, Image{});
+  REQUIRE(rows[2].region == "corner band (1 px)");
+  REQUIRE(rows[2].pixels > 10);
+  CHECK(rows[2].bias == Approx(-0.02).margin(1e-6));
+  CHECK(rows[0].bias == 0.0);  // the interior
+  CHECK(rows[3].bias == 0.0);  // 2 px from the crease
+}
+
+TEST_CASE("Bad reference and compare input is one error line and a nonzero exit before any work", "[gl][reference][cli][bad-input]") {
+  const std::string furnace = analyticScene("furnace.obj"), out = test::tempPath("bad.exr");
+  auto oneError = [](const std::string& args, const std::string& message) {
+    const test::Run r = test::hemirad(args);
+    INFO("hemirad " << args << "\n" << r.output);
+    CHECK(r.exitCode == 2);
+    CHECK(countOf(r.output, "hemirad: error:") == 1);
+    CHECK_THAT(r.output, Contains(message));
+  };
+  oneError("reference " + furnace + " --spp 100 --batches 16 --out " + out, "not a multiple of --batches");
+  oneError("reference " + furnace + " --out " + out + " --stderr " + out, "give each output its own");
+  oneError("compare " + test::tempPath("missing.exr") + " " + out + " --scene " + furnace, "missing.exr");
+  const std::string small = test::tempPath("small.exr"), large = test::tempPath("large.exr");
+  writeExr(small, Image{4, 4, std::vector<float>(48, 1.0f)});
+  writeExr(large, Image{8, 8, std::vector<float>(192, 1.0f)});
+  oneError("compare " + small + " " + large + " --scene " + furnace, "is 8 x 8 pixels, the images compared 4 x 4");
+  oneError("compare " + analyticScene("analytic.mtl") + " " + large + " --scene " + furnace,
+           "compare reads linear EXR images");
+}
