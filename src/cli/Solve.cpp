@@ -192,8 +192,7 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   auto backend = gl::createBackend(o.backend);
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
-  Discretisation d = o.discretisation;
-  if (!chartsSpanPolygons() && d.chartAngle == 0) d.chartAngle = kPolygonCharts;
+  const Discretisation& d = o.discretisation;
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle);
   SolverState state(scene, atlas);
   const std::unique_ptr<AtlasRun> run = start(state);

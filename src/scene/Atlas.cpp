@@ -16,8 +16,6 @@ namespace hemirad {
 namespace {
 
 constexpr int kGutter = 1;
-// Cuts smaller than this fraction of a texel are numerical slivers, not elements.
-constexpr double kMinCutFraction = 1e-9;
 // Over any GPU's texture size; keeps cell counts far from int overflow (fuzzed slivers).
 constexpr double kMaxChartSide = 1 << 20;
 // Memory per atlas texel: four GPU textures (centre+area, polygon id, B, dB: 52 bytes, host memory

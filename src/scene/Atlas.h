@@ -17,6 +17,8 @@
 namespace hemirad {
 
 constexpr std::uint32_t kNoPolygon = 0xFFFFFFFFu;
+// Cuts smaller than this fraction of a texel are numerical slivers, not elements.
+inline constexpr double kMinCutFraction = 1e-9;
 
 struct Chart {
   int polygon = 0;            // its seed: the chart's material and object are this polygon's
