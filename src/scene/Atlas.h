@@ -47,7 +47,9 @@ class Atlas {
   // Per atlas texel: the polygon with the element's largest piece, or kNoPolygon (material and
   // object are per chart, so lookups through it are the element's).
   std::vector<std::uint32_t> polygonOf;
-  std::vector<glm::vec3> normalOf;          // per atlas texel: area-weighted mean piece normal
+  // Per atlas texel: area-weighted mean piece normal (on a curved chart, of the smooth normals at
+  // the pieces, src/scene/SmoothNormals.h).
+  std::vector<glm::vec3> normalOf;
   std::size_t elements = 0;
 
   // The chart of texel t, or kNoPolygon.
