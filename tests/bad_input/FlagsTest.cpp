@@ -60,7 +60,7 @@ TEST_CASE("Bad input: a bad preset name is one error line naming the presets, ex
                 {"--preset is for --method progressive, not stochastic"});
 }
 
-TEST_CASE("Bad input: --chart-angle over 60 is one error; stochastic iteration takes a chart of many polygons",
+TEST_CASE("Bad input: --chart-angle over 60 is one error, and stochastic iteration takes a chart of many polygons",
           "[cli][bad-input]") {
   // Two coplanar quads sharing an edge: one chart at any --chart-angle (a refusal before issue 29's curved charts).
   const std::string obj = writeScene("stochastic_charts", kQuad + "v 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n");
