@@ -2,13 +2,15 @@
 // cylinder, curved charts (--chart-angle 30) reconstruct radiosity without the steps a chart per
 // facet plane (--chart-angle 0) shows. Measured with Atlas::sample, the CPU twin of the camera
 // lookup (shaders/camera.frag), at points either side of facet edges against point pairs as far
-// apart inside the facets.
+// apart inside the facets. And across a seam between two charts of one flat floor, stitching
+// (src/output/SeamStitch.h) removes the jump each chart's own lookup leaves.
 #include <catch2/catch.hpp>
 
 #include <array>
 #include <cmath>
 #include <map>
 
+#include "src/output/SeamStitch.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
@@ -122,4 +124,60 @@ TEST_CASE("Curved charts show no faceting on a tessellated sphere and cylinder: 
     CHECK(c.edge < 1.5 * c.inside);
     CHECK(f.edge > 1.5 * f.inside);
   }
+}
+
+namespace {
+
+// A 2 x 1 floor (y = 0) as two 1 x 1 halves meeting at x = 1, one object (one chart) or two
+// objects of one material (two charts), under a 0.3 x 0.3 lamp off the seam (x 0.55 to 0.85):
+// the radiosity falls steeply across the seam.
+Scene splitFloor(bool twoCharts) {
+  Scene s;
+  const int grey = test::material(s, 0.5, 0.0), lamp = test::material(s, 0.0, 10.0);
+  const int left = s.addObject("left"), right = twoCharts ? s.addObject("right") : left, light = s.addObject("lamp");
+  const glm::dvec3 X(1, 0, 0), Z(0, 0, 1);
+  s.addPolygon(test::rectangle({0, 0, 0}, Z, X, 1, 1), grey, left);
+  s.addPolygon(test::rectangle({1, 0, 0}, Z, X, 1, 1), grey, right);
+  s.addPolygon(test::rectangle({0.55, 0.5, 0.35}, X, Z, 0.3, 0.3), lamp, light);  // faces down
+  return s;
+}
+
+// Mean luminance jump across x = 1 (points delta either side, z from 0.1 to 0.9), relative to
+// the mean luminance there.
+double seamJump(const Atlas& atlas, const std::vector<glm::vec4>& B, double delta) {
+  double jump = 0, level = 0;
+  for (int k = 0; k <= 40; ++k) {
+    const double z = 0.1 + 0.8 * k / 40;
+    const glm::dvec3 l(1 - delta, 0, z), r(1 + delta, 0, z);
+    const double a = luminance(glm::dvec3(atlas.sample(B, 0, atlas.atlasCoord(0, l)))),
+                 b = luminance(glm::dvec3(atlas.sample(B, 1, atlas.atlasCoord(1, r))));
+    jump += std::abs(a - b), level += 0.5 * (a + b);
+  }
+  return jump / level;
+}
+
+}  // namespace
+
+TEST_CASE("A floor cut into two charts jumps at the seam, and stitching the seam brings the jump to the single chart's",
+          "[gl][charts]") {
+  const double texel = 0.07, delta = 0.005;  // 0.07 does not divide 1: the two grids do not line up
+  ProgressiveSettings p;
+  p.shootLevel = 0, p.itemResolution = 128, p.projection = Projection::Hemicube, p.itemSubdivision = 0;
+  p.stop.targetConvergence = 0.99;
+  const Scene one = splitFloor(false), two = splitFloor(true);
+  const test::Solved a = test::solve(one, texel, p), b = test::solve(two, texel, p);
+  REQUIRE(a.atlas.chartOf[0] == a.atlas.chartOf[1]);
+  REQUIRE(b.atlas.chartOf[0] != b.atlas.chartOf[1]);
+  const double single = seamJump(a.atlas, a.B, delta), before = seamJump(b.atlas, b.B, delta);
+  const std::vector<glm::vec4> stitched = stitchSeams(two, b.atlas, b.B);
+  const double after = seamJump(b.atlas, stitched, delta);
+  // Stitching a single chart changes nothing: it has no seam.
+  const std::vector<glm::vec4> same = stitchSeams(one, a.atlas, a.B);
+  CHECK(same == a.B);
+  INFO("relative luminance jump across x = 1: one chart " << single << ", two charts " << before << ", stitched " << after);
+  CHECK(before > 3 * single);
+  CHECK(after < 1.5 * single + 1e-3);
+  // Far from the seam nothing moves.
+  for (std::size_t t = 0; t < b.B.size(); ++t)
+    if (b.atlas.polygonOf[t] != kNoPolygon && std::abs(b.atlas.positionArea[t].x - 1.0) > 2 * texel) CHECK(stitched[t] == b.B[t]);
 }

@@ -21,6 +21,7 @@
 #include "src/output/Progress.h"
 #include "src/output/Renderer.h"
 #include "src/output/Report.h"
+#include "src/output/SeamStitch.h"
 
 namespace hemirad {
 
@@ -127,18 +128,20 @@ int solveInBatches(const SolveOptions& o, const SolverState& state, Solver& solv
 // Returns the lightmap's line for stderr, printed once the files are written ("" without --gltf).
 std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene& scene, const Atlas& atlas,
                         const SolverState& state, const AtlasRun& run, const Camera& camera,
-                        const std::vector<glm::vec4>& B) {
+                        const std::vector<glm::vec4>& solved) {
   Image view;
   double scale = 1;
+  const std::vector<glm::vec4> B = stitchSeams(scene, atlas, solved);  // what is shown: seams agree
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
     Renderer renderer(state);
+    renderer.show(B);
     renderer.setAmbient(o.ambient && run.ambient());
     view = renderer.render(camera, o.width, o.height, o.supersample);
     scale = exposureScale(view, o.exposure);
   }
   if (!o.out.empty()) outputs.add("--out", o.out, encodeRender(o.out, view, scale));
   if (!o.image.empty()) outputs.add("--image", o.image, encodePng(view, scale));
-  if (!o.atlas.empty()) outputs.add("--atlas", o.atlas, encodeExr(atlasImage(atlas, B)));
+  if (!o.atlas.empty()) outputs.add("--atlas", o.atlas, encodeExr(atlasImage(atlas, solved)));  // the elements' own
   if (!o.ply.empty()) outputs.add("--ply", o.ply, encodePly(scene, atlas, B, scale));
   if (!o.gltf.empty()) {
     const GltfPaths files = gltfPaths(o.gltf);
