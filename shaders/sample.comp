@@ -3,7 +3,7 @@
 // (sum of the four) from a fresh counter-based draw, so it ends at texel j with probability
 // P_j = lum(B_j) A_j / Phi. It then fills control slot k as a one-texel shooter with
 // shot = B_j / (P_j K): the K shots' sum is an unbiased estimate of T B (eq. 3), and its
-// shape (the texel's element) in SSBO_SHOOTER_SHAPES slot k for the exact form factor.
+// shape (the texel's element, its pieces) in SSBO_SHOOTER_SHAPES slot k for the exact form factor.
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "control.glsl"
@@ -14,7 +14,7 @@
 
 layout(local_size_x = 64) in;
 layout(binding = IMAGE_RADIOSITY, rgba32f) readonly uniform image2D radiosity;
-uniform uint seed, iteration, shooters, topLevel;
+uniform uint seed, iteration, shooters, topLevel, atlasWidth;
 
 // The leaf texel reached from the root by shooter k's draws.
 uvec2 descend(uint k) {
@@ -48,16 +48,14 @@ void main() {
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
   bool none = phi <= 0.0 || leaf <= 0.0 || polygon == NO_POLYGON;  // a scene without light
   control.shooter[k].positionArea = pa;
-  control.shooter[k].normal = vec4(none ? vec3(0.0, 0.0, 1.0) : polygons[polygon].normal.xyz, 0.0);
+  // The element's mean normal: a texel of a curved chart spans polygons (a polygon's own otherwise).
+  control.shooter[k].normal = vec4(none ? vec3(0.0, 0.0, 1.0) : texelFetch(atlasNormal, t, 0).xyz, 0.0);
   control.shooter[k].shot = none ? vec4(0.0) : vec4(imageLoad(radiosity, t).rgb * (phi / (leaf * float(shooters))), 0.0);
   control.shooter[k].rect = ivec4(t, 1, 1);
   control.shooter[k].polygon = none ? NO_POLYGON : polygon;
   control.shooter[k].power = none ? 0.0 : leaf / phi;  // P_j
   control.shooter[k].block = k;
   control.shooter[k].shape = k;  // its shape: slot k of SSBO_SHOOTER_SHAPES
-  vec3 shape[CLIP_VERTICES];
-  for (int i = 0; i < CLIP_VERTICES; ++i) shape[i] = vec3(0.0);
-  int n = none ? 0 : texelShape(polygon, t, shape);
-  shooterShape[k * SHAPE_STRIDE] = vec4(float(n), 0.0, 0.0, 0.0);
-  for (int i = 0; i < MAX_SHAPE_VERTICES; ++i) shooterShape[k * SHAPE_STRIDE + 1u + uint(i)] = vec4(shape[i], 1.0);
+  if (none) shooterShape[k * SHAPE_STRIDE] = vec4(0.0);
+  else writeTexelShape(k, polygon, t, atlasWidth);
 }

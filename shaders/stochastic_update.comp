@@ -3,8 +3,9 @@
 // form factor to its element, give received = sum_k shot_k V F; then the iterate and the mean
 //   L <- emission E + rho received,  B <- (1 - weight) B + weight L.
 // weight 1/m keeps B the running mean of the iterates; weight 1 with emission 0 applies the
-// random operator once (the unbiasedness probe). Texels of a shooter's polygon receive nothing
-// from it (coplanar, F = 0), as in the dense reference.
+// random operator once (the unbiasedness probe). The shooter's own texel receives nothing from
+// it; the rest of its chart does (F = 0 on a plane, not on a concave curved chart), as in the
+// progressive gather.
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "control.glsl"
@@ -24,7 +25,7 @@ void main() {
   if (polygon == NO_POLYGON) return;
   vec3 received = vec3(0.0);
   for (uint s = 0u; s < control.count; ++s) {
-    if (control.shooter[s].polygon == NO_POLYGON || chartOf(control.shooter[s].polygon) == chartOf(polygon)) continue;
+    if (control.shooter[s].polygon == NO_POLYGON || inShooterBlock(s, t, polygon)) continue;
     bool facing;
     float visible;
     float F = shooterFormFactor(s, t, polygon, facing, visible);

@@ -170,6 +170,7 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   using options::add;
   add(cmd, "--scenes", o.scenes);
   add(cmd, "--elements", o.elements);
+  add(cmd, "--chart-angle", o.chartAngle, "0");
   add(cmd, "--converge", o.converge);
   options::addItemPlan(cmd, o.progressive);  // --preset, --hemisphere, --item-subdiv, --item-res, --shoot-level
   add(cmd, "--shooters-per-pass", o.shootersPerPass);
@@ -265,6 +266,7 @@ void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const
                                          {"backend", backend.name()},
                                          {"renderer", backend.renderer()},
                                          {"method", "stochastic"},
+                                         {"chart_angle", o.chartAngle},
                                          {"preset", o.progressive.presetLabel()},
                                          {"projection", projectionName(o.progressive.projection)},
                                          {"item_subdivision", o.progressive.itemSubdivision},
@@ -294,9 +296,9 @@ void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const ch
 // Time to convergence per scene, element count and shooters a pass, against the measured ceilings.
 template <class Say>
 void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
-  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, preset {}: shoot level {}, item mesh L{}, {} item buffer {}\n\n",
+  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, chart angle {}, preset {}: shoot level {}, item mesh L{}, {} item buffer {}\n\n",
                   date, backend.name(), backend.renderer(), algorithmName(o.progressive.algorithm), o.converge,
-                  o.progressive.presetLabel(),
+                  o.chartAngle, o.progressive.presetLabel(),
                   printedSetting(o.progressive.shootLevel, kAutoShootLevel), o.progressive.itemSubdivision, projectionName(o.progressive.projection),
                   printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
   Ceilings ceiling;
@@ -313,7 +315,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
     Scene scene = loadScene(path);
     validateSolvable(scene);
     for (std::size_t n : o.elements) {
-      Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, n), backend.maxTextureSize());
+      Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, n, o.chartAngle), backend.maxTextureSize(), 0, o.chartAngle);
       for (int k : o.shootersPerPass) {
         BenchRow r = benchOne(backend, scene, atlas, k, o);
         r.scene = path;
@@ -330,6 +332,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
                           {"renderer", backend.renderer()},
                           {"algorithm", algorithmName(o.progressive.algorithm)},
                           {"converge", o.converge},
+                          {"chart_angle", o.chartAngle},
                           {"preset", o.progressive.presetLabel()},
                           {"shoot_level", o.progressive.shootLevel},
                           {"item_subdivision", o.progressive.itemSubdivision},

@@ -24,19 +24,19 @@ struct StochasticRow {
 };
 
 // The finest texel size whose atlas fits `side` texels a side (bisection on the size).
-Atlas atlasFilling(const Scene& scene, int side, int maxTexture) {
-  double fits = texelSizeForElements(scene, 1000, kPolygonCharts), tooFine = fits;
+Atlas atlasFilling(const Scene& scene, int side, int maxTexture, double angle) {
+  double fits = texelSizeForElements(scene, 1000, angle), tooFine = fits;
   while (true) {
-    Atlas a = buildAtlas(scene, tooFine, maxTexture, 0, kPolygonCharts);
+    Atlas a = buildAtlas(scene, tooFine, maxTexture, 0, angle);
     if (std::max(a.width, a.height) > side) break;
     fits = tooFine, tooFine /= 2;
   }
   for (int k = 0; k < 12; ++k) {
     const double mid = 0.5 * (fits + tooFine);
-    Atlas a = buildAtlas(scene, mid, maxTexture, 0, kPolygonCharts);
+    Atlas a = buildAtlas(scene, mid, maxTexture, 0, angle);
     (std::max(a.width, a.height) > side ? tooFine : fits) = mid;
   }
-  return buildAtlas(scene, fits, maxTexture, 0, kPolygonCharts);
+  return buildAtlas(scene, fits, maxTexture, 0, angle);
 }
 
 // Runs to the solver's stop rule from B = E; returns the wall milliseconds (setup excluded).
@@ -101,7 +101,7 @@ nlohmann::json benchStochastic(gl::RenderBackend& backend, const BenchOptions& o
     Scene scene = loadScene(path);
     validateSolvable(scene);
     for (int side : o.atlasSides) {
-      const Atlas atlas = atlasFilling(scene, side, backend.maxTextureSize());
+      const Atlas atlas = atlasFilling(scene, side, backend.maxTextureSize(), o.chartAngle);
       for (int k : o.shootersPerPass) {
         StochasticRow r = benchOne(backend, scene, atlas, k, o);
         r.scene = path, r.side = side;

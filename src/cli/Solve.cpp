@@ -21,6 +21,7 @@
 #include "src/output/Progress.h"
 #include "src/output/Renderer.h"
 #include "src/output/Report.h"
+#include "src/output/SeamStitch.h"
 
 namespace hemirad {
 
@@ -127,18 +128,24 @@ int solveInBatches(const SolveOptions& o, const SolverState& state, Solver& solv
 // Returns the lightmap's line for stderr, printed once the files are written ("" without --gltf).
 std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene& scene, const Atlas& atlas,
                         const SolverState& state, const AtlasRun& run, const Camera& camera,
-                        const std::vector<glm::vec4>& B) {
+                        const std::vector<glm::vec4>& solved) {
   Image view;
   double scale = 1;
+  const std::vector<glm::vec4> B = stitchSeams(scene, atlas, solved);  // what is shown: seams agree
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
     Renderer renderer(state);
+<<<<<<< HEAD
     renderer.setAmbient(o.ambient.value_or(false) && run.ambient());
+=======
+    renderer.show(B);
+    renderer.setAmbient(o.ambient && run.ambient());
+>>>>>>> charts2
     view = renderer.render(camera, o.width, o.height, o.supersample);
     scale = exposureScale(view, o.exposure);
   }
   if (!o.out.empty()) outputs.add("--out", o.out, encodeRender(o.out, view, scale));
   if (!o.image.empty()) outputs.add("--image", o.image, encodePng(view, scale));
-  if (!o.atlas.empty()) outputs.add("--atlas", o.atlas, encodeExr(atlasImage(atlas, B)));
+  if (!o.atlas.empty()) outputs.add("--atlas", o.atlas, encodeExr(atlasImage(atlas, solved)));  // the elements' own
   if (!o.ply.empty()) outputs.add("--ply", o.ply, encodePly(scene, atlas, B, scale));
   if (!o.gltf.empty()) {
     const GltfPaths files = gltfPaths(o.gltf);
@@ -192,8 +199,7 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   auto backend = gl::createBackend(o.backend);
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
-  Discretisation d = o.discretisation;
-  if (!chartsSpanPolygons() && d.chartAngle == 0) d.chartAngle = kPolygonCharts;
+  const Discretisation& d = o.discretisation;
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle);
   SolverState state(scene, atlas);
   const std::unique_ptr<AtlasRun> run = start(state);

@@ -80,9 +80,6 @@ class AtlasMethod : public MethodUnit {
   // Its parameters a checkpoint must have been made with (beside the scene and atlas).
   virtual nlohmann::json identity() const = 0;
   virtual const StopRule& stop() const = 0;
-  // False: its atlas keeps a chart per polygon unless --chart-angle asks otherwise (then the
-  // method refuses it), since it cuts texel shapes from one polygon (src/scene/Charts.h).
-  virtual bool chartsSpanPolygons() const { return true; }
 };
 
 }  // namespace hemirad

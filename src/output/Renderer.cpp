@@ -47,7 +47,12 @@ glm::vec3 Renderer::ambientTerm() {
 }
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample) {
-  return render(camera, width, height, supersample, state_.radiosity);
+  return render(camera, width, height, supersample, shown());
+}
+
+void Renderer::show(const std::vector<glm::vec4>& values) {
+  shown_ = std::make_unique<gl::Texture>(GL_RGBA32F, state_.atlas.width, state_.atlas.height);
+  shown_->upload(GL_RGBA, GL_FLOAT, values.data());
 }
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
@@ -66,7 +71,7 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   gl::barrier(gl::Barrier::TextureFetch);
   state_.bindScene();
   atlasValues.bindUnit(slot::SAMPLER_ATLAS_VALUES);
-  const bool ambient = ambient_ && &atlasValues == &state_.radiosity;
+  const bool ambient = ambient_ && &atlasValues == &shown();
   if (ambient) updateAmbient();
   ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_AMBIENT);
   program_.set("addAmbient", int(ambient));

@@ -1,6 +1,7 @@
 // Camera render of a solution: the scene's polygons rasterised with a perspective camera,
 // each fragment looking B up in the atlas (bilinear, masked to its own polygon).
 #pragma once
+#include <memory>
 #include <vector>
 
 #include "gl/Objects.h"
@@ -23,8 +24,13 @@ class Renderer {
   Image render(const Camera& camera, int width, int height, int supersample = 2);
   // The same view of any per-element RGBA32F atlas (e.g. an error map) instead of B.
   Image render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues);
+  // From now on render() shows these values (atlas order) instead of B: B with its chart seams
+  // stitched (src/output/SeamStitch.h); the ambient term still applies.
+  void show(const std::vector<glm::vec4>& values);
 
  private:
+  const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
+
   const SolverState& state_;
   void updateAmbient();
 
@@ -32,6 +38,7 @@ class Renderer {
   gl::Buffer ambientTerm_;
   CameraMesh mesh_;
   bool ambient_ = false;
+  std::unique_ptr<gl::Texture> shown_;
 };
 
 }  // namespace hemirad

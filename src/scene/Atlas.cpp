@@ -10,14 +10,13 @@
 
 #include "src/base/Error.h"
 #include "src/scene/Charts.h"
+#include "src/scene/SmoothNormals.h"
 
 namespace hemirad {
 
 namespace {
 
 constexpr int kGutter = 1;
-// Cuts smaller than this fraction of a texel are numerical slivers, not elements.
-constexpr double kMinCutFraction = 1e-9;
 // Over any GPU's texture size; keeps cell counts far from int overflow (fuzzed slivers).
 constexpr double kMaxChartSide = 1 << 20;
 // Memory per atlas texel: four GPU textures (centre+area, polygon id, B, dB: 52 bytes, host memory
@@ -88,8 +87,11 @@ struct ElementSum {
   glm::dvec3 firstCentre{0.0};
 };
 
-// Every cell's element of chart c (row-major over c.size).
-std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, double ts) {
+using VertexNormals = std::vector<std::vector<glm::dvec3>>;  // SmoothNormals.h
+
+// Every cell's element of chart c (row-major over c.size). A curved chart's pieces weigh in the
+// smooth normal at their centroid (SmoothNormals.h), a planar one's the plane's.
+std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, double ts, const VertexNormals& smooth) {
   std::vector<ElementSum> cells(std::size_t(c.size.x) * std::size_t(c.size.y));
   forEachCut(c, ts, [&](int i, int j, int k, const Poly2& cut) {
     const int poly = c.group.partPolygon[std::size_t(k)];
@@ -99,7 +101,8 @@ std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, d
     ElementSum& e = cells[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
     if (e.pieces++ == 0) e.firstCentre = centre, e.area = a;
     else e.area += a;
-    e.centre += a * centre, e.normal += a * on.normal;
+    e.centre += a * centre;
+    e.normal += a * (c.group.planar ? on.normal : smoothNormalAt(on, smooth[std::size_t(poly)], centre));
     if (a > e.largest) e.largest = a, e.polygon = poly;
   });
   return cells;
@@ -192,8 +195,8 @@ double hostMemoryBytes() {
 }
 
 // Writes chart c's elements into the atlas.
-void cutChart(const Scene& scene, const ChartShape& shape, const Chart& c, Atlas& atlas) {
-  const std::vector<ElementSum> cells = chartElements(scene, shape, atlas.texelSize);
+void cutChart(const Scene& scene, const ChartShape& shape, const Chart& c, const VertexNormals& smooth, Atlas& atlas) {
+  const std::vector<ElementSum> cells = chartElements(scene, shape, atlas.texelSize, smooth);
   for (int j = 0; j < c.size.y; ++j)
     for (int i = 0; i < c.size.x; ++i) {
       const ElementSum& e = cells[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
@@ -203,7 +206,8 @@ void cutChart(const Scene& scene, const ChartShape& shape, const Chart& c, Atlas
       const glm::dvec3 centre = e.pieces == 1 ? e.firstCentre : e.centre / e.area;
       atlas.positionArea[t] = glm::vec4(glm::vec3(centre), float(e.area));
       atlas.polygonOf[t] = std::uint32_t(e.polygon);
-      atlas.normalOf[t] = glm::vec3(e.pieces == 1 ? scene.polygons()[std::size_t(e.polygon)].normal : glm::normalize(e.normal));
+      const bool own = e.pieces == 1 && c.planar;  // a polygon's own normal, bit for bit
+      atlas.normalOf[t] = glm::vec3(own ? scene.polygons()[std::size_t(e.polygon)].normal : glm::normalize(e.normal));
       ++atlas.elements;
     }
 }
@@ -250,7 +254,9 @@ Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxByte
   atlas.positionArea.assign(texels, glm::vec4(0.0f));
   atlas.polygonOf.assign(texels, kNoPolygon);
   atlas.normalOf.assign(texels, glm::vec3(0.0f));
-  for (size_t id = 0; id < shapes.size(); ++id) cutChart(scene, shapes[id], atlas.charts[id], atlas);
+  const bool curved = std::any_of(groups.begin(), groups.end(), [](const ChartGroup& g) { return !g.planar; });
+  const VertexNormals smooth = curved ? smoothVertexNormals(scene, chartAngle) : VertexNormals{};
+  for (size_t id = 0; id < shapes.size(); ++id) cutChart(scene, shapes[id], atlas.charts[id], smooth, atlas);
   if (atlas.elements == 0 && !polys.empty())
     fail("texel size {} leaves no element: every polygon is a sliver under {} of a texel; use a smaller --texel-size",
          ts, kMinCutFraction);

@@ -17,6 +17,8 @@
 namespace hemirad {
 
 constexpr std::uint32_t kNoPolygon = 0xFFFFFFFFu;
+// Cuts smaller than this fraction of a texel are numerical slivers, not elements.
+inline constexpr double kMinCutFraction = 1e-9;
 
 struct Chart {
   int polygon = 0;            // its seed: the chart's material and object are this polygon's
@@ -45,7 +47,9 @@ class Atlas {
   // Per atlas texel: the polygon with the element's largest piece, or kNoPolygon (material and
   // object are per chart, so lookups through it are the element's).
   std::vector<std::uint32_t> polygonOf;
-  std::vector<glm::vec3> normalOf;          // per atlas texel: area-weighted mean piece normal
+  // Per atlas texel: area-weighted mean piece normal (on a curved chart, of the smooth normals at
+  // the pieces, src/scene/SmoothNormals.h).
+  std::vector<glm::vec3> normalOf;
   std::size_t elements = 0;
 
   // The chart of texel t, or kNoPolygon.

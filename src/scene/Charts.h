@@ -13,8 +13,8 @@ namespace hemirad {
 
 // "Coplanar" for --chart-angle 0: normals within this many radians.
 inline constexpr double kCoplanarRadians = 1e-3;
-// The chart angle that keeps every polygon its own chart (stochastic iteration: its texel
-// shapes are cut from one polygon, shaders/texel_shape.glsl).
+// The chart angle that keeps every polygon its own chart (benchmarks that compare with
+// per-polygon atlases).
 inline constexpr double kPolygonCharts = -1;
 inline constexpr double kMaxChartAngle = 60;
 

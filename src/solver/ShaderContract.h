@@ -23,7 +23,8 @@
   X(SSBO_REDUCE_OUT, 4)           /* reduce.comp: the level written */                                   \
   X(SSBO_PYRAMID, 5)              /* pyramid.glsl: the luminance sum pyramid */                          \
   X(SSBO_AMBIENT, 5)              /* ambient.comp, camera.frag: the display-only ambient term */         \
-  X(SSBO_CHARTS, 6)               /* texel_shape.glsl: per polygon its chart frame */                    \
+  X(SSBO_CHARTS, 6)               /* texel_shape.glsl: per chart its frame, then the parts' vertices */   \
+  X(SSBO_TEXEL_PARTS, 15)         /* texel_shape.glsl: per texel the chart parts its element is cut from */ \
   X(SSBO_SURFACE_VIEW, 6)         /* perspective.glsl: per surface in view, epochs owed */               \
   X(SSBO_SHOT_SO_FAR, 7)          /* perspective.glsl: per shooter block */                              \
   X(SSBO_SNAPSHOTS, 8)            /* perspective.glsl, pending_blocks.comp */                            \
@@ -77,6 +78,9 @@ inline constexpr int kMaxShapeVertices = 12;
 inline constexpr int kShapeStride = kMaxShapeVertices + 1;  // the count, then the vertices
 // Convex pieces a shooter's shape may have (a block over several polygons of one chart).
 inline constexpr int kMaxShapePieces = 64;
+// Pieces a texel sampled by stochastic iteration may have (texel_shape.glsl; more: the disc).
+// Shooter k's first piece is slot k, the others slots SHOOTER_SLOTS + k (MAX_TEXEL_PIECES - 1) on.
+inline constexpr int kMaxTexelPieces = 16;
 
 // The table as #define lines (slots, limits, LUMINANCE: the Rec. 709 weights of src/scene/Scene.h).
 const gl::Defines& contractDefines();

@@ -13,6 +13,7 @@
 #include "src/solver/Control.h"
 #include "src/solver/ShaderContract.h"
 #include "src/solver/ShootingPlan.h"
+#include "src/solver/TexelParts.h"
 
 namespace hemirad {
 
@@ -26,18 +27,6 @@ constexpr std::uint32_t kStateMagic = 0x53544331;  // "STC1"
 enum Slot { kSelect, kItemBuffer, kUpdate };
 
 constexpr gl::Barrier kAllBarriers = gl::Barrier::Storage | gl::Barrier::Image | gl::Barrier::TextureFetch;
-
-// Per polygon its chart frame for texel_shape.glsl.
-std::vector<glm::vec4> chartTable(const Atlas& atlas) {
-  std::vector<glm::vec4> out;
-  for (const Chart& c : atlas.charts) {
-    out.push_back(glm::vec4(glm::vec3(c.frame.origin), 0.0f));
-    out.push_back(glm::vec4(glm::vec3(c.frame.u), float(atlas.texelSize)));
-    out.push_back(glm::vec4(glm::vec3(c.frame.v), 0.0f));
-    out.push_back(glm::vec4(float(c.corner.x), float(c.corner.y), float(c.origin.x), float(c.origin.y)));
-  }
-  return out;
-}
 
 struct SavedState {
   std::uint32_t magic, iterations, seed, shooters;
@@ -59,18 +48,16 @@ StochasticSolver::StochasticSolver(SolverState& state, const StochasticSettings&
     throw InputError(fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shooters));
   if (settings.stop.targetConvergence > 0)
     throw InputError("--method stochastic has no convergence measure: stop it with --shots (iterations), not --converge");
-  for (const Chart& c : state.atlas.charts)  // its texel shapes are cut from one polygon (texel_shape.glsl)
-    if (c.polygons.size() > 1)
-      throw InputError(fmt::format("--method stochastic samples texels cut from one polygon, and a chart here spans {} "
-                                   "polygons; leave out --chart-angle (stochastic iteration keeps a chart per polygon)",
-                                   c.polygons.size()));
   itemResolution_ = planShooting(state.scene, state.atlas, 0, settings.itemResolution, settings.projection).itemResolution;
   while (side_ < unsigned(std::max(state.atlas.width, state.atlas.height))) side_ *= 2, ++levels_;
   std::size_t floats = 0;
   for (unsigned l = 0; l < levels_; ++l) floats += std::size_t(side_ >> l) * (side_ >> l);
   pyramidSums_ = gl::Buffer(floats * sizeof(float));
-  charts_ = gl::Buffer(std::span<const glm::vec4>(chartTable(state.atlas)));
-  shapes_ = gl::Buffer(kShooterSlots * kShapeStride * sizeof(float[4]));
+  const TexelParts parts = texelParts(state.atlas);
+  charts_ = gl::Buffer(std::span<const glm::vec4>(parts.charts));
+  texelParts_ = gl::Buffer(std::span<const std::uint32_t>(parts.index));
+  // Slot k and each sampled texel's other pieces (texel_shape.glsl).
+  shapes_ = gl::Buffer(std::size_t(kShooterSlots) * kMaxTexelPieces * kShapeStride * sizeof(float[4]));
   const unsigned K = unsigned(settings.shooters);
   itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, itemResolution_, state.farDistance,
                                              settings.projection, settings.shooters);
@@ -83,6 +70,7 @@ StochasticSolver::StochasticSolver(SolverState& state, const StochasticSettings&
   sample_.set("seed", unsigned(settings.seed));
   sample_.set("shooters", K);
   sample_.set("topLevel", levels_ - 1);
+  sample_.set("atlasWidth", unsigned(state.atlas.width));
   update_.set("atlasSize", state.atlas.width, state.atlas.height);
   update_.set("farDistance", float(state.farDistance));
   ControlBlock c{};
@@ -114,6 +102,7 @@ void StochasticSolver::samplePass(const gl::Texture& source, std::uint32_t key) 
   source.bindImage(slot::IMAGE_RADIOSITY, GL_READ_ONLY);
   pyramidSums_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PYRAMID);
   charts_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CHARTS);
+  texelParts_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_TEXEL_PARTS);
   control_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
   shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
   sample_.use();

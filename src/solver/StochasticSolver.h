@@ -70,7 +70,7 @@ class StochasticSolver final : public Solver {
   int itemResolution_;
   unsigned side_ = 1, levels_ = 1;  // pyramid level 0's side, level count
   gl::Program pyramid_, sample_, update_;
-  gl::Buffer pyramidSums_, charts_, shapes_, control_;
+  gl::Buffer pyramidSums_, charts_, texelParts_, shapes_, control_;
   std::unique_ptr<ItemBuffer> itemBuffer_;
   SolveStatus status_;
   PassTimings timings_;

@@ -47,9 +47,8 @@ int runAnimation(AnimationOptions o) {
   validateSolvable(base);
   const Camera camera = resolveCamera(base, o.camera);
   auto backend = gl::createBackend(o.backend);
-  Discretisation perPolygon = o.discretisation;  // stochastic iteration: a chart per polygon (Charts.h)
-  perPolygon.chartAngle = kPolygonCharts;
-  const Atlas baseAtlas = buildAtlas(base, chooseTexelSize(base, perPolygon), backend->maxTextureSize(), 0, kPolygonCharts);
+  const Discretisation& d = o.discretisation;
+  const Atlas baseAtlas = buildAtlas(base, chooseTexelSize(base, d), backend->maxTextureSize(), 0, d.chartAngle);
   std::filesystem::create_directories(o.framesDir);
   const unsigned frames = unsigned(std::floor(path.duration() * o.fps + 1e-9)) + 1;
   std::string csv = "frame,time,iterations,relative_rms_error,radiosity_hash\n";

@@ -72,9 +72,8 @@ int runMethodComparison(MethodComparisonOptions o) {
   for (const std::string& path : o.scenes) {
     const Scene scene = loadScene(path);
     validateSolvable(scene);
-    // Stochastic iteration keeps a chart per polygon (src/scene/Charts.h); progressive shares its atlas.
-    const Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, o.elements, kPolygonCharts), backend->maxTextureSize(), 0,
-                                   kPolygonCharts);
+    const double angle = Discretisation{}.chartAngle;  // both methods share the default atlas
+    const Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, o.elements, angle), backend->maxTextureSize(), 0, angle);
     ProgressiveSettings p = o.progressive;
     p.shootLevel = 0;  // one-texel shooters, as stochastic iteration's: the same discrete operator
     p.timings = gl::TimerMode::Off;

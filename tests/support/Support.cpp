@@ -5,7 +5,9 @@
 #include "cpu/Hemisphere.h"
 #include "src/output/Renderer.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -30,6 +32,30 @@ Scene cube(double rho, double E, int lampFace) {
                           rectangle(O, Y, Z, 1, 1), rectangle(X, Z, Y, 1, 1)};  // x = 0, x = 1
   for (int i = 0; i < 6; ++i) s.addPolygon(faces[i], i == lampFace ? lamp : wall, o);
   return s;
+}
+
+void addSphere(Scene& s, glm::dvec3 centre, double radius, int slices, int stacks, int material, int object,
+               bool inward) {
+  auto at = [&](int i, int j) {  // j = 0 the south pole
+    const double phi = 2 * M_PI * i / slices, theta = M_PI * j / stacks;
+    return centre + radius * glm::dvec3(std::sin(theta) * std::cos(phi), -std::cos(theta), std::sin(theta) * std::sin(phi));
+  };
+  for (int j = 0; j < stacks; ++j)
+    for (int i = 0; i < slices; ++i) {
+      Poly3 f = j == 0 ? Poly3{at(i, 0), at(i + 1, 1), at(i, 1)}
+                : j == stacks - 1 ? Poly3{at(i, j), at(i + 1, j), at(i, j + 1)}
+                                  : Poly3{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+      if (!inward) std::reverse(f.begin(), f.end());
+      s.addPolygon(f, material, object);
+    }
+}
+
+void addCylinder(Scene& s, glm::dvec3 base, double radius, double height, int slices, int material, int object) {
+  auto at = [&](int i, double y) {
+    const double phi = 2 * M_PI * i / slices;
+    return base + glm::dvec3(radius * std::cos(phi), y, radius * std::sin(phi));
+  };
+  for (int i = 0; i < slices; ++i) s.addPolygon({at(i + 1, 0), at(i, 0), at(i, height), at(i + 1, height)}, material, object);
 }
 
 gl::RenderBackend& backend() {

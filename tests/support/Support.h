@@ -20,6 +20,11 @@ int material(Scene& scene, double rho, double emission);
 // A closed unit cube, faces inward, every face emitting E with reflectance rho; face
 // `lampFace` (0 floor, 1 ceiling, ...; -1 none) is instead a black lamp: rho 0, E 1.
 Scene cube(double rho, double E, int lampFace = -1);
+// A UV sphere of `slices` x `stacks` facets (quads, triangles at the poles), facing out (or in).
+void addSphere(Scene& s, glm::dvec3 centre, double radius, int slices, int stacks, int material, int object,
+               bool inward = false);
+// An open vertical cylinder (no caps) of `slices` quads standing at `base`, facing out.
+void addCylinder(Scene& s, glm::dvec3 base, double radius, double height, int slices, int material, int object);
 
 struct Solved {
   Atlas atlas;

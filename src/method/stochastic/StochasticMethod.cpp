@@ -52,7 +52,6 @@ StochasticSettings stochasticSolveDefaults() {
 
 class StochasticMethod final : public AtlasMethod {
  public:
-  bool chartsSpanPolygons() const override { return false; }
   std::string name() const override { return "stochastic"; }
   std::vector<MethodFlag> flags() override {
     StochasticSettings& s = settings_;

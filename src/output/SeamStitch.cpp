@@ -1,0 +1,126 @@
+#include "src/output/SeamStitch.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace hemirad {
+
+namespace {
+
+// Sweeps over the seam constraints: each makes its two samples agree exactly; sweeps settle
+// the texels several constraints share (a texel's 2 x 2 neighbourhood holds a few).
+constexpr int kSweeps = 32;
+
+// A sample point's taps on one chart: the bilinear texels of that chart, weights normalised
+// over them (Atlas::sample's blend).
+struct Taps {
+  std::array<std::size_t, 4> texel{};
+  std::array<double, 4> weight{};
+  int count = 0;
+  double norm2 = 0;  // sum of squared weights
+};
+
+Taps tapsAt(const Atlas& atlas, int polygon, glm::dvec3 p) {
+  const std::uint32_t chart = atlas.chartOf[std::size_t(polygon)];
+  const glm::dvec2 c = atlas.atlasCoord(polygon, p) - 0.5;
+  const glm::ivec2 i0(glm::floor(c));
+  const glm::dvec2 f = c - glm::dvec2(i0);
+  Taps t;
+  double sum = 0;
+  for (int k = 0; k < 4; ++k) {
+    const glm::ivec2 o(k & 1, k >> 1), at = i0 + o;
+    const double w = (o.x ? f.x : 1 - f.x) * (o.y ? f.y : 1 - f.y);
+    if (at.x < 0 || at.y < 0 || at.x >= atlas.width || at.y >= atlas.height || w <= 0) continue;
+    const std::size_t index = std::size_t(at.y) * std::size_t(atlas.width) + std::size_t(at.x);
+    if (atlas.chartAt(index) != chart) continue;
+    t.texel[std::size_t(t.count)] = index, t.weight[std::size_t(t.count)] = w, ++t.count, sum += w;
+  }
+  for (int k = 0; k < t.count; ++k) t.weight[std::size_t(k)] /= sum, t.norm2 += t.weight[std::size_t(k)] * t.weight[std::size_t(k)];
+  return t;
+}
+
+struct Constraint {
+  Taps a, b;
+};
+
+bool alike(const Scene& scene, const ScenePolygon& p, const ScenePolygon& q) {
+  const Material &m = scene.materials[p.material], &n = scene.materials[q.material];
+  return m.reflectance == n.reflectance && m.emission == n.emission &&
+         glm::dot(p.normal, q.normal) >= std::cos(kMaxChartAngle * M_PI / 180);
+}
+
+// Polygon pairs sharing an edge (vertices welded at 1e-9 of the scene's size), with the edge.
+struct SharedEdge {
+  int p, q;
+  glm::dvec3 a, b;
+};
+std::vector<SharedEdge> sharedEdges(const Scene& scene) {
+  const double quantum = 1e-9 * std::max(glm::length(scene.boundsMax() - scene.boundsMin()), 1e-300);
+  auto key = [&](glm::dvec3 v) {
+    return std::array<long long, 3>{std::llround(v.x / quantum), std::llround(v.y / quantum), std::llround(v.z / quantum)};
+  };
+  std::map<std::pair<std::array<long long, 3>, std::array<long long, 3>>, std::vector<int>> byEdge;
+  const auto& polys = scene.polygons();
+  for (std::size_t p = 0; p < polys.size(); ++p)
+    for (std::size_t i = 0; i < polys[p].vertices.size(); ++i) {
+      auto a = key(polys[p].vertices[i]), b = key(polys[p].vertices[(i + 1) % polys[p].vertices.size()]);
+      if (a != b) byEdge[{std::min(a, b), std::max(a, b)}].push_back(int(p));
+    }
+  std::vector<SharedEdge> out;
+  for (auto& [edge, ps] : byEdge)
+    if (ps.size() == 2) {
+      const Poly3& v = polys[std::size_t(ps[0])].vertices;
+      glm::dvec3 a(0.0), b(0.0);
+      for (std::size_t i = 0; i < v.size(); ++i)
+        if (key(v[i]) == edge.first) a = v[i];
+        else if (key(v[i]) == edge.second) b = v[i];
+      out.push_back({ps[0], ps[1], a, b});
+    }
+  return out;
+}
+
+// Points every half texel along each seam, each tied to both sides' taps.
+std::vector<Constraint> seamConstraints(const Scene& scene, const Atlas& atlas) {
+  std::vector<Constraint> out;
+  for (const SharedEdge& e : sharedEdges(scene)) {
+    if (atlas.chartOf[std::size_t(e.p)] == atlas.chartOf[std::size_t(e.q)]) continue;
+    if (!alike(scene, scene.polygons()[std::size_t(e.p)], scene.polygons()[std::size_t(e.q)])) continue;
+    const int n = std::max(2, int(std::ceil(2 * glm::length(e.b - e.a) / atlas.texelSize)));
+    for (int k = 0; k < n; ++k) {
+      const glm::dvec3 x = e.a + (e.b - e.a) * ((k + 0.5) / n);
+      Constraint c{tapsAt(atlas, e.p, x), tapsAt(atlas, e.q, x)};
+      if (c.a.count > 0 && c.b.count > 0) out.push_back(c);
+    }
+  }
+  return out;
+}
+
+glm::dvec3 sampleOf(const Taps& t, const std::vector<glm::vec4>& values) {
+  glm::dvec3 s(0.0);
+  for (int k = 0; k < t.count; ++k) s += t.weight[std::size_t(k)] * glm::dvec3(values[t.texel[std::size_t(k)]]);
+  return s;
+}
+
+// Moves t's sample by `delta` with the least change to its texels.
+void shift(const Taps& t, glm::dvec3 delta, std::vector<glm::vec4>& values) {
+  for (int k = 0; k < t.count; ++k) {
+    glm::vec4& v = values[t.texel[std::size_t(k)]];
+    v = glm::vec4(glm::max(glm::vec3(glm::dvec3(v) + delta * (t.weight[std::size_t(k)] / t.norm2)), glm::vec3(0.0f)), v.a);
+  }
+}
+
+}  // namespace
+
+std::vector<glm::vec4> stitchSeams(const Scene& scene, const Atlas& atlas, std::vector<glm::vec4> values) {
+  const std::vector<Constraint> constraints = seamConstraints(scene, atlas);
+  for (int sweep = 0; sweep < kSweeps && !constraints.empty(); ++sweep)
+    for (const Constraint& c : constraints) {
+      const glm::dvec3 half = 0.5 * (sampleOf(c.b, values) - sampleOf(c.a, values));
+      shift(c.a, half, values), shift(c.b, -half, values);
+    }
+  return values;
+}
+
+}  // namespace hemirad
