@@ -134,12 +134,8 @@ std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene
   const std::vector<glm::vec4> B = stitchSeams(scene, atlas, solved);  // what is shown: seams agree
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
     Renderer renderer(state);
-<<<<<<< HEAD
-    renderer.setAmbient(o.ambient.value_or(false) && run.ambient());
-=======
     renderer.show(B);
-    renderer.setAmbient(o.ambient && run.ambient());
->>>>>>> charts2
+    renderer.setAmbient(o.ambient.value_or(false) && run.ambient());
     view = renderer.render(camera, o.width, o.height, o.supersample);
     scale = exposureScale(view, o.exposure);
   }
