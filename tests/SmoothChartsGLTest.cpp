@@ -105,7 +105,7 @@ Steps stepsAcross(const Scene& s, const test::Solved& r, const std::vector<std::
 
 TEST_CASE("Curved charts show no faceting on a tessellated sphere and cylinder: the step across a facet edge is as across "
           "the same distance inside a facet, where a chart per facet plane steps several times more",
-          "[gl][charts]") {
+          "[gl][charts][heavy]") {
   const Scene s = roomWithCurves();
   const double texel = 0.07, delta = 0.035;  // facets about 0.16 wide: 2.2 texels
   const test::Solved curved = solveAt(s, texel, 30), flat = solveAt(s, texel, 0);
