@@ -170,7 +170,7 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   using options::add;
   add(cmd, "--scenes", o.scenes);
   add(cmd, "--elements", o.elements);
-  add(cmd, "--chart-angle", o.chartAngle, "0");
+  add(cmd, "--chart-angle", o.chartAngle);
   add(cmd, "--converge", o.converge);
   options::addItemPlan(cmd, o.progressive);  // --preset, --hemisphere, --item-subdiv, --item-res, --shoot-level
   add(cmd, "--shooters-per-pass", o.shootersPerPass);

@@ -18,7 +18,7 @@ namespace hemirad {
 struct BenchOptions {
   std::vector<std::string> scenes{"scenes/cornell/cornell.obj"};
   std::vector<std::size_t> elements{10000, 100000};
-  double chartAngle = 0;  // --chart-angle (src/scene/Charts.h), as for solve
+  double chartAngle = kDefaultChartAngle;  // --chart-angle (src/scene/Charts.h), as for solve
   double converge = 0.9;
   ProgressiveSettings progressive;  // shoot level, item mesh and buffer as for solve
   std::string method = "progressive";  // which of the bench's runs below

@@ -28,7 +28,7 @@ void addScene(CLI::App* cmd, std::string& scene, LoadOptions& load, Discretisati
   add(cmd, "--emission", load.emission);
   CLI::Option* texelSize = add(cmd, "--texel-size", d.texelSize, "from --elements");
   add(cmd, "--elements", d.elements, std::to_string(Discretisation::kDefaultElements))->excludes(texelSize);
-  add(cmd, "--chart-angle", d.chartAngle, "0");
+  add(cmd, "--chart-angle", d.chartAngle);
 }
 
 }  // namespace

@@ -143,7 +143,8 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--elements", "N", "Choose the texel size for about N elements",
        CLI::Range(std::size_t(1), std::size_t(1) << 28)},
       {"--chart-angle", "DEG", "Charts join connected polygons of one material and object whose normals lie within DEG degrees "
-       "of the chart's first (0: coplanar ones only), projected onto one texel grid (docs/design.md#atlas-and-elements)",
+       "of the chart's first (0: coplanar ones only; 30: a curved surface's facets join, so its light shows no facets), "
+       "projected onto one texel grid (docs/design.md#atlas-and-elements)",
        CLI::Range(0.0, 60.0)},
       {"--scenes", "OBJ", "OBJ scenes; a relative path not found from here is read from the shipped scenes (docs/install.md)", kScene},
       // The solver.

@@ -83,7 +83,7 @@ double texelSizeForElements(const Scene& scene, std::size_t elements, double cha
 struct Discretisation {
   std::optional<double> texelSize;         // scene units
   std::optional<std::size_t> elements;     // or: about this many elements
-  double chartAngle = 0;                   // --chart-angle, degrees (Charts.h)
+  double chartAngle = kDefaultChartAngle;  // --chart-angle, degrees (Charts.h)
   static constexpr std::size_t kDefaultElements = 10000;
 };
 // Texel size from the flags: --texel-size, else --elements, else about 10,000 elements.
