@@ -93,7 +93,7 @@ int runCompare(const CompareOptions& o) {
   if (!o.errorMap.empty()) files.add("--error-map", o.errorMap, encodePng(errorMap(regions, a, b, o.errorRange), 1.0));
   if (!o.markdownOut.empty()) files.add("--markdown", o.markdownOut, table);
   files.commit();
-  fmt::print("{}", table);
+  if (o.markdownOut != "-") fmt::print("{}", table);  // `--markdown -` has printed it already
   return 0;
 }
 
