@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
+
+#include "src/scene/Welding.h"
 
 namespace hemirad {
 
@@ -51,31 +52,22 @@ bool alike(const Scene& scene, const ScenePolygon& p, const ScenePolygon& q) {
          glm::dot(p.normal, q.normal) >= std::cos(kMaxChartAngle * M_PI / 180);
 }
 
-// Polygon pairs sharing an edge (vertices welded at 1e-9 of the scene's size), with the edge.
+// Polygon pairs sharing an edge (vertices welded, src/scene/Welding.h), with the edge as the first has it.
 struct SharedEdge {
   int p, q;
   glm::dvec3 a, b;
 };
 std::vector<SharedEdge> sharedEdges(const Scene& scene) {
-  const double quantum = 1e-9 * std::max(glm::length(scene.boundsMax() - scene.boundsMin()), 1e-300);
-  auto key = [&](glm::dvec3 v) {
-    return std::array<long long, 3>{std::llround(v.x / quantum), std::llround(v.y / quantum), std::llround(v.z / quantum)};
-  };
-  std::map<std::pair<std::array<long long, 3>, std::array<long long, 3>>, std::vector<int>> byEdge;
-  const auto& polys = scene.polygons();
-  for (std::size_t p = 0; p < polys.size(); ++p)
-    for (std::size_t i = 0; i < polys[p].vertices.size(); ++i) {
-      auto a = key(polys[p].vertices[i]), b = key(polys[p].vertices[(i + 1) % polys[p].vertices.size()]);
-      if (a != b) byEdge[{std::min(a, b), std::max(a, b)}].push_back(int(p));
-    }
+  const Welding w = weldVertices(scene);
   std::vector<SharedEdge> out;
-  for (auto& [edge, ps] : byEdge)
+  for (auto& [edge, ps] : polygonsByEdge(w))
     if (ps.size() == 2) {
-      const Poly3& v = polys[std::size_t(ps[0])].vertices;
+      const std::size_t p = std::size_t(ps[0]);
+      const Poly3& v = scene.polygons()[p].vertices;
       glm::dvec3 a(0.0), b(0.0);
       for (std::size_t i = 0; i < v.size(); ++i)
-        if (key(v[i]) == edge.first) a = v[i];
-        else if (key(v[i]) == edge.second) b = v[i];
+        if (w.ids[p][i] == edge.first) a = v[i];
+        else if (w.ids[p][i] == edge.second) b = v[i];
       out.push_back({ps[0], ps[1], a, b});
     }
   return out;

@@ -6,45 +6,18 @@
 #include <deque>
 #include <map>
 
+#include "src/scene/Welding.h"
+
 namespace hemirad {
 
 namespace {
 
-using VertexKey = std::array<long long, 3>;
-using EdgeKey = std::pair<int, int>;  // welded vertex ids
-
-// Vertices welded by position: ids equal when positions agree to 1e-9 of the scene's size.
-struct Welding {
-  std::vector<std::vector<int>> ids;  // per polygon, per vertex
-  std::vector<glm::dvec3> position;   // per id: the first position seen
-};
-
-Welding weldVertices(const Scene& scene) {
-  const double q = 1e-9 * std::max(glm::length(scene.boundsMax() - scene.boundsMin()), 1e-300);
-  std::map<VertexKey, int> index;
-  Welding w;
-  for (const ScenePolygon& p : scene.polygons()) {
-    std::vector<int>& ids = w.ids.emplace_back();
-    for (const glm::dvec3& v : p.vertices) {
-      VertexKey k{std::llround(v.x / q), std::llround(v.y / q), std::llround(v.z / q)};
-      auto [it, added] = index.emplace(k, int(w.position.size()));
-      if (added) w.position.push_back(v);
-      ids.push_back(it->second);
-    }
-  }
-  return w;
-}
+using EdgeKey = WeldedEdge;
 
 // Polygons sharing an (undirected) welded edge.
 std::vector<std::vector<int>> edgeNeighbours(const Welding& w) {
-  std::map<EdgeKey, std::vector<int>> byEdge;
-  for (std::size_t p = 0; p < w.ids.size(); ++p)
-    for (std::size_t i = 0; i < w.ids[p].size(); ++i) {
-      int a = w.ids[p][i], b = w.ids[p][(i + 1) % w.ids[p].size()];
-      if (a != b) byEdge[{std::min(a, b), std::max(a, b)}].push_back(int(p));
-    }
   std::vector<std::vector<int>> out(w.ids.size());
-  for (auto& [edge, polys] : byEdge)
+  for (auto& [edge, polys] : polygonsByEdge(w))
     for (int a : polys)
       for (int b : polys)
         if (a != b) out[std::size_t(a)].push_back(b);

@@ -1,9 +1,9 @@
 #include "src/scene/SmoothNormals.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <map>
+
+#include "src/scene/Welding.h"
 
 namespace hemirad {
 
@@ -19,20 +19,18 @@ double cornerAngle(const Poly3& p, std::size_t i) {
 }  // namespace
 
 std::vector<std::vector<glm::dvec3>> smoothVertexNormals(const Scene& scene, double angleDegrees) {
-  const double quantum = 1e-9 * std::max(glm::length(scene.boundsMax() - scene.boundsMin()), 1e-300);
   const double cosAngle = std::cos(std::clamp(angleDegrees, 0.0, 90.0) * M_PI / 180);
-  using Key = std::array<long long, 3>;
-  auto key = [&](glm::dvec3 v) { return Key{std::llround(v.x / quantum), std::llround(v.y / quantum), std::llround(v.z / quantum)}; };
-  std::map<Key, std::vector<std::pair<int, std::size_t>>> corners;  // welded vertex: (polygon, corner)
+  const Welding w = weldVertices(scene);
+  std::vector<std::vector<std::pair<int, std::size_t>>> corners(w.position.size());  // welded vertex: (polygon, corner)
   const auto& polys = scene.polygons();
   for (std::size_t p = 0; p < polys.size(); ++p)
-    for (std::size_t i = 0; i < polys[p].vertices.size(); ++i) corners[key(polys[p].vertices[i])].push_back({int(p), i});
+    for (std::size_t i = 0; i < polys[p].vertices.size(); ++i) corners[std::size_t(w.ids[p][i])].push_back({int(p), i});
   std::vector<std::vector<glm::dvec3>> out(polys.size());
   for (std::size_t p = 0; p < polys.size(); ++p) {
     const ScenePolygon& P = polys[p];
     for (std::size_t i = 0; i < P.vertices.size(); ++i) {
       glm::dvec3 sum(0.0);
-      for (auto [q, j] : corners[key(P.vertices[i])]) {
+      for (auto [q, j] : corners[std::size_t(w.ids[p][i])]) {
         const ScenePolygon& Q = polys[std::size_t(q)];
         if (Q.object != P.object || Q.material != P.material || glm::dot(Q.normal, P.normal) < cosAngle) continue;
         sum += cornerAngle(Q.vertices, j) * Q.normal;
