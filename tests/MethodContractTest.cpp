@@ -15,6 +15,7 @@
 #include "src/method/MethodChoice.h"
 #include "src/method/MethodFlag.h"
 #include "src/method/Registry.h"
+#include "src/output/ImageFile.h"
 #include "src/output/Report.h"
 #include "src/solver/Solver.h"
 #include "tests/support/Files.h"
@@ -143,6 +144,31 @@ TEST_CASE("Every method killed in a checkpoint write resumes from the previous o
   CHECK(resumed.json["convergence_history"].dump() == whole.json["convergence_history"].dump());
 }
 
+TEST_CASE("Every method solves a closed box of emitting grey walls to the B it declares, and one seed gives "
+          "byte-identical images",
+          "[gl][closed-box]") {
+  const std::string name = GENERATE(from_range(methodNames()));
+  const std::vector<std::unique_ptr<MethodUnit>> methods = makeMethods();
+  const MethodUnit& method =
+      **std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return m->name() == name; });
+  const ClosedBoxRun box = method.closedBox();
+  REQUIRE(box.tolerance > 0);
+  std::vector<std::string> images;
+  for (const char* run : {"a", "b"}) {
+    images.push_back(test::tempPath("closed-box-" + method.name() + "-" + run + ".exr"));
+    const std::string args = "solve " + test::sourcePath("scenes/analytic/furnace.obj") + " --quiet --method " +
+                             method.name() + " " + box.flags + " --out " + images.back();
+    test::Run solved = test::hemirad(args);
+    INFO(args << "\n" << solved.output);
+    REQUIRE(solved.exitCode == 0);
+  }
+  const double mean = test::meanPixel(readImage(images[0]));
+  INFO("--method " << method.name() << " " << box.flags << ": mean B " << mean << ", declared " << box.expected
+                   << " within " << 100 * box.tolerance << " %");
+  CHECK(std::abs(mean / box.expected - 1) <= box.tolerance);
+  CHECK(test::readText(images[0]) == test::readText(images[1]));
+}
+
 namespace {
 
 // A method of the test's own: it only emits (B = E), taking --shots and nothing else. What adding
@@ -189,6 +215,7 @@ class EmitOnly final : public AtlasMethod {
     if (!stop_.maxShots) throw InputError("--method emit-only needs --shots");
   }
   std::string quickFlags() const override { return "--elements 100"; }
+  ClosedBoxRun closedBox() const override { return {"--shots 1", 1, 1e-6}; }  // B = E: nothing transported
   std::unique_ptr<AtlasRun> start(SolverState&) const override { return std::make_unique<EmitOnlyRun>(stop_); }
   nlohmann::json identity() const override { return {{"shots", stop_.maxShots}}; }
   const StopRule& stop() const override { return stop_; }

@@ -36,6 +36,16 @@ struct MethodFlag {
   std::string value;                             // the field's initial value, shown without defaultText
 };
 
+// How the contract tests (tests/MethodContractTest.cpp) solve scenes/analytic/furnace.obj, a
+// closed box of walls emitting E 1 with rho 0.5 seen from inside: the flags, and the mean B its
+// camera image must show (E / (1 - rho) = 2 for a method that carries every bounce) within a
+// relative tolerance the method's own error allows.
+struct ClosedBoxRun {
+  std::string flags;
+  double expected = 2;
+  double tolerance = 0;
+};
+
 class MethodUnit {
  public:
   virtual ~MethodUnit() = default;
@@ -50,6 +60,7 @@ class MethodUnit {
   virtual bool checkpoints() const = 0;
   // Flags for a small, quick solve (a few hundred elements or pixels): the contract tests' runs.
   virtual std::string quickFlags() const = 0;
+  virtual ClosedBoxRun closedBox() const = 0;
 };
 
 // One solve of an atlas method: its Solver over the state, and what only this method knows of it.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <nlohmann/json.hpp>
 
@@ -79,6 +80,12 @@ class InstantMethod final : public MethodUnit {
   int solve(const SolveOptions& o) const override;
   bool checkpoints() const override { return false; }
   std::string quickFlags() const override { return "--vpls 64 --shadow-res 32 --width 48 --height 32"; }
+  // Emission and one bounce per VPL level 0..15: E (1 + rho + ... + rho^16); unclamped, so only
+  // the VPL sampling's noise remains (tests/InstantGLTest.cpp measures its standard error).
+  ClosedBoxRun closedBox() const override {
+    return {"--vpls 512 --vpl-bounces 15 --vpl-clamp 0 --shadow-res 64 --width 48 --height 32", 2 * (1 - std::pow(0.5, 17)),
+            0.03};
+  }
 
  private:
   InstantRun run_;

@@ -92,6 +92,8 @@ class ProgressiveMethod final : public AtlasMethod {
     if (!stop.maxShots && !stop.targetConvergence) stop.targetConvergence = o.cameraPath.empty() ? 0.9 : 0.9999;
   }
   std::string quickFlags() const override { return "--elements 300 --item-res 64 --item-subdiv 1"; }
+  // What is left unshot at 0.9995 lowers B by < 0.05 %; exact form factors lose < 0.05 % more.
+  ClosedBoxRun closedBox() const override { return {"--elements 300 --converge 0.9995", 2, 0.001}; }
   std::unique_ptr<AtlasRun> start(SolverState& state) const override {
     return std::make_unique<ProgressiveRun>(state, settings_);
   }
