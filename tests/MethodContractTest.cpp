@@ -18,6 +18,8 @@
 #include "src/output/ImageFile.h"
 #include "src/output/Report.h"
 #include "src/solver/Solver.h"
+#include "src/viewer/ViewerWorker.h"
+#include "src/bench/Bench.h"
 #include "tests/support/Files.h"
 #include "tests/support/Support.h"
 
@@ -255,4 +257,22 @@ TEST_CASE("A method added to the choice gets its flags bound, refuses the others
   const std::vector<ObjectRadiosity> objects = objectRadiosity(scene, atlas, state.readRadiosity());
   REQUIRE(objects.size() == 1);
   CHECK(objects[0].mean.x == Approx(1.0 / 6));  // the lamp's emission over the box, nothing transported
+}
+
+TEST_CASE("The viewer and the bench pick methods by registered name: each runs only registered methods and the bench "
+          "measures every one",
+          "[cli]") {
+  const std::vector<std::string> registered = methodNames();
+  auto isRegistered = [&](const std::string& n) {
+    return std::find(registered.begin(), registered.end(), n) != registered.end();
+  };
+  for (const std::string& name : viewerMethods()) CHECK(isRegistered(name));
+  const std::vector<std::string> bench = benchMethods();
+  CHECK(std::is_permutation(bench.begin(), bench.end(), registered.begin(), registered.end()));
+  // A name the viewer has no worker for is refused by the flag, before any work.
+  const test::Run refused = test::hemirad("view " + kScene + " --method stochastic");
+  INFO(refused.output);
+  CHECK(refused.exitCode == 2);
+  CHECK(test::errorLines(refused.output) == 1);
+  CHECK_THAT(refused.output, Contains("--method") && Contains("instant") && Contains("progressive"));
 }

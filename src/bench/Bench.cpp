@@ -6,6 +6,7 @@
 #include <chrono>
 #include <ctime>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -175,7 +176,7 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
   options::addItemPlan(cmd, o.progressive);  // --preset, --hemisphere, --item-subdiv, --item-res, --shoot-level
   add(cmd, "--shooters-per-pass", o.shootersPerPass);
   add(cmd, "--algorithm", o.progressive.algorithm);
-  add(cmd, "--method", o.method)->transform(options::oneOfNames({"progressive", "stochastic", "instant"}));
+  add(cmd, "--method", o.method)->transform(options::oneOfNames(benchMethods()));
   add(cmd, "--atlas-sides", o.atlasSides);
   add(cmd, "--shots", o.iterations, "8 (--method stochastic: iterations timed per row; instant: frames)");
   add(cmd, "--markdown", o.markdown);
@@ -253,9 +254,11 @@ nlohmann::json rowJson(const BenchRow& r) {
           {"radiosity_hash", fmt::format("{:016x}", r.hash)}, {"objects", objectsJson(r.objects)}};
 }
 
+// Prints a piece of the bench's output (and keeps it for --markdown).
+using Say = std::function<void(const std::string&)>;
+
 // The stochastic method's rows and JSON (src/bench/StochasticBench.h).
-template <class Say>
-void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
+void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, const Say& say) {
   say(fmt::format("hemirad bench, {}, {} ({}), stochastic iteration, preset {}: item mesh L{}, {} item buffer {}\n\n", date,
                   backend.name(), backend.renderer(), o.progressive.presetLabel(), o.progressive.itemSubdivision,
                   projectionName(o.progressive.projection),
@@ -279,8 +282,7 @@ void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const
 }  // namespace
 
 // Frames per second of instant radiosity per VPL count and interleave (seed 002's Figure 5 beside).
-template <class Say>
-void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
+void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, const Say& say) {
   say(fmt::format("hemirad bench, {}, {} ({}), instant radiosity (seed 002)\n\n", date, backend.name(),
                   backend.renderer()));
   const nlohmann::json rows = benchInstant(backend, o, say);
@@ -294,8 +296,7 @@ void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const ch
 }
 
 // Time to convergence per scene, element count and shooters a pass, against the measured ceilings.
-template <class Say>
-void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, Say& say) {
+void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, const Say& say) {
   say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, chart angle {}, preset {}: shoot level {}, item mesh L{}, {} item buffer {}\n\n",
                   date, backend.name(), backend.renderer(), algorithmName(o.progressive.algorithm), o.converge,
                   o.chartAngle, o.progressive.presetLabel(),
@@ -349,6 +350,25 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
   }
 }
 
+namespace {
+
+using BenchRun = void (*)(const BenchOptions&, gl::RenderBackend&, const char*, const Say&);
+
+// The bench's run of each method it measures, by --method name (tested to cover the registry).
+const std::map<std::string, BenchRun>& benchRuns() {
+  static const std::map<std::string, BenchRun> runs{
+      {"progressive", runProgressiveBench}, {"stochastic", runStochasticBench}, {"instant", runInstantBench}};
+  return runs;
+}
+
+}  // namespace
+
+std::vector<std::string> benchMethods() {
+  std::vector<std::string> names;
+  for (const auto& [name, run] : benchRuns()) names.push_back(name);
+  return names;
+}
+
 int runBench(BenchOptions o) {
   if (!o.json.empty()) checkWritable(o.json, "--json");
   if (!o.markdown.empty()) checkWritable(o.markdown, "--markdown");
@@ -359,16 +379,12 @@ int runBench(BenchOptions o) {
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
   std::string text;  // everything printed, for --markdown
-  auto say = [&text](const std::string& s) {
+  const Say say = [&text](const std::string& s) {
     fmt::print("{}", s);
     std::fflush(stdout);
     text += s;
   };
-  using Run = void (*)(const BenchOptions&, gl::RenderBackend&, const char*, decltype(say)&);
-  const std::map<std::string, Run> runs{{"progressive", runProgressiveBench<decltype(say)>},
-                                        {"stochastic", runStochasticBench<decltype(say)>},
-                                        {"instant", runInstantBench<decltype(say)>}};
-  runs.at(o.method)(o, *backend, date, say);
+  benchRuns().at(o.method)(o, *backend, date, say);
   if (!o.markdown.empty()) writeTextFile(o.markdown, "# " + text);
   return 0;
 }

@@ -40,5 +40,7 @@ struct BenchOptions {
 // The bench flags, shared by `hemirad bench` and the lean `hemirad-bench`.
 void addBenchFlags(CLI::App* cmd, BenchOptions& options);
 int runBench(BenchOptions options);
+// The --method names the bench measures, each with a run of its own.
+std::vector<std::string> benchMethods();
 
 }  // namespace hemirad

@@ -9,6 +9,7 @@
 #include "src/output/ImageFile.h"
 #include "src/output/Provenance.h"
 #include "src/solver/Projection.h"
+#include "src/viewer/ViewerWorker.h"
 #include "src/walk/ExperimentFlags.h"
 
 namespace hemirad {
@@ -133,7 +134,7 @@ void Commands::addView() {
   add(w, "--shooters-per-pass", p.shootersPerPass);
   add(w, "--converge", p.stop.targetConvergence);
   add(w, "--shots", p.stop.maxShots);
-  add(w, "--method", view.method)->transform(options::oneOfNames(methods.names()));
+  add(w, "--method", view.method)->transform(options::oneOfNames(viewerMethods()));
   InstantSettings& i = view.instant;
   i.seed = 1;              // as solve's
   i.itemSubdivision = 3;   // as solve's (src/method/instant): hemispherical shadow maps, curved edges
@@ -145,8 +146,6 @@ void Commands::addView() {
 // view runs progressive refinement (and its algorithms) or instant radiosity, whose flags it
 // refuses with the other.
 int Commands::runView() {
-  if (view.method != "progressive" && view.method != "instant")
-    throw InputError("view runs --method progressive or instant, not " + view.method);
   if (view.method != "instant")
     for (const CLI::Option* o : viewInstantOnly)
       if (*o) throw InputError(o->get_name() + " is for --method instant");

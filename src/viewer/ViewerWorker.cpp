@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <memory>
 #include <utility>
 
@@ -90,8 +91,7 @@ void workInstant(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
   }
 }
 
-void work(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
-  if (o.method == "instant") return workInstant(o, scene, link);
+void workProgressive(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
   auto backend = gl::createBackend(o.backend);
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
@@ -150,11 +150,19 @@ void work(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
   }
 }
 
+using Work = void (*)(const ViewerOptions&, const Scene&, ViewerLink&);
+
+// What the viewer shows for each method it runs, by --method name.
+const std::map<std::string, Work>& works() {
+  static const std::map<std::string, Work> table{{"instant", workInstant}, {"progressive", workProgressive}};
+  return table;
+}
+
 }  // namespace
 
 void runViewerWorker(const ViewerOptions& options, const Scene& scene, ViewerLink& link) {
   try {
-    work(options, scene, link);
+    works().at(options.method)(options, scene, link);
   } catch (...) {
     {
       std::lock_guard lock(link.mutex);
@@ -162,6 +170,12 @@ void runViewerWorker(const ViewerOptions& options, const Scene& scene, ViewerLin
     }
     link.wake();
   }
+}
+
+std::vector<std::string> viewerMethods() {
+  std::vector<std::string> names;
+  for (const auto& [name, work] : works()) names.push_back(name);
+  return names;
 }
 
 }  // namespace hemirad
