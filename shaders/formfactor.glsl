@@ -1,8 +1,8 @@
 // Exact differential-area-to-polygon form factor (Lambert's contour formula), unoccluded. The
 // CPU twin is cpu::pointToPolygon (cpu/ExactFormFactor.cpp, double): the same clipped outline
 // (stored there, streamed here) and the same atan2 sum.
-// Needs hemisphere.glsl (PI). Shapes live in SSBO_SHOOTER_SHAPES, SHAPE_STRIDE vec4s each: the
-// vertex count (x), then up to MAX_SHAPE_VERTICES vertices (the shooter tree's nodes, stochastic
+// Needs hemisphere.glsl (PI). Shapes live in SSBO_SHOOTER_SHAPES, a slot of SHAPE_STRIDE vec4s
+// each for their first piece: the vertex count (x), then up to MAX_SHAPE_VERTICES vertices (the shooter tree's nodes, stochastic
 // iteration's texels, the tests' probe cases). Both limits: src/solver/ShaderContract.h.
 
 layout(std430, binding = SSBO_SHOOTER_SHAPES) buffer ShooterShapes { vec4 shooterShape[]; };
@@ -59,15 +59,13 @@ vec3 pieceNormal(uint base) {
 
 // F to a shape of one or more convex pieces (a block over several polygons of a chart): the
 // contour integral is linear in the shape, so the pieces' sum is exact, coplanar or not. The
-// header's y holds the piece count and z the first other piece's slot (bits; 0: one piece).
+// first piece's header holds the piece count (y, bits); each header's z the offset (in vec4s,
+// bits) of the next piece, which takes only its own vertex count + 1 vec4s (SolverState.h).
 float pointToShape(vec3 x, vec3 n, uint shape, vec3 nf) {
   uint base = shape * SHAPE_STRIDE, pieces = floatBitsToUint(shooterShape[base].y);
   if (pieces <= 1u) return pointToPiece(x, n, base, nf);
-  uint first = floatBitsToUint(shooterShape[base].z);
-  float sum = pointToPiece(x, n, base, pieceNormal(base));
-  for (uint k = 1u; k < pieces; ++k) {
-    uint b = (first + k - 1u) * SHAPE_STRIDE;
+  float sum = 0.0;
+  for (uint k = 0u, b = base; k < pieces; ++k, b = floatBitsToUint(shooterShape[b].z))
     sum += pointToPiece(x, n, b, pieceNormal(b));
-  }
   return sum;
 }

@@ -41,28 +41,30 @@ int clipPart(uint c, uvec2 part, ivec2 t, out vec3 shape[CLIP_VERTICES]) {
   return n < 3 ? 0 : n <= MAX_SHAPE_VERTICES ? n : -1;
 }
 
-void writePiece(uint slot, int n, vec3 shape[CLIP_VERTICES], uint pieces, uint first) {
-  shooterShape[slot * SHAPE_STRIDE] = vec4(float(n), uintBitsToFloat(pieces), uintBitsToFloat(first), 0.0);
-  for (int i = 0; i < MAX_SHAPE_VERTICES; ++i) shooterShape[slot * SHAPE_STRIDE + 1u + uint(i)] = vec4(shape[i], 1.0);
+void writePiece(uint base, int n, vec3 shape[CLIP_VERTICES]) {
+  shooterShape[base] = vec4(float(n), 0.0, 0.0, 0.0);
+  for (int i = 0; i < MAX_SHAPE_VERTICES; ++i) shooterShape[base + 1u + uint(i)] = vec4(shape[i], 1.0);
 }
 
 // Writes texel t's shape (of polygon `polygon`'s chart) as shooter k's: its first piece in slot
-// k, the others from slot SHOOTER_SLOTS + k (MAX_TEXEL_PIECES - 1) on (formfactor.glsl's
-// pointToShape layout). Count 0 in slot k, the disc, when a piece or the piece count does not fit.
+// k, the others from slot SHOOTER_SLOTS + k (MAX_TEXEL_PIECES - 1) on, each header linking the
+// next (formfactor.glsl's pointToShape layout). Count 0 in slot k, the disc, when a piece or the piece count does not fit.
 void writeTexelShape(uint k, uint polygon, ivec2 t, uint atlasWidth) {
   uint c = polygons[polygon].vertices.z, at = uint(t.y) * atlasWidth + uint(t.x);
   uint from = texelPart[at], to = texelPart[at + 1u], extra = SHOOTER_SLOTS + k * (MAX_TEXEL_PIECES - 1u);
   vec3 shape[CLIP_VERTICES];
-  uint pieces = 0u;
+  uint pieces = 0u, previous = 0u;
   bool fits = to - from <= 2u * MAX_TEXEL_PIECES;
   for (uint e = from; e < to && fits; e += 2u) {
     int n = clipPart(c, uvec2(texelPart[e], texelPart[e + 1u]), t, shape);
     fits = n >= 0;
     if (n < 3) continue;
-    if (pieces > 0u) writePiece(extra + pieces - 1u, n, shape, 0u, 0u);
-    else writePiece(k, n, shape, 0u, 0u);
+    uint base = (pieces > 0u ? extra + pieces - 1u : k) * SHAPE_STRIDE;
+    writePiece(base, n, shape);
+    if (pieces > 0u) shooterShape[previous].z = uintBitsToFloat(base);
+    previous = base;
     ++pieces;
   }
   if (!fits || pieces == 0u) shooterShape[k * SHAPE_STRIDE] = vec4(0.0);
-  else if (pieces > 1u) shooterShape[k * SHAPE_STRIDE].yz = vec2(uintBitsToFloat(pieces), uintBitsToFloat(extra));
+  else shooterShape[k * SHAPE_STRIDE].y = uintBitsToFloat(pieces);
 }

@@ -66,9 +66,9 @@ void SolverState::bindScene() const {
 ShapeTable shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects) {
   ShapeTable out;
   out.slots.assign(rects.size() * kShapeStride, glm::vec4(0.0f));
-  auto write = [&](std::size_t slot, const Poly3& piece, float pieces, float first) {
-    out.slots[slot * kShapeStride] = glm::vec4(float(piece.size()), pieces, first, 0);
-    for (std::size_t i = 0; i < piece.size(); ++i) out.slots[slot * kShapeStride + 1 + i] = glm::vec4(glm::vec3(piece[i]), 1);
+  auto write = [&](std::size_t base, const Poly3& piece) {
+    out.slots[base] = glm::vec4(float(piece.size()), 0, 0, 0);
+    for (std::size_t i = 0; i < piece.size(); ++i) out.slots[base + 1 + i] = glm::vec4(glm::vec3(piece[i]), 1);
   };
   for (std::size_t b = 0; b < rects.size(); ++b) {
     const std::vector<Poly3> shape = atlas.blockShape(scene, rects[b]);
@@ -78,10 +78,16 @@ ShapeTable shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<
       out.discShapes += !shape.empty();
       continue;
     }
-    const std::size_t first = out.slots.size() / kShapeStride;
-    write(b, shape[0], glm::uintBitsToFloat(unsigned(shape.size())), glm::uintBitsToFloat(unsigned(first)));
-    out.slots.resize(out.slots.size() + (shape.size() - 1) * kShapeStride, glm::vec4(0.0f));
-    for (std::size_t k = 1; k < shape.size(); ++k) write(first + k - 1, shape[k], 0, 0);
+    std::size_t previous = b * kShapeStride;
+    write(previous, shape[0]);
+    out.slots[previous].y = glm::uintBitsToFloat(unsigned(shape.size()));
+    for (std::size_t k = 1; k < shape.size(); ++k) {  // packed: a piece takes its vertices + 1 vec4s
+      const std::size_t base = out.slots.size();
+      out.slots.resize(base + 1 + shape[k].size());
+      write(base, shape[k]);
+      out.slots[previous].z = glm::uintBitsToFloat(unsigned(base));
+      previous = base;
+    }
   }
   return out;
 }
