@@ -4,7 +4,9 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <cstdint>
 #include <map>
+#include <unordered_map>
 
 #include "src/scene/Welding.h"
 
@@ -24,6 +26,10 @@ std::vector<std::vector<int>> edgeNeighbours(const Welding& w) {
   for (auto& n : out) std::sort(n.begin(), n.end()), n.erase(std::unique(n.begin(), n.end()), n.end());
   return out;
 }
+
+struct Box2 {
+  glm::dvec2 lo, hi;
+};
 
 Poly2 projectAlong(const PlaneFrame& f, const Poly3& p) {
   Poly2 out;
@@ -48,23 +54,71 @@ Poly2 clipConvexPolygons(Poly2 subject, const Poly2& clipper) {
   return subject;
 }
 
-// A curved chart must not fold over itself: the candidate's projection may not overlap a
-// member's (beyond rounding), or two surfaces would share texels.
-bool overlapsMembers(const PlaneFrame& f, const Scene& scene, const std::vector<int>& members, int candidate) {
-  const Poly2 c = projectAlong(f, scene.polygons()[std::size_t(candidate)].vertices);
-  const double tiny = 1e-9 * std::abs(signedArea(c));
-  glm::dvec2 lo(1e300), hi(-1e300);
-  for (auto& v : c) lo = glm::min(lo, v), hi = glm::max(hi, v);
-  for (int m : members) {
-    const Poly2 p = projectAlong(f, scene.polygons()[std::size_t(m)].vertices);
-    glm::dvec2 plo(1e300), phi(-1e300);
-    for (auto& v : p) plo = glm::min(plo, v), phi = glm::max(phi, v);
-    if (glm::any(glm::lessThan(phi, lo)) || glm::any(glm::lessThan(hi, plo))) continue;
-    Poly2 both = clipConvexPolygons(c, p);
-    if (both.size() >= 3 && std::abs(signedArea(both)) > tiny) return true;
-  }
-  return false;
+Box2 boundsOf(const Poly2& p) {
+  Box2 b{glm::dvec2(1e300), glm::dvec2(-1e300)};
+  for (auto& v : p) b.lo = glm::min(b.lo, v), b.hi = glm::max(b.hi, v);
+  return b;
 }
+
+// A curved chart must not fold over itself: a candidate's projection may not overlap a member's
+// (beyond rounding), or two surfaces would share texels. The members' projections are kept and
+// bucketed in a uniform grid of their bounding boxes, so a candidate meets only its neighbours:
+// growing a chart of n polygons is near-linear (checking every member was quadratic: 17 % of a
+// real_400k solve's set-up).
+class ProjectedMembers {
+ public:
+  ProjectedMembers(const PlaneFrame& f, double cell) : frame_(f), cell_(cell) {}
+  void add(const Poly3& polygon) {
+    members_.push_back({projectAlong(frame_, polygon), {}});
+    members_.back().box = boundsOf(members_.back().outline);
+    const int id = int(members_.size()) - 1;
+    if (!forCells(members_.back().box, [&](std::uint64_t key) { grid_[key].push_back(id); })) large_.push_back(id);
+  }
+  bool overlaps(const Poly3& polygon) const {
+    const Poly2 c = projectAlong(frame_, polygon);
+    const Box2 box = boundsOf(c);
+    const double tiny = 1e-9 * std::abs(signedArea(c));
+    auto hits = [&](int id) {
+      const Member& m = members_[std::size_t(id)];
+      if (glm::any(glm::lessThan(m.box.hi, box.lo)) || glm::any(glm::lessThan(box.hi, m.box.lo))) return false;
+      const Poly2 both = clipConvexPolygons(c, m.outline);
+      return both.size() >= 3 && std::abs(signedArea(both)) > tiny;
+    };
+    bool found = std::any_of(large_.begin(), large_.end(), hits);
+    const bool bucketed = forCells(box, [&](std::uint64_t key) {
+      if (found) return;
+      if (auto it = grid_.find(key); it != grid_.end()) found = std::any_of(it->second.begin(), it->second.end(), hits);
+    });
+    if (!bucketed && !found)  // a candidate over many cells: every member
+      for (std::size_t id = 0; id < members_.size() && !found; ++id) found = hits(int(id));
+    return found;
+  }
+
+ private:
+  struct Member {
+    Poly2 outline;
+    Box2 box;
+  };
+  static constexpr long kMaxCells = 64;
+  // Calls `visit` with each grid cell `box` covers; false (and no call) past kMaxCells cells.
+  template <class Visit>
+  bool forCells(const Box2& box, Visit visit) const {
+    const glm::dvec2 lo = glm::floor(box.lo / cell_), hi = glm::floor(box.hi / cell_);
+    const double range = 2e9;  // cell indices as 32-bit integers
+    if (!(glm::all(glm::greaterThan(lo, glm::dvec2(-range))) && glm::all(glm::lessThan(hi, glm::dvec2(range)))) ||
+        (hi.x - lo.x + 1) * (hi.y - lo.y + 1) > kMaxCells)
+      return false;
+    for (double y = lo.y; y <= hi.y; ++y)
+      for (double x = lo.x; x <= hi.x; ++x)
+        visit(std::uint64_t(std::uint32_t(std::int32_t(x))) << 32 | std::uint32_t(std::int32_t(y)));
+    return true;
+  }
+  const PlaneFrame& frame_;
+  double cell_;
+  std::vector<Member> members_;
+  std::unordered_map<std::uint64_t, std::vector<int>> grid_;
+  std::vector<int> large_;  // members over kMaxCells cells: checked against every candidate
+};
 
 // The merged outline of coplanar members: the boundary edges (those whose reverse no other
 // member holds) chained into one loop, collinear vertices dropped. Empty unless that loop is
@@ -113,18 +167,21 @@ ChartGroup growChart(const Scene& scene, const std::vector<std::vector<int>>& ne
   g.axis = scene.polygons()[std::size_t(seed)].normal;
   const PlaneFrame f = planeFrame(scene.polygons()[std::size_t(seed)].vertices, g.axis);
   const double cosAngle = std::cos(std::max(angle, kCoplanarRadians)), cosPlanar = std::cos(kCoplanarRadians);
+  const Box2 seedBox = boundsOf(projectAlong(f, scene.polygons()[std::size_t(seed)].vertices));
+  ProjectedMembers members(f, 2 * std::max(seedBox.hi.x - seedBox.lo.x, seedBox.hi.y - seedBox.lo.y));
   std::deque<int> queue{seed};
   taken[std::size_t(seed)] = 1;
   while (!queue.empty()) {
     const int p = queue.front();
     queue.pop_front();
     g.polygons.push_back(p);
+    members.add(scene.polygons()[std::size_t(p)].vertices);
     for (int q : neighbours[std::size_t(p)]) {
       if (taken[std::size_t(q)] || !joins(scene, seed, q, cosAngle)) continue;
       const bool coplanar = glm::dot(scene.polygons()[std::size_t(q)].normal, g.axis) > cosPlanar &&
                             std::abs(glm::dot(scene.polygons()[std::size_t(q)].vertices[0] - f.origin, g.axis)) <=
                                 1e-9 * (1 + glm::length(scene.polygons()[std::size_t(q)].vertices[0] - f.origin));
-      if (!coplanar && overlapsMembers(f, scene, g.polygons, q)) continue;
+      if (!coplanar && members.overlaps(scene.polygons()[std::size_t(q)].vertices)) continue;
       g.planar = g.planar && coplanar;
       taken[std::size_t(q)] = 1;
       queue.push_back(q);
