@@ -74,3 +74,14 @@ TEST_CASE("No test name holds a semicolon, which ctest's discovery splits into t
     CHECK(t.name.find(';') == std::string::npos);
   }
 }
+
+TEST_CASE("Every figure shipped in docs/ is drawn by the plotting code (matplotlib), none by hand", "[cpu]") {
+  int figures = 0;
+  for (const auto& f : fs::recursive_directory_iterator(test::sourcePath("docs"))) {
+    if (f.path().extension() != ".svg") continue;
+    ++figures;
+    INFO(f.path());
+    CHECK(read(f.path()).find("Matplotlib") != std::string::npos);
+  }
+  CHECK(figures > 0);
+}
