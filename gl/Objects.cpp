@@ -178,6 +178,13 @@ void VertexArray::uintAttribute(GLuint location, GLuint offset) {
   glVertexArrayAttribIFormat(id_, location, 1, GL_UNSIGNED_INT, offset);
   glVertexArrayAttribBinding(id_, location, 0);
 }
+void VertexArray::instanceUintAttribute(GLuint location, const Buffer& buffer) {
+  glVertexArrayVertexBuffer(id_, 1, buffer.id(), 0, sizeof(GLuint));
+  glVertexArrayBindingDivisor(id_, 1, 1);
+  glEnableVertexArrayAttrib(id_, location);
+  glVertexArrayAttribIFormat(id_, location, 1, GL_UNSIGNED_INT, 0);
+  glVertexArrayAttribBinding(id_, location, 1);
+}
 void VertexArray::indexBuffer(const Buffer& buffer) { glVertexArrayElementBuffer(id_, buffer.id()); }
 void VertexArray::bind() const { glBindVertexArray(id_); }
 

@@ -130,6 +130,9 @@ class VertexArray : public Handle<deleteVertexArray> {
   void vertexBuffer(const Buffer& buffer, GLsizei stride);
   void floatAttribute(GLuint location, GLint components, GLuint offset);
   void uintAttribute(GLuint location, GLuint offset);  // one GLuint, not normalised
+  // Vertex buffer binding 1, advanced once per instance: attribute `location` is GLuint
+  // `buffer[baseInstance + instance]` (an indirect draw's baseInstance picks the element).
+  void instanceUintAttribute(GLuint location, const Buffer& buffer);
   void indexBuffer(const Buffer& buffer);               // GLuint indices (drawIndexedTriangles)
   void bind() const;
 };

@@ -1,5 +1,7 @@
 #include "gl/State.h"
 
+#include "gl/Objects.h"
+
 namespace hemirad::gl {
 
 namespace {
@@ -29,6 +31,11 @@ void drawTriangles(std::size_t vertices, int instances) {
 
 void drawIndexedTriangles(std::size_t indices, int instances) {
   glDrawElementsInstanced(GL_TRIANGLES, GLsizei(indices), GL_UNSIGNED_INT, nullptr, instances);
+}
+
+void drawIndexedIndirect(const Buffer& commands, std::size_t count) {
+  commands.bind(GL_DRAW_INDIRECT_BUFFER);
+  glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, GLsizei(count), 0);
 }
 
 void finish() { glFinish(); }

@@ -9,6 +9,8 @@
 
 namespace hemirad::gl {
 
+class Buffer;
+
 enum class DepthFunc : GLenum { Less = GL_LESS, Greater = GL_GREATER, Equal = GL_EQUAL, Always = GL_ALWAYS };
 
 // Clip-space depth. Standard: [-1, 1], the item buffer's distance / far with GL_LESS. Reversed:
@@ -52,6 +54,9 @@ void barrier(Barrier bits);
 void drawTriangles(std::size_t vertices, int instances = 1);
 // The same from the bound vertex array's GLuint index buffer: shared vertices are shaded once.
 void drawIndexedTriangles(std::size_t indices, int instances = 1);
+// Indexed triangles as `count` DrawElementsIndirectCommand records of `commands` (written by a
+// shader: a Barrier::Command first), from the bound vertex array's index buffer.
+void drawIndexedIndirect(const Buffer& commands, std::size_t count);
 // Waits for every command enqueued so far (timing; synchronised readback is implicit).
 void finish();
 

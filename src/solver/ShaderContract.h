@@ -17,6 +17,8 @@
   X(SSBO_CONTROL, 3)              /* control.glsl: the pass's shooters, stop rule, history */            \
   X(SSBO_SHOOTER_SHAPES, 11)      /* formfactor.glsl: the shooters' exact shapes */                      \
   X(SSBO_PLANES, 12)              /* itembuffer.frag: per polygon unit normal and offset */              \
+  X(SSBO_ITEM_CHUNKS, 16)         /* cull_items.comp: per item-mesh chunk its bounds and indices */      \
+  X(SSBO_ITEM_COMMANDS, 17)       /* cull_items.comp: the item buffer's indirect draws */                \
   X(SSBO_NODES, 13)               /* shooter_tree.glsl: the shooter blocks' quadtrees */                 \
   X(SSBO_NODE_STATS, 14)          /* shooter_tree.glsl: each node's unshot sums */                       \
   X(SSBO_REDUCE_IN, 2)            /* reduce_entry.glsl: a ranking level read */                          \
