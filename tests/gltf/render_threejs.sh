@@ -8,7 +8,7 @@ three_version=0.187.0
 browser=$(command -v chromium || command -v chromium-browser || true)
 [ -n "$browser" ] || { echo "chromium is not installed (Debian package chromium): skipped"; exit 77; }
 . "$src/tests/gltf/npm_cache.sh"
-npm_package three "$three_version"
+npm_package three "$three_version" face29ee2de9bcc31a1b573a76f224e35e0b2894
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 /usr/bin/python3 "$src/tests/gltf/render_threejs.py" "$hemirad" "$src" "$npm_modules" "$browser" "$tmp"

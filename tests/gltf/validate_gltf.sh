@@ -12,7 +12,7 @@ set -euo pipefail
 hemirad=$1 src=$2
 validator_version=2.0.0-dev.3.10
 . "$src/tests/gltf/npm_cache.sh"
-npm_package gltf-validator "$validator_version"
+npm_package gltf-validator "$validator_version" 9b09225db864fe3f0a584259f65d087e2213a93a
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 bake() {  # bake SCENE OUT.glb
