@@ -1,5 +1,5 @@
 // Per pass, the unshot statistics of every shooter-tree node (shooter_tree.glsl): one
-// workgroup per block, its threads split evenly over the block's leaves (each strides over
+// workgroup per block of SSBO_BLOCK_LIST (the blocks of one workgroup size, ShooterTree.h statsThreads), its threads split evenly over the block's leaves (each strides over
 // its leaf's texels), a fixed-order tree sum per leaf, then the leaves fold into their parents
 // level by level. The ranking then reads one entry per block, and the descent one per node, instead
 // of walking texels in one invocation per shooter. BLOCK_THREADS: at least one per leaf.
@@ -13,7 +13,8 @@ layout(local_size_x = BLOCK_THREADS) in;
 layout(binding = IMAGE_RADIOSITY, rgba32f) uniform readonly image2D radiosity;  // a: received importance I - R
 layout(binding = IMAGE_DELTA_B, rgba32f) uniform readonly image2D deltaB;     // a: unshot importance dI
 
-uniform uint blockCount;
+layout(std430, binding = SSBO_BLOCK_LIST) readonly buffer BlockList { uint blockList[]; };
+uniform uint blockCount;  // in the list
 
 const float NONE = 3.4e38;
 const uint THREADS = uint(BLOCK_THREADS);
@@ -63,8 +64,9 @@ uint levelStart(uint block, uint d) {
 }
 
 void main() {
-  uint block = linearGroup(), l = gl_LocalInvocationID.x;
-  if (block >= blockCount) return;  // past the count in the tiled grid: the whole group leaves
+  uint group = linearGroup(), l = gl_LocalInvocationID.x;
+  if (group >= blockCount) return;  // past the count in the tiled grid: the whole group leaves
+  uint block = blockList[group];
   uint depth = nodes[block].depth, leaves = 1u << (2u * depth), threads = THREADS / leaves;
   uint leaf = l / threads, sub = l % threads;
   partial[l] = leafPart(nodes[nodes[block].firstLeaf + leaf].rect, sub, threads);

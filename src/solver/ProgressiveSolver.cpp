@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstring>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -72,7 +73,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
 
 // The shooter blocks, their quadtrees (cut where unshot radiosity is not uniform), the nodes'
 // exact shapes and the pass that sums each node's unshot state. node_stats.comp gives each block
-// a workgroup of as many threads as the largest block has texels, at least one per leaf, at most 256.
+// a workgroup of statsThreads(block) threads, one program per size: a thread per texel, 16-256.
 void ProgressiveSolver::setUpTree(const std::vector<ShooterBlock>& blocks, const gl::Defines& defines) {
   const ShooterTree tree = buildShooterTree(state_.atlas, blocks, settings_.splitDepth);
   blockCount_ = tree.blocks;
@@ -89,12 +90,18 @@ void ProgressiveSolver::setUpTree(const std::vector<ShooterBlock>& blocks, const
                           fmt::format("the shapes of {} shooter-tree nodes", tree.nodes.size()));
   discShapes_ = shapes.discShapes;
   shapes_ = gl::Buffer(std::span<const glm::vec4>(shapes.slots));
-  const unsigned threads = std::clamp(std::bit_ceil(tree.largestBlock), 1u << (2 * tree.depth), 256u);
-  gl::Defines statsDefines = defines;
-  statsDefines.push_back({"BLOCK_THREADS", std::to_string(threads)});
-  if (settings_.importanceDriven()) statsDefines.push_back({"IMPORTANCE_DRIVEN", "1"});
-  stats_ = computeProgram("node_stats.comp", statsDefines);
-  stats_.set("blockCount", unsigned(blockCount_));
+  std::map<unsigned, std::vector<std::uint32_t>> byThreads;
+  for (std::size_t b = 0; b < tree.blocks; ++b) byThreads[statsThreads(tree, b)].push_back(std::uint32_t(b));
+  for (const auto& [threads, list] : byThreads) {
+    gl::Defines statsDefines = defines;
+    statsDefines.push_back({"BLOCK_THREADS", std::to_string(threads)});
+    if (settings_.importanceDriven()) statsDefines.push_back({"IMPORTANCE_DRIVEN", "1"});
+    StatsGroup& g = stats_.emplace_back();
+    g.program = computeProgram("node_stats.comp", statsDefines);
+    g.blocks = gl::Buffer(std::span<const std::uint32_t>(list));
+    g.count = unsigned(list.size());
+    g.program.set("blockCount", g.count);
+  }
 }
 
 // The reduction levels above the blocks: each workgroup of a level ranks 1024 entries and
@@ -154,8 +161,11 @@ void ProgressiveSolver::selectPass(bool importanceOnly) {
   nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODES);
   nodeStats_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODE_STATS);
   if (perspective_) perspective_->bind();
-  stats_.use();
-  gl::dispatchLinear(blockCount_);  // a workgroup a block: past 65,535 blocks the grid tiles
+  for (const StatsGroup& g : stats_) {  // a workgroup a block: past 65,535 blocks the grid tiles
+    g.blocks.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BLOCK_LIST);
+    g.program.use();
+    gl::dispatchLinear(g.count);
+  }
   gl::barrier(gl::Barrier::Storage);
   if (!importanceOnly) rankPass(settings_.importanceDriven() ? Rank::PowerByImportance : Rank::Power, false);
   if (settings_.importanceDriven()) rankPass(Rank::Importance, true);

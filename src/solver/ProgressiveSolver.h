@@ -132,7 +132,14 @@ class ProgressiveSolver final : public Solver {
   SolverState& state_;
   ProgressiveSettings settings_;
   ShootingPlan plan_;
-  gl::Program stats_, reduce_, select_, gather_;
+  // node_stats.comp, once per workgroup size (statsThreads): the program and its blocks.
+  struct StatsGroup {
+    gl::Program program;
+    gl::Buffer blocks;
+    unsigned count = 0;
+  };
+  std::vector<StatsGroup> stats_;
+  gl::Program reduce_, select_, gather_;
   gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
   std::size_t discShapes_ = 0;
   gl::Buffer shapes_;  // per node: its exact shape (shapeTable), what the gather integrates over

@@ -21,6 +21,7 @@
   X(SSBO_ITEM_COMMANDS, 17)       /* cull_items.comp: the item buffer's indirect draws */                \
   X(SSBO_NODES, 13)               /* shooter_tree.glsl: the shooter blocks' quadtrees */                 \
   X(SSBO_NODE_STATS, 14)          /* shooter_tree.glsl: each node's unshot sums */                       \
+  X(SSBO_BLOCK_LIST, 18)          /* node_stats.comp: the blocks of one workgroup size */                \
   X(SSBO_REDUCE_IN, 2)            /* reduce_entry.glsl: a ranking level read */                          \
   X(SSBO_REDUCE_OUT, 4)           /* reduce.comp: the level written */                                   \
   X(SSBO_PYRAMID, 5)              /* pyramid.glsl: the luminance sum pyramid */                          \

@@ -74,4 +74,15 @@ ShooterTree buildShooterTree(const Atlas& atlas, const std::vector<ShooterBlock>
   return tree;
 }
 
+unsigned statsThreads(const ShooterTree& tree, std::size_t block) {
+  const ShooterNode& b = tree.nodes[block];
+  const unsigned leaves = 1u << (2 * b.depth);
+  unsigned largestLeaf = 1;
+  for (unsigned k = 0; k < leaves; ++k) {
+    const glm::ivec4 r = tree.nodes[b.firstLeaf + k].rect;
+    largestLeaf = std::max(largestLeaf, unsigned(std::max(r.z, 0) * std::max(r.w, 0)));
+  }
+  return std::clamp(std::bit_ceil(leaves * largestLeaf), std::max(16u, leaves), 256u);
+}
+
 }  // namespace hemirad

@@ -37,6 +37,12 @@ struct ShooterTree {
   int depth = 0;              // of the deepest block
 };
 
+// Threads node_stats.comp gives block b: one per texel of its largest leaf times its leaves (so
+// each thread sums at most one texel), a power of two in [16, 256], never fewer than its leaves.
+// Blocks share a workgroup size by this, so a scene of many small charts does not run 256
+// threads for each 4-texel block; the sums are those of a single size (one texel a thread).
+unsigned statsThreads(const ShooterTree& tree, std::size_t block);
+
 // `depth` (0..kMaxSplitDepth) levels below every block, fewer for blocks too small to cut.
 ShooterTree buildShooterTree(const Atlas& atlas, const std::vector<ShooterBlock>& blocks, int depth);
 
