@@ -22,7 +22,11 @@ uniform float farDistance;
 bool chunkVisible(vec3 lo, vec3 hi, uint shooter, int face) {
   vec3 o = control.shooter[shooter].positionArea.xyz, n = control.shooter[shooter].normal.xyz;
   float slack = 1e-4 * farDistance, highest = -3.4e38;
+#ifdef HEMICUBE
   vec4 least = vec4(3.4e38);  // per frustum side: the smallest excess of a corner beyond it
+#else
+  vec4 least = vec4(-3.4e38);  // one map of the whole hemisphere: no sides
+#endif
   for (int k = 0; k < 8; ++k) {
     vec3 p = vec3((k & 1) != 0 ? hi.x : lo.x, (k & 2) != 0 ? hi.y : lo.y, (k & 4) != 0 ? hi.z : lo.z);
     vec3 local = shooterLocal(p, o, n);
