@@ -69,6 +69,11 @@ struct Report {
   std::string hash() const { return json.contains("radiosity_hash") ? json["radiosity_hash"] : json["image_hash"]; }
 };
 
+// The method of `methods` called `name` (GENERATE runs a test once per registered name).
+const MethodUnit& named(const std::vector<std::unique_ptr<MethodUnit>>& methods, const std::string& name) {
+  return **std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return m->name() == name; });
+}
+
 Report solveReport(const MethodUnit& method, const std::string& flags, const std::string& name) {
   const std::string path = test::tempPath("contract-" + method.name() + "-" + name + ".json");
   test::Run run = test::hemirad("solve " + kScene + " --quiet --method " + method.name() + " " + method.quickFlags() +
@@ -113,8 +118,7 @@ TEST_CASE("Every method killed in a checkpoint write resumes from the previous o
           "[cli][checkpoint]") {
   const std::string name = GENERATE(from_range(methodNames()));
   const std::vector<std::unique_ptr<MethodUnit>> methods = makeMethods();
-  const MethodUnit& method =
-      **std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return m->name() == name; });
+  const MethodUnit& method = named(methods, name);
   INFO("--method " << method.name());
   if (!method.checkpoints()) {
     const std::string empty = test::tempPath("contract-empty.obj");  // reading it would be an error of its own
@@ -151,8 +155,7 @@ TEST_CASE("Every method solves a closed box of emitting grey walls to the B it d
           "[gl][closed-box]") {
   const std::string name = GENERATE(from_range(methodNames()));
   const std::vector<std::unique_ptr<MethodUnit>> methods = makeMethods();
-  const MethodUnit& method =
-      **std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return m->name() == name; });
+  const MethodUnit& method = named(methods, name);
   const ClosedBoxRun box = method.closedBox();
   REQUIRE(box.tolerance > 0);
   std::vector<std::string> images;
