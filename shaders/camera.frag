@@ -2,6 +2,18 @@
 // bleed into each other, a chart's polygons (a tessellated wall) blend across their edges, and
 // partial edge texels are used as they are. Its CPU twin is Atlas::sample.
 #include "scene.glsl"
+#ifdef PER_PIXEL_DIRECT
+// --direct per-pixel (src/output/DirectLight.h): the atlas holds the indirect part only; a first
+// pass shows E + indirect, a second over the same depths (GL_EQUAL) adds each pixel's direct light.
+#include "hemisphere.glsl"
+#include "formfactor.glsl"
+#include "segment.glsl"
+#include "bvh.glsl"
+#include "bvh_segment.glsl"
+#include "direct.glsl"
+in vec3 vPosition;
+uniform bool directPass;
+#endif
 
 layout(binding = SAMPLER_ATLAS_VALUES) uniform sampler2D radiosity;
 // Seed 004's display-only ambient term (ambient.comp): rho_j A is added to what is shown.
@@ -12,6 +24,12 @@ flat in uint vPolygon;
 layout(location = 0) out vec4 color;
 
 void main() {
+#ifdef PER_PIXEL_DIRECT
+  if (directPass) {
+    color = vec4(directLight(vPosition, vPolygon), 0.0);  // added to the first pass's colour
+    return;
+  }
+#endif
   uint chart = chartOf(vPolygon);
   vec2 c = vAtlas - 0.5;
   ivec2 i0 = ivec2(floor(c));
@@ -35,5 +53,8 @@ void main() {
   }
   vec3 b = weight > 0.0 ? sum / weight : vec3(0.0);
   if (addAmbient) b += polygons[vPolygon].reflectance.rgb * ambient.rgb;
+#ifdef PER_PIXEL_DIRECT
+  b += polygons[vPolygon].emission.rgb;  // E cancelled in B - B_direct (src/solver/DirectSplit.h)
+#endif
   color = vec4(b, 1.0);
 }

@@ -5,9 +5,16 @@ layout(location = 2) in uint polygon;
 uniform mat4 viewProjection;
 out vec2 vAtlas;
 flat out uint vPolygon;
+#ifdef PER_PIXEL_DIRECT
+out vec3 vPosition;
+invariant gl_Position;  // both passes find the same depths (GL_EQUAL)
+#endif
 
 void main() {
   gl_Position = viewProjection * vec4(position, 1.0);
   vAtlas = atlasCoord;
   vPolygon = polygon;
+#ifdef PER_PIXEL_DIRECT
+  vPosition = position;
+#endif
 }

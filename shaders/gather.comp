@@ -8,6 +8,8 @@
 // Perspective-driven solves (seed 004 §5) restrict who receives radiosity: viewMode 1 only
 // surfaces in view; viewMode 2 (deferred passes) only surfaces becoming visible, each receiving
 // its stored table entry from the pass's blocks instead of their unshot radiosity.
+// DIRECT_ONLY (src/solver/DirectSplit.h): receivers keep what they receive in B but not in dB, so
+// only the emitters ever shoot and B ends as E + the direct light, element by element.
 #include "hemisphere.glsl"
 #include "scene.glsl"
 #include "control.glsl"
@@ -16,6 +18,7 @@
 #ifdef REFINE_NEAR
 #include "shooter_tree.glsl"
 #include "bvh.glsl"
+#include "bvh_segment.glsl"
 #include "refine_near.glsl"
 #endif
 #ifdef PERSPECTIVE
@@ -79,5 +82,8 @@ void main() {
   vec3 rho = polygons[polygon].reflectance.rgb;
   vec4 delta = vec4(rho, 1.0) * received;  // importance arrives already reflected (shooter_block.glsl)
   imageStore(radiosity, t, imageLoad(radiosity, t) + delta);
+#ifdef DIRECT_ONLY
+  delta.rgb = vec3(0.0);  // received light is not handed on (importance, in alpha, still is)
+#endif
   imageStore(deltaB, t, imageLoad(deltaB, t) * keep + delta);
 }

@@ -4,7 +4,7 @@
 // a receiver nearer the shot node than refineNear times its side, the node's quadrants are visited,
 // descending while the receiver stays near, each seen from its own light centre with exact
 // visibility (the BVH nominates polygons, blocksSegment decides: no item buffer was drawn from
-// these origins). Needs visibility.glsl, shooter_tree.glsl and bvh.glsl.
+// these origins). Needs visibility.glsl, shooter_tree.glsl, bvh.glsl and bvh_segment.glsl.
 uniform float refineNear;
 
 // x is near node n: within refineNear of its sides (its area's square root) from its centre.
@@ -12,30 +12,6 @@ bool nearNode(uint n, vec3 x) {
   vec4 ca = nodes[n].centreArea;
   vec3 d = x - ca.xyz;
   return dot(d, d) < refineNear * refineNear * ca.w;
-}
-
-// Whether any polygon but the receiver's chart's blocks the segment o -> x.
-bool segmentBlocked(vec3 o, vec3 x, uint receiverChart, float eps) {
-  vec3 d = x - o;
-  vec3 invD = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));  // an axis-parallel segment: no 0 * inf
-  uint stack[BVH_STACK];
-  int top = 0;
-  stack[top++] = 0u;
-  while (top > 0) {
-    uint n = stack[--top];
-    if (!bvhHitBox(n, o, invD, 1.0)) continue;
-    uint first = floatBitsToUint(bvhNode[n].lo.w), count = floatBitsToUint(bvhNode[n].hi.w);
-    if (count == 0u) {
-      stack[top++] = first;
-      stack[top++] = n + 1u;
-      continue;
-    }
-    for (uint i = first; i < first + count; ++i) {
-      uint q = floatBitsToUint(bvhTriangle[i].v0.w);
-      if (chartOf(q) != receiverChart && blocksSegment(q, o, x, eps)) return true;
-    }
-  }
-  return false;
 }
 
 // The part of shot node `root` that receiver x (normal nr, on `polygon`) sees, for x near it:

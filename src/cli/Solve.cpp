@@ -13,12 +13,14 @@
 #include "src/scene/Atlas.h"
 #include "src/scene/Camera.h"
 #include "src/solver/Checkpoint.h"
+#include "src/solver/DirectSplit.h"
 #include "src/base/Interrupt.h"
 #include "src/base/Error.h"
 #include "src/output/GltfWriter.h"
 #include "src/output/ImageFile.h"
 #include "src/output/PlyWriter.h"
 #include "src/output/Progress.h"
+#include "src/output/DirectLight.h"
 #include "src/output/Renderer.h"
 #include "src/output/Report.h"
 #include "src/output/SeamStitch.h"
@@ -124,19 +126,45 @@ int solveInBatches(const SolveOptions& o, const SolverState& state, Solver& solv
   return 0;
 }
 
+double msSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The camera view: B looked up in the atlas, or with `--direct per-pixel` (only when --out or
+// --image is asked for) E + each pixel's exact direct light + the indirect part of B
+// (src/solver/DirectSplit.h, src/output/DirectLight.h), timed into `run`.
+Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, const SolverState& state,
+                 const AtlasRun& method, const Camera& camera, const std::vector<glm::vec4>& solved,
+                 const std::vector<glm::vec4>& shown, RunInfo& run) {
+  Renderer renderer(state);
+  renderer.setAmbient(o.ambient.value_or(false) && method.ambient());
+  auto t0 = std::chrono::steady_clock::now();
+  const bool image = !o.out.empty() || !o.image.empty();
+  const std::vector<glm::vec4> direct = image ? method.directOnly(camera, double(o.width) / o.height) : std::vector<glm::vec4>{};
+  if (direct.empty()) {
+    renderer.show(shown);
+    return renderer.render(camera, o.width, o.height, o.supersample);
+  }
+  renderer.show(stitchSeams(scene, atlas, indirectPart(solved, direct)));
+  const DirectLight light(scene, state.farDistance);
+  renderer.usePerPixelDirect(light);
+  run.directSplitMs = msSince(t0);
+  t0 = std::chrono::steady_clock::now();
+  Image view = renderer.render(camera, o.width, o.height, o.supersample);
+  run.directPixelsMs = msSince(t0);
+  return view;
+}
+
 // The camera render (EXR, PNG), the atlas, the PLY and the glTF the user asked for, staged.
 // Returns the lightmap's line for stderr, printed once the files are written ("" without --gltf).
 std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene& scene, const Atlas& atlas,
                         const SolverState& state, const AtlasRun& run, const Camera& camera,
-                        const std::vector<glm::vec4>& solved) {
+                        const std::vector<glm::vec4>& solved, RunInfo& info) {
   Image view;
   double scale = 1;
   const std::vector<glm::vec4> B = stitchSeams(scene, atlas, solved);  // what is shown: seams agree
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
-    Renderer renderer(state);
-    renderer.show(B);
-    renderer.setAmbient(o.ambient.value_or(false) && run.ambient());
-    view = renderer.render(camera, o.width, o.height, o.supersample);
+    view = cameraView(o, scene, atlas, state, run, camera, solved, B, info);
     scale = exposureScale(view, o.exposure);
   }
   if (!o.out.empty()) outputs.add("--out", o.out, encodeRender(o.out, view, scale));
@@ -216,9 +244,9 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   const double solveMs = progress.elapsedSeconds() * 1e3;
   const std::vector<glm::vec4> B = state.readRadiosity();
   OutputBatch outputs;  // all or none: a full disk on the last leaves none of the others
-  const std::string lightmapLine = stageImages(outputs, o, scene, atlas, state, *run, camera, B);
-
   RunInfo info = describeRun(o, *backend, atlas, *run);
+  const std::string lightmapLine = stageImages(outputs, o, scene, atlas, state, *run, camera, B, info);
+
   info.status = status;
   info.totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
   info.radiosityHash = radiosityHash(atlas, B);

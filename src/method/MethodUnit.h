@@ -4,6 +4,7 @@
 // src/method/Registry.cpp; the contract tests (tests/MethodContractTest.cpp) then run over it.
 #pragma once
 #include <functional>
+#include <glm/glm.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -74,6 +75,10 @@ class AtlasRun {
   virtual bool ambient() const = 0;
   // The report's fields this method fills (item buffer, shots of each kind, ...).
   virtual void describe(RunInfo& run) const = 0;
+  // `--direct per-pixel`: B of the emitters' light alone, per element (src/solver/DirectSplit.h),
+  // so camera images compute direct light per pixel and take only the rest from the solution.
+  // Empty (the default, `--direct atlas`): images show B.
+  virtual std::vector<glm::vec4> directOnly(const Camera&, double /*aspect*/) const { return {}; }
   // How far the solve got, for the summary line.
   virtual std::string reached(const SolveStatus& status) const = 0;
   // A walkthrough along o.cameraPath instead of one image (only methods that accept --camera-path).

@@ -55,6 +55,25 @@ void Renderer::show(const std::vector<glm::vec4>& values) {
   shown_->upload(GL_RGBA, GL_FLOAT, values.data());
 }
 
+void Renderer::usePerPixelDirect(const DirectLight& direct) {
+  direct_ = &direct;
+  directProgram_ = renderProgram("camera.vert", "camera.frag", DirectLight::defines());
+}
+
+// The second pass of a per-pixel-direct view: each visible fragment (the depths the first pass
+// left, GL_EQUAL: the same program and vertices give the same depths) adds its direct light.
+void Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
+  gl::RasterState add = gl::cameraView(width, height);
+  add.depthFunc = gl::DepthFunc::Equal, add.depthWrite = false, add.additiveBlend = true;
+  add.apply();
+  direct_->bind(directProgram_);
+  directProgram_.set("directPass", 1);
+  directProgram_.set("viewProjection", &vp[0][0]);
+  directProgram_.use();
+  mesh_.draw();
+  gl::checkErrors("per-pixel direct light");
+}
+
 Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
   const int s = std::max(1, supersample), w = width * s, h = height * s;
   gl::Texture color(GL_RGBA32F, w, h), depth(GL_DEPTH_COMPONENT32F, w, h);
@@ -74,11 +93,15 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   const bool ambient = ambient_ && &atlasValues == &shown();
   if (ambient) updateAmbient();
   ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_AMBIENT);
-  program_.set("addAmbient", int(ambient));
-  program_.set("viewProjection", &vp[0][0]);
-  program_.use();
+  const bool direct = direct_ && &atlasValues == &shown();  // other values (error maps) are shown as they are
+  const gl::Program& program = direct ? directProgram_ : program_;
+  program.set("addAmbient", int(ambient));
+  program.set("viewProjection", &vp[0][0]);
+  if (direct) program.set("directPass", 0);
+  program.use();
   mesh_.draw();
   gl::checkErrors("camera render");
+  if (direct) drawDirect(vp, w, h);
 
   std::vector<float> rgba(size_t(w) * h * 4);
   color.read(GL_RGBA, GL_FLOAT, rgba.size() * sizeof(float), rgba.data());

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gl/Objects.h"
+#include "src/output/DirectLight.h"
 #include "src/scene/Camera.h"
 #include "src/solver/CameraMesh.h"
 #include "src/output/Image.h"
@@ -27,6 +28,10 @@ class Renderer {
   // From now on render() shows these values (atlas order) instead of B: B with its chart seams
   // stitched (src/output/SeamStitch.h); the ambient term still applies.
   void show(const std::vector<glm::vec4>& values);
+  // `--direct per-pixel`: from now on render() shows E + each pixel's direct light, computed
+  // exactly (shaders/direct.glsl), + the shown values, which must then be the indirect part
+  // (src/solver/DirectSplit.h). The renderer keeps `direct`.
+  void usePerPixelDirect(const DirectLight& direct);
 
  private:
   const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
@@ -34,7 +39,10 @@ class Renderer {
   const SolverState& state_;
   void updateAmbient();
 
-  gl::Program program_, ambientProgram_;
+  void drawDirect(const glm::mat4& vp, int width, int height);
+
+  gl::Program program_, ambientProgram_, directProgram_;
+  const DirectLight* direct_ = nullptr;
   gl::Buffer ambientTerm_;
   CameraMesh mesh_;
   bool ambient_ = false;

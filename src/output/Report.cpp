@@ -63,6 +63,9 @@ nlohmann::json reportJson(const RunInfo& r) {
   };
   if (!r.preset.empty()) report["preset"] = r.preset;
   if (!r.projection.empty()) report["projection"] = r.projection;
+  if (!r.direct.empty()) report["direct"] = r.direct;
+  if (r.direct == "per-pixel")
+    report["direct_ms"] = {{"total", r.directSplitMs + r.directPixelsMs}, {"split", r.directSplitMs}, {"pixels", r.directPixelsMs}};
   return report;
 }
 

@@ -17,6 +17,10 @@ struct RunInfo {
   std::string projection, preset;
   double texelSize = 0;
   int itemSubdivision = 0, itemResolution = 0, shootLevel = 0, shootersPerPass = 0;
+  // Progressive: camera images' direct light, "atlas" or "per-pixel" (empty: not the method's), and
+  // per-pixel's cost: the emitters-only solve (src/solver/DirectSplit.h) and the camera render.
+  std::string direct;
+  double directSplitMs = 0, directPixelsMs = 0;
   double refineNear = 0;  // progressive: receivers nearer than this many shooter sides see its parts
   unsigned importanceShots = 0;  // importance-driven solves
   unsigned deliveryShots = 0;    // perspective-driven solves: item buffers that delivered stored entries

@@ -57,6 +57,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   gl::Defines gatherDefines = itemBuffer_->defines();
   gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
   setUpRefinement(gatherDefines);
+  if (settings.directOnly) gatherDefines.push_back({"DIRECT_ONLY", "1"});
   gather_ = computeProgram("gather.comp", gatherDefines);
   if (refinesNear()) gather_.set("refineNear", float(settings.refineNear));
   if (perspective) {

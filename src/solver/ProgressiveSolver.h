@@ -67,6 +67,8 @@ struct ProgressiveSettings {
   // Per-pass times: GPU stamps on a sample of the passes, every shot synchronised, or none.
   gl::TimerMode timings = gl::TimerMode::Gpu;
   StopRule stop;
+  // Receivers keep received light in B only: the emitters alone shoot (src/solver/DirectSplit.h).
+  bool directOnly = false;
 };
 
 class ProgressiveSolver final : public Solver {

@@ -1,0 +1,28 @@
+// Exact segment visibility through the scene's BVH: the BVH nominates the polygons whose
+// triangles' boxes the segment crosses, blocksSegment (segment.glsl) decides. Shared by the
+// near-shooter refinement (refine_near.glsl) and per-pixel direct light (direct.glsl). Needs
+// scene.glsl, segment.glsl and bvh.glsl.
+
+// Whether any polygon but the receiver chart's blocks the segment o -> x (NO_POLYGON: any polygon).
+bool segmentBlocked(vec3 o, vec3 x, uint receiverChart, float eps) {
+  vec3 d = x - o;
+  vec3 invD = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));  // an axis-parallel segment: no 0 * inf
+  uint stack[BVH_STACK];
+  int top = 0;
+  stack[top++] = 0u;
+  while (top > 0) {
+    uint n = stack[--top];
+    if (!bvhHitBox(n, o, invD, 1.0)) continue;
+    uint first = floatBitsToUint(bvhNode[n].lo.w), count = floatBitsToUint(bvhNode[n].hi.w);
+    if (count == 0u) {
+      stack[top++] = first;
+      stack[top++] = n + 1u;
+      continue;
+    }
+    for (uint i = first; i < first + count; ++i) {
+      uint q = floatBitsToUint(bvhTriangle[i].v0.w);
+      if (chartOf(q) != receiverChart && blocksSegment(q, o, x, eps)) return true;
+    }
+  }
+  return false;
+}

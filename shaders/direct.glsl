@@ -1,0 +1,53 @@
+// Direct light at a camera pixel's surface point, exactly (issue 31, `--direct per-pixel`,
+// docs/design.md#per-pixel-direct): per emitter piece, Lambert's contour integral from the point
+// (formfactor.glsl, the gather's kernel) times the share of the piece the point sees. Needs
+// hemisphere.glsl, scene.glsl, formfactor.glsl, segment.glsl, bvh.glsl and bvh_segment.glsl.
+// The pieces (src/output/DirectLight.h) sit in SSBO_SHOOTER_SHAPES, a slot each: the emitters'
+// polygons cut into fans of 3 or 4 vertices, each header's w its polygon id (uint bits).
+uniform uint emitterPieces;
+uniform int directGrid;     // G: visibility is sampled at G x G points a piece
+uniform float segmentEps;   // blocksSegment's plane tolerance, as the gather's (4e-7 x far distance)
+
+// The point (u, v) of a piece as the bilinear patch p0 p1 p2 p3 (a triangle: p3 = p2) and the
+// patch's area element |dp/du x dp/dv| there: a triangle's cells near p2 are small, and weigh less.
+vec3 piecePoint(uint base, vec2 uv, out float areaElement) {
+  int count = int(shooterShape[base].x);
+  vec3 p0 = shooterShape[base + 1u].xyz, p1 = shooterShape[base + 2u].xyz, p2 = shooterShape[base + 3u].xyz;
+  vec3 p3 = count == 4 ? shooterShape[base + 4u].xyz : p2;
+  vec3 du = mix(p1 - p0, p2 - p3, uv.y), dv = mix(p3 - p0, p2 - p1, uv.x);
+  areaElement = length(cross(du, dv));
+  return mix(mix(p0, p1, uv.x), mix(p3, p2, uv.x), uv.y);
+}
+
+// The share of the piece's light that x sees: its G x G cell centres, each weighted by the
+// point-to-point kernel cos_x cos_y / r^2 dA, each tested exactly (the BVH nominates occluders,
+// blocksSegment decides). 1 when x sees every centre: unoccluded light is the contour integral's.
+float visibleShare(vec3 x, vec3 n, uint base, vec3 nl) {
+  float seen = 0.0, all = 0.0, cell = 1.0 / float(directGrid);
+  for (int j = 0; j < directGrid; ++j)
+    for (int i = 0; i < directGrid; ++i) {
+      float dA;
+      vec3 y = piecePoint(base, (vec2(i, j) + 0.5) * cell, dA), d = y - x;
+      float r2 = dot(d, d), w = dA * max(dot(n, d), 0.0) * max(-dot(nl, d), 0.0) / (r2 * r2);
+      if (w <= 0.0) continue;
+      all += w;
+      if (!segmentBlocked(x, y, NO_POLYGON, segmentEps)) seen += w;
+    }
+  return all > 0.0 ? seen / all : 1.0;  // every centre at the horizon: F is ~0 anyway
+}
+
+// rho times the irradiance / pi from every emitter at point x of `polygon` (its plane's front):
+// the direct part of B there. One-sided emitters: a piece lights only points in front of it.
+vec3 directLight(vec3 x, uint polygon) {
+  vec3 n = polygons[polygon].normal.xyz;
+  x -= (dot(n, x) - polygons[polygon].normal.w) * n;  // onto the plane: interpolation leaves ~1e-7
+  vec3 sum = vec3(0.0);
+  for (uint e = 0u; e < emitterPieces; ++e) {
+    uint base = e * uint(SHAPE_STRIDE), lamp = floatBitsToUint(shooterShape[base].w);
+    if (lamp == polygon) continue;
+    vec3 nl = polygons[lamp].normal.xyz;
+    float F = pointToPiece(x, n, base, nl);
+    if (F > 0.0) sum += polygons[lamp].emission.rgb * (F * visibleShare(x, n, base, nl));
+  }
+  return polygons[polygon].reflectance.rgb * sum;
+}
