@@ -171,11 +171,11 @@ std::vector<Flag> sceneAndSolverFlags() {
        "A receiver nearer a shooter block than K times the block's side gets the block's quadrants' light one by one, "
        "each from its own origin with exact visibility (hierarchical radiosity's link refinement; 0: off)",
        CLI::Range(0.0, 16.0)},
-      {"--direct", "atlas|per-pixel",
+      {"--direct", "MODE",
        "Camera images' direct light: looked up in the elements like the rest (atlas), or computed per pixel, exactly "
        "(per-pixel: Lambert's contour integral to each emitter with exact visibility, the solution giving only the "
        "indirect light; sharp shadow edges; docs/design.md#per-pixel-direct). The atlas, PLY and glTF keep B",
-       oneOf(std::map<std::string, bool>{{"atlas", false}, {"per-pixel", true}}, "atlas|per-pixel"), "atlas"},
+       names({"atlas", "per-pixel"}), "atlas"},
       {"--preset", "NAME",
        "Start the item buffer and shooters from a named plan (docs/cli.md#presets): fast (the default: hemicube at "
        "item-mesh level 0, planned shooter blocks and resolution), seed003 (seed 003's orthographic hemisphere, L3, "

@@ -93,7 +93,7 @@ class ProgressiveMethod final : public AtlasMethod {
             bindFlag("--algorithm", p.algorithm),
             bindFlag("--fov-decay", p.fovDecayShots),
             bindFlag("--shooters-per-pass", p.shootersPerPass),
-            bindFlag("--direct", perPixelDirect_, "atlas"),
+            parseFlag("--direct", perPixelDirect_, [](const std::string& v) { return v == "per-pixel"; }, "atlas"),
             switchFlag("--sync-timings", [&p] { p.timings = gl::TimerMode::Synchronous; }),
             acceptFlag("--camera-path")};
   }

@@ -1,0 +1,174 @@
+// Issue 31's per-pixel direct light (`solve --direct per-pixel`, docs/design.md#per-pixel-direct):
+// a receiver under a one-sided square lamp shows rho E F(x -> lamp), the exact point form factor,
+// at every pixel; behind a hard occluder the umbra is black, the lit part exact and the penumbra
+// the exact form factor to the lamp's visible part within the visibility grid's step; on the
+// Cornell box the split into per-pixel direct and atlas indirect light neither loses nor adds
+// light against the atlas image; a bad value is one error line.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+
+#include "cpu/ExactFormFactor.h"
+#include "src/output/DirectLight.h"
+#include "src/output/ImageFile.h"
+#include "src/reference/ErrorTable.h"
+#include "src/reference/PixelRegions.h"
+#include "src/scene/SceneLoader.h"
+#include "src/solver/Bvh.h"
+#include "tests/support/Support.h"
+
+using namespace hemirad;
+using Catch::Contains;
+
+namespace {
+
+constexpr int kDirectSize = 48;
+
+// `solve SCENE --direct per-pixel` at kDirectSize^2, one sample a pixel (its centre, where the
+// CPU's ray goes), read back.
+Image directSolve(const std::string& scene, const std::string& camera, const std::string& more = "") {
+  const std::string out = test::tempPath("direct.exr");
+  const test::Run run = test::hemirad("solve " + scene + " --camera '" + camera + "' --width " +
+                                      std::to_string(kDirectSize) + " --height " + std::to_string(kDirectSize) +
+                                      " --supersample 1 --ambient off --quiet --direct per-pixel --out " + out + " " + more);
+  INFO(run.output);
+  REQUIRE(run.exitCode == 0);
+  return readImage(out);
+}
+
+// Where the ray through pixel (x, y)'s centre (rows top-down) meets the scene.
+glm::dvec3 pixelHit(const Camera& camera, const Bvh& bvh, int x, int y) {
+  const Camera::PixelRays rays = camera.pixelRays(kDirectSize, kDirectSize);
+  const glm::dvec3 d = glm::normalize(rays.corner + (x + 0.5) * rays.dx + (kDirectSize - 1 - y + 0.5) * rays.dy);
+  return camera.eye + double(bvh.intersect(glm::vec3(camera.eye), glm::vec3(d), kNoPolygon)->t) * d;
+}
+
+// A square lamp (E 1, black) at z = 0 facing +z, [0.4, 0.6]^2; a receiver (rho 0.5) at z = 1
+// facing it; a black occluder at z = 0.5 over x < 0.5, both sides. Nothing reflects twice, so
+// the receiver's B is its direct light: 0.5 F(x -> the part of the lamp with x_lamp > 1 - x).
+std::string occluderScene() {
+  const std::string dir = test::tempPath("occluder");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/occluder.mtl") << "newmtl lamp\nKd 0 0 0\nKe 1 1 1\nnewmtl grey\nKd 0.5 0.5 0.5\n"
+                                          "newmtl black\nKd 0 0 0\n";
+  std::ofstream(dir + "/occluder.obj") << "mtllib occluder.mtl\no lamp\nusemtl lamp\n"
+                                          "v 0.4 0.4 0\nv 0.6 0.4 0\nv 0.6 0.6 0\nv 0.4 0.6 0\nf 1 2 3 4\n"
+                                          "o receiver\nusemtl grey\nv -0.5 -0.5 1\nv -0.5 1.5 1\nv 1.5 1.5 1\nv 1.5 -0.5 1\nf 5 6 7 8\n"
+                                          "o occluder\nusemtl black\nv -1 -1 0.5\nv 0.5 -1 0.5\nv 0.5 2 0.5\nv -1 2 0.5\nf 9 10 11 12\n";
+  return dir + "/occluder.obj";
+}
+
+cpu::Polygon lampPart(double x0) {  // the lamp's part with x >= x0, counter-clockwise around +z
+  return {{x0, 0.4, 0}, {0.6, 0.4, 0}, {0.6, 0.6, 0}, {x0, 0.6, 0}};
+}
+
+}  // namespace
+
+TEST_CASE("Per-pixel direct light under a square lamp is rho E times the exact point form factor at every receiver pixel", "[gl][direct]") {
+  const std::string path = test::sourcePath("scenes/analytic/parallel_squares.obj");
+  const std::string view = "eye=0.5,0.5,0.05 target=0.5,0.5,1 up=0,1,0 fov=70";  // between the plates
+  const Image image = directSolve(path, view, "--elements 400 --converge 0.999");
+  const Scene scene = loadScene(path);
+  const Camera camera = resolveCamera(scene, view);
+  const PixelRegions regions = pixelRegions(scene, camera, kDirectSize, kDirectSize);
+  const Bvh bvh(scene);
+  const ScenePolygon& lamp = scene.polygons()[0];
+  const cpu::Polygon shape(lamp.vertices.begin(), lamp.vertices.end());
+  double worst = 0;
+  int n = 0;
+  for (int y = 0; y < kDirectSize; ++y)
+    for (int x = 0; x < kDirectSize; ++x) {
+      const std::size_t p = std::size_t(y) * kDirectSize + x;
+      if (regions.polygon[p] != 1 || regions.edgeDistance[p] < 1) continue;
+      const double exact = 0.5 * cpu::pointToPolygon(pixelHit(camera, bvh, x, y), scene.polygons()[1].normal, shape, lamp.normal);
+      worst = std::max(worst, std::abs(image.rgb[3 * p + 1] - exact) / exact), ++n;
+    }
+  REQUIRE(n > 1000);
+  CHECK(worst < 1e-4);
+}
+
+TEST_CASE("Per-pixel direct light behind a hard occluder: umbra black, lit pixels exact, the penumbra the exact form factor to the lamp's visible part within the grid's step", "[gl][direct]") {
+  const std::string path = occluderScene();
+  const std::string view = "eye=0.5,0.5,0.6 target=0.5,0.5,1 up=0,1,0 fov=90";  // between occluder and receiver
+  const Image image = directSolve(path, view, "--elements 400 --converge 0.999");
+  const Scene scene = loadScene(path);
+  const Camera camera = resolveCamera(scene, view);
+  const Bvh bvh(scene);
+  const glm::dvec3 down(0, 0, -1), up(0, 0, 1);
+  int umbra = 0, lit = 0, penumbra = 0;
+  double worstLit = 0, worstPenumbra = 0, brightestUmbra = 0;
+  for (int y = 0; y < kDirectSize; ++y)
+    for (int x = 0; x < kDirectSize; ++x) {
+      const glm::dvec3 hit = pixelHit(camera, bvh, x, y);
+      const double value = image.rgb[3 * (std::size_t(y) * kDirectSize + x) + 1];
+      const double full = 0.5 * cpu::pointToPolygon(hit, down, lampPart(0.4), up);
+      if (hit.x < 0.39) {
+        brightestUmbra = std::max(brightestUmbra, value), ++umbra;
+      } else if (hit.x > 0.61) {
+        worstLit = std::max(worstLit, std::abs(value - full) / full), ++lit;
+      } else if (hit.x > 0.41 && hit.x < 0.59) {
+        const double exact = 0.5 * cpu::pointToPolygon(hit, down, lampPart(1 - hit.x), up);
+        worstPenumbra = std::max(worstPenumbra, std::abs(value - exact) / full), ++penumbra;
+      }
+    }
+  REQUIRE(umbra > 200);
+  REQUIRE(lit > 200);
+  REQUIRE(penumbra > 100);
+  CHECK(brightestUmbra == 0);
+  CHECK(worstLit < 1e-4);
+  // The 8 x 8 grid's midpoint rule: within half a column's light, 1/16 of the lamp's (measured 4.2 %).
+  CHECK(worstPenumbra < 0.5 / kDirectGrid);
+}
+
+TEST_CASE("On the Cornell box the per-pixel image and the atlas image agree in surface interiors: the direct/indirect split neither loses nor adds light", "[gl][direct]") {
+  const std::string cornell = test::sourcePath("scenes/cornell/cornell.obj");
+  const std::string common = "solve " + cornell + " --elements 1000 --converge 0.99 --width 64 --height 64 --ambient off --quiet";
+  const std::string atlas = test::tempPath("cornell_atlas.exr"), perPixel = test::tempPath("cornell_pp.exr");
+  const std::string report = test::tempPath("cornell_pp.json");
+  REQUIRE(test::hemirad(common + " --out " + atlas).exitCode == 0);
+  const test::Run run = test::hemirad(common + " --direct per-pixel --out " + perPixel + " --report " + report);
+  INFO(run.output);
+  REQUIRE(run.exitCode == 0);
+  const Scene scene = loadScene(cornell);
+  const PixelRegions regions = pixelRegions(scene, resolveCamera(scene, std::nullopt), 64, 64);
+  const std::vector<ErrorRow> rows = errorTable(scene, regions, readImage(perPixel), readImage(atlas), Image{});
+  INFO(markdown(rows));
+  const ErrorRow& interior = rows.front();
+  REQUIRE(interior.pixels > 1000);
+  CHECK(interior.meanAbsolute < 0.02);
+  CHECK(std::abs(interior.bias) < 0.01);
+  std::ifstream in(report);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(text, Contains("\"direct\": \"per-pixel\"") && Contains("\"direct_ms\""));
+}
+
+TEST_CASE("Per-pixel direct light is deterministic: the same solve writes the same bytes", "[gl][direct]") {
+  const std::string path = test::sourcePath("scenes/analytic/parallel_squares.obj");
+  const std::string a = test::tempPath("direct_a.exr"), b = test::tempPath("direct_b.exr");
+  const std::string common = "solve " + path + " --elements 400 --width 32 --height 32 --direct per-pixel --quiet --out ";
+  REQUIRE(test::hemirad(common + a).exitCode == 0);
+  REQUIRE(test::hemirad(common + b).exitCode == 0);
+  std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+  const std::string bytesA((std::istreambuf_iterator<char>(fa)), {}), bytesB((std::istreambuf_iterator<char>(fb)), {});
+  CHECK(!bytesA.empty());
+  CHECK(bytesA == bytesB);
+}
+
+TEST_CASE("Bad --direct input is one error line and exit code 2: an unknown mode, a method without it, a walkthrough", "[gl][direct][cli][bad-input]") {
+  const std::string cornell = test::sourcePath("scenes/cornell/cornell.obj");
+  const std::string out = " --out " + test::tempPath("bad_direct.exr");
+  const std::pair<std::string, std::string> cases[] = {
+      {"--direct perpixel", "--direct: perpixel not in {atlas,per-pixel}"},
+      {"--method stochastic --direct per-pixel", "--direct is for --method progressive, not stochastic"},
+      {"--direct per-pixel --camera-path " + test::sourcePath("scenes/cornell/cornell.path") + " --frames " +
+           test::tempPath("frames"),
+       "--direct per-pixel renders one solve's --out and --image, not --camera-path frames"}};
+  for (const auto& [flags, message] : cases) {
+    const test::Run run = test::hemirad("solve " + cornell + " " + flags + out);
+    INFO(flags << ": " << run.output);
+    CHECK(run.exitCode == 2);
+    CHECK_THAT(run.output, Contains(message));
+    CHECK(std::count(run.output.begin(), run.output.end(), '\n') == 1);
+  }
+}
