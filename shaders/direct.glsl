@@ -36,6 +36,48 @@ float visibleShare(vec3 x, vec3 n, uint base, vec3 nl) {
   return all > 0.0 ? seen / all : 1.0;  // every centre at the horizon: F is ~0 anyway
 }
 
+// Whether any triangle of the scene may cross the pyramid from x to the piece (apex x; x in
+// front of the piece): the BVH nominates triangles whose boxes meet the pyramid's box, and one is
+// dropped when a plane of the pyramid has all its vertices outside (a side face, the piece's
+// plane, or x's own plane when the whole piece lies above x's horizon). false: every segment from
+// x to the piece is unblocked, and the grid's segment tests would all find so.
+bool pieceMayBeBlocked(vec3 x, vec3 n, uint base) {
+  int count = int(shooterShape[base].x);
+  vec3 p[4], lo = x, hi = x, centre = vec3(0.0);
+  for (int i = 0; i < count; ++i) {
+    p[i] = shooterShape[base + 1u + uint(i)].xyz;
+    lo = min(lo, p[i]), hi = max(hi, p[i]), centre += p[i] / float(count);
+  }
+  vec3 nl = cross(p[1] - p[0], p[2] - p[0]);
+  bool aboveHorizon = true;
+  for (int i = 0; i < count; ++i) aboveHorizon = aboveHorizon && dot(n, p[i] - x) > 0.0;
+  uint stack[BVH_STACK];
+  int top = 0;
+  stack[top++] = 0u;
+  while (top > 0) {
+    uint k = stack[--top];
+    if (any(greaterThan(bvhNode[k].lo.xyz, hi)) || any(lessThan(bvhNode[k].hi.xyz, lo))) continue;
+    uint first = floatBitsToUint(bvhNode[k].lo.w), tris = floatBitsToUint(bvhNode[k].hi.w);
+    if (tris == 0u) {
+      stack[top++] = first;
+      stack[top++] = k + 1u;
+      continue;
+    }
+    for (uint t = first; t < first + tris; ++t) {
+      vec3 a = bvhTriangle[t].v0.xyz, b = a + bvhTriangle[t].e1.xyz, c = a + bvhTriangle[t].e2.xyz;
+      bool outside = max(max(dot(nl, a - p[0]), dot(nl, b - p[0])), dot(nl, c - p[0])) <= 0.0 ||
+                     (aboveHorizon && max(max(dot(n, a - x), dot(n, b - x)), dot(n, c - x)) <= 0.0);
+      for (int i = 0; i < count && !outside; ++i) {
+        vec3 side = cross(p[i] - x, p[(i + 1) % count] - x);
+        side *= dot(side, centre - x) > 0.0 ? -1.0 : 1.0;  // outward
+        outside = min(min(dot(side, a - x), dot(side, b - x)), dot(side, c - x)) >= 0.0;
+      }
+      if (!outside) return true;
+    }
+  }
+  return false;
+}
+
 // rho times the irradiance / pi from every emitter at point x of `polygon` (its plane's front):
 // the direct part of B there. One-sided emitters: a piece lights only points in front of it.
 vec3 directLight(vec3 x, uint polygon) {
@@ -47,7 +89,7 @@ vec3 directLight(vec3 x, uint polygon) {
     if (lamp == polygon) continue;
     vec3 nl = polygons[lamp].normal.xyz;
     float F = pointToPiece(x, n, base, nl);
-    if (F > 0.0) sum += polygons[lamp].emission.rgb * (F * visibleShare(x, n, base, nl));
+    if (F > 0.0) sum += polygons[lamp].emission.rgb * (F * (pieceMayBeBlocked(x, n, base) ? visibleShare(x, n, base, nl) : 1.0));
   }
   return polygons[polygon].reflectance.rgb * sum;
 }
