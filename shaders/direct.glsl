@@ -78,6 +78,35 @@ bool pieceMayBeBlocked(vec3 x, vec3 n, uint base) {
   return false;
 }
 
+// Whether one polygon hides the whole piece from x: it blocks the segments to every corner. Exact:
+// the cone from x over a convex polygon is convex, so it holds the corners' convex hull, the
+// piece, beyond the polygon; then every grid segment is blocked too, and none needs testing.
+bool pieceHidden(vec3 x, uint base) {
+  int count = int(shooterShape[base].x);
+  vec3 p0 = shooterShape[base + 1u].xyz, d = p0 - x;
+  vec3 invD = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));
+  uint stack[BVH_STACK];
+  int top = 0;
+  stack[top++] = 0u;
+  while (top > 0) {
+    uint k = stack[--top];
+    if (!bvhHitBox(k, x, invD, 1.0)) continue;
+    uint first = floatBitsToUint(bvhNode[k].lo.w), tris = floatBitsToUint(bvhNode[k].hi.w);
+    if (tris == 0u) {
+      stack[top++] = first;
+      stack[top++] = k + 1u;
+      continue;
+    }
+    for (uint t = first; t < first + tris; ++t) {
+      uint q = floatBitsToUint(bvhTriangle[t].v0.w);
+      bool all = blocksSegment(q, x, p0, segmentEps);
+      for (int i = 1; i < count && all; ++i) all = blocksSegment(q, x, shooterShape[base + 1u + uint(i)].xyz, segmentEps);
+      if (all) return true;
+    }
+  }
+  return false;
+}
+
 // rho times the irradiance / pi from every emitter at point x of `polygon` (its plane's front):
 // the direct part of B there. One-sided emitters: a piece lights only points in front of it.
 vec3 directLight(vec3 x, uint polygon) {
@@ -89,7 +118,10 @@ vec3 directLight(vec3 x, uint polygon) {
     if (lamp == polygon) continue;
     vec3 nl = polygons[lamp].normal.xyz;
     float F = pointToPiece(x, n, base, nl);
-    if (F > 0.0) sum += polygons[lamp].emission.rgb * (F * (pieceMayBeBlocked(x, n, base) ? visibleShare(x, n, base, nl) : 1.0));
+    if (F <= 0.0) continue;
+    // Most points see a piece whole or not at all: two exact tests spare them the grid's segments.
+    float V = !pieceMayBeBlocked(x, n, base) ? 1.0 : pieceHidden(x, base) ? 0.0 : visibleShare(x, n, base, nl);
+    sum += polygons[lamp].emission.rgb * (F * V);
   }
   return polygons[polygon].reflectance.rgb * sum;
 }
