@@ -134,3 +134,10 @@ TEST_CASE("Every point of every polygon looks up texels of its own chart's recta
     CHECK(a.chartAt(std::size_t(t.y) * a.width + std::size_t(t.x)) == a.chartOf[p]);
   }
 }
+
+TEST_CASE("A lone long chart lies along a strip as wide as it is long", "[cpu]") {
+  const RectLayout l = packAtlasCharts({glm::ivec2(3, 1000)}, 16384);
+  CHECK(l.width == 1000);
+  CHECK(l.height == 3);
+  CHECK(l.turned[0] == 1);
+}

@@ -197,11 +197,14 @@ double hostMemoryBytes() {
                                               bytesText(texels * kBytesPerTexel), bytesText(maxBytes));
   double fit = ts * std::sqrt(std::max({1.0, texels / (double(maxSize) * maxSize), texels * kBytesPerTexel / maxBytes}));
   for (int i = 0; i < 200 && !fits(pack(chartShapes(groups, fit), maxSize), maxBytes); ++i) fit *= 1.05;
+  // Shown to four digits, rounded up: rounded down it may not fit (a unit square at 64 texels).
+  const double shown = fit / scene.unitScale, unit = std::pow(10.0, std::floor(std::log10(shown)) - 3);
+  fit = std::ceil(shown / unit) * unit * scene.unitScale;
   double elements = scene.totalArea() / (fit * fit);
   double digits = std::pow(10.0, std::floor(std::log10(std::max(elements, 1.0))) - 1);  // two significant
   fail("texel size {:.4g} needs a {:.0f} x {:.0f} texel atlas, {}; use --texel-size {:.4g} or larger (or --elements {:.0f} "
        "or fewer)",
-       ts / scene.unitScale, l.width, l.height, limit, fit / scene.unitScale,
+       ts / scene.unitScale, l.width, l.height, limit, std::ceil(shown / unit) * unit,
        std::max(1.0, std::floor(elements / digits) * digits));
 }
 

@@ -116,15 +116,18 @@ RectLayout packBestFit(const std::vector<glm::ivec2>& sizes, int width) {
 
 RectLayout packAtlasCharts(const std::vector<glm::ivec2>& sizes, int maxSize) {
   double area = 0;
-  int narrowest = 1;  // every rectangle fits a strip this wide, one way or the other
-  for (glm::ivec2 s : sizes) area += double(s.x) * s.y, narrowest = std::max(narrowest, std::min(s.x, s.y));
+  int narrowest = 1, longest = 1;  // every rectangle fits a strip `narrowest` wide, one way or the other
+  for (glm::ivec2 s : sizes)
+    area += double(s.x) * s.y, narrowest = std::max(narrowest, std::min(s.x, s.y)), longest = std::max({longest, s.x, s.y});
   const int square = std::max(narrowest, int(std::ceil(std::sqrt(area))));
   RectLayout best;
   double bestTexels = 1e300;
   bool bestFits = false;
-  for (double stretch : {1.0, 1.03, 1.07, 1.15, 1.3}) {
-    const int width = std::max(narrowest, int(std::ceil(square * stretch)));
-    if (width > maxSize && bestFits) break;
+  // Near the square; and as wide as the longest side, for a few long charts (one 1000 x 3 chart
+  // stands in a strip 55 wide, 5 % full, but lies in one 1000 wide).
+  for (double stretch : {1.0, 1.03, 1.07, 1.15, 1.3, 0.0}) {
+    const int width = stretch > 0 ? std::max(narrowest, int(std::ceil(square * stretch))) : longest;
+    if (width > maxSize && bestFits) continue;
     RectLayout l = packBestFit(sizes, width);
     const bool fitsLimit = l.width <= maxSize && l.height <= maxSize;
     const double texels = double(l.width) * double(l.height);

@@ -21,7 +21,7 @@ struct RectLayout {
 
 // Into a strip `width` wide (at least the narrowest side of every rectangle).
 RectLayout packBestFit(const std::vector<glm::ivec2>& sizes, int width);
-// The least texels of a few strip widths from the square's up, preferring layouts with both
+// The least texels of a few strip widths (from the square's up, and the longest side's), preferring layouts with both
 // sides within maxSize (the caller checks whether the one returned is).
 RectLayout packAtlasCharts(const std::vector<glm::ivec2>& sizes, int maxSize);
 
