@@ -114,6 +114,26 @@ RectLayout packBestFit(const std::vector<glm::ivec2>& sizes, int width) {
   return l;
 }
 
+namespace {
+// Ranks layouts: within the texture limit, then sides within kSquarish : 1 (a long atlas pads
+// to a large power-of-two square in the stochastic pyramid, shaders/pyramid.comp), then fewest
+// texels; ties keep the earlier.
+constexpr double kSquarish = 2;
+struct Rank {
+  bool fits = false, squarish = false;
+  double texels = 1e300;
+  bool operator<(const Rank& o) const {
+    if (fits != o.fits) return fits;
+    if (squarish != o.squarish) return squarish;
+    return texels < o.texels;
+  }
+};
+Rank rank(const RectLayout& l, int maxSize) {
+  const double w = l.width, h = l.height;
+  return {l.width <= maxSize && l.height <= maxSize, std::max(w, h) <= kSquarish * std::min(w, h), w * h};
+}
+}  // namespace
+
 RectLayout packAtlasCharts(const std::vector<glm::ivec2>& sizes, int maxSize) {
   double area = 0;
   int narrowest = 1, longest = 1;  // every rectangle fits a strip `narrowest` wide, one way or the other
@@ -121,17 +141,14 @@ RectLayout packAtlasCharts(const std::vector<glm::ivec2>& sizes, int maxSize) {
     area += double(s.x) * s.y, narrowest = std::max(narrowest, std::min(s.x, s.y)), longest = std::max({longest, s.x, s.y});
   const int square = std::max(narrowest, int(std::ceil(std::sqrt(area))));
   RectLayout best;
-  double bestTexels = 1e300;
-  bool bestFits = false;
+  Rank bestRank;
   // Near the square; and as wide as the longest side, for a few long charts (one 1000 x 3 chart
   // stands in a strip 55 wide, 5 % full, but lies in one 1000 wide).
   for (double stretch : {1.0, 1.03, 1.07, 1.15, 1.3, 0.0}) {
     const int width = stretch > 0 ? std::max(narrowest, int(std::ceil(square * stretch))) : longest;
-    if (width > maxSize && bestFits) continue;
+    if (width > maxSize && bestRank.fits) continue;
     RectLayout l = packBestFit(sizes, width);
-    const bool fitsLimit = l.width <= maxSize && l.height <= maxSize;
-    const double texels = double(l.width) * double(l.height);
-    if ((fitsLimit && !bestFits) || (fitsLimit == bestFits && texels < bestTexels)) best = std::move(l), bestTexels = texels, bestFits = fitsLimit;
+    if (const Rank r = rank(l, maxSize); r < bestRank) best = std::move(l), bestRank = r;
   }
   return best;
 }

@@ -21,8 +21,8 @@ struct RectLayout {
 
 // Into a strip `width` wide (at least the narrowest side of every rectangle).
 RectLayout packBestFit(const std::vector<glm::ivec2>& sizes, int width);
-// The least texels of a few strip widths (from the square's up, and the longest side's), preferring layouts with both
-// sides within maxSize (the caller checks whether the one returned is).
+// The best of a few strip widths (from the square's up, and the longest side's): both sides
+// within maxSize if any is (the caller checks), then sides within 2 : 1, then the fewest texels.
 RectLayout packAtlasCharts(const std::vector<glm::ivec2>& sizes, int maxSize);
 
 }  // namespace hemirad
