@@ -40,7 +40,7 @@ Scene smallCharts(int n) {
 }
 }  // namespace
 
-TEST_CASE("Many small charts of mixed shapes fill >= 75 % of the solve's atlas, and >= 20 % of the lightmap", "[cpu]") {
+TEST_CASE("Many small charts of mixed shapes fill >= 75 % of the solve's atlas, and >= 40 % of the lightmap", "[cpu]") {
   const Scene s = smallCharts(1500);
   const Atlas a = buildAtlas(s, texelSizeForElements(s, 30000));
   const AtlasUse use = atlasUse(a);
@@ -49,10 +49,10 @@ TEST_CASE("Many small charts of mixed shapes fill >= 75 % of the solve's atlas, 
   CHECK(a.charts.size() == 1500);
   CHECK(use.texelUse() >= 0.75);
   CHECK(use.packing() >= 0.95);
-  // The lightmap: 2-texel gutters around charts of ~20 elements bound it (Lightmap.h).
+  // The lightmap: 1-texel gutters around charts of ~20 elements bound it (Lightmap.h): 41.3 %.
   const Lightmap map = buildLightmap(a, std::vector<glm::vec4>(a.polygonOf.size(), glm::vec4(0.0f)));
   INFO("lightmap " << map.width << " x " << map.height << ", texel use " << map.texelUse());
-  CHECK(map.texelUse() >= 0.20);
+  CHECK(map.texelUse() >= 0.40);
 }
 
 TEST_CASE("A rectangle turned in its plane and cut along its diagonal gets a tight grid", "[cpu]") {
