@@ -39,7 +39,7 @@ void main() {
   for (int k = 0; k < 4; ++k) {
     ivec2 o = ivec2(k & 1, k >> 1);
     float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
-    if (chartOf(texelFetch(atlasPolygon, i0 + o, 0).r) == chart) {
+    if (chartAtTexel(i0 + o) == chart) {
       sum += w * texelFetch(radiosity, i0 + o, 0).rgb;
       weight += w;
     }
@@ -48,7 +48,7 @@ void main() {
     ivec2 centre = ivec2(floor(vAtlas));
     for (int k = 0; k < 9 && weight <= 0.0; ++k) {
       ivec2 t = centre + ivec2(k % 3 - 1, k / 3 - 1);
-      if (chartOf(texelFetch(atlasPolygon, t, 0).r) == chart) sum = texelFetch(radiosity, t, 0).rgb, weight = 1.0;
+      if (chartAtTexel(t) == chart) sum = texelFetch(radiosity, t, 0).rgb, weight = 1.0;
     }
   }
   vec3 b = weight > 0.0 ? sum / weight : vec3(0.0);

@@ -14,7 +14,7 @@ void main() {
   ivec2 t = ivec2(floor(vAtlas));
   uint chart = chartOf(vPolygon);
   // A sliver of the chart whose own texel holds no element: the nearest texel that does.
-  for (int k = 0; k < 9 && chartOf(texelFetch(atlasPolygon, t, 0).r) != chart; ++k)
+  for (int k = 0; k < 9 && chartAtTexel(t) != chart; ++k)
     t = ivec2(floor(vAtlas)) + ivec2(k % 3 - 1, k / 3 - 1);
-  if (chartOf(texelFetch(atlasPolygon, t, 0).r) == chart) imageAtomicAdd(pixels, t, 1u);
+  if (chartAtTexel(t) == chart) imageAtomicAdd(pixels, t, 1u);
 }

@@ -19,3 +19,10 @@ layout(binding = SAMPLER_ATLAS_POLYGON) uniform usampler2D atlasPolygon;      //
 layout(binding = SAMPLER_ATLAS_NORMAL) uniform sampler2D atlasNormal;        // xyz the element's receiver normal
 
 uint chartOf(uint polygon) { return polygon == NO_POLYGON ? NO_POLYGON : polygons[polygon].vertices.z; }
+// The chart of atlas texel t, NO_POLYGON outside the atlas: charts touch its border (no gutters,
+// src/scene/AtlasPacker.h), and texelFetch out of range is undefined (0 under robust access:
+// polygon 0's chart).
+uint chartAtTexel(ivec2 t) {
+  return all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, textureSize(atlasPolygon, 0))) ? chartOf(texelFetch(atlasPolygon, t, 0).r)
+                                                                                             : NO_POLYGON;
+}

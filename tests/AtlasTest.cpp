@@ -132,19 +132,29 @@ TEST_CASE("Atlas element centres lie on their chart and match their pieces' cent
     }
 }
 
-TEST_CASE("Atlas charts are padded: no two charts' texels touch, even diagonally", "[cpu]") {
+// No gutters (src/scene/AtlasPacker.h): charts may touch, but their rectangles never overlap,
+// and every texel of a chart's rectangle that holds an element is that chart's.
+TEST_CASE("Atlas charts' rectangles lie in the atlas without overlapping, and hold only their own elements", "[cpu]") {
   Scene s = charted();
   for (double angle : {0.0, 30.0}) {
     Atlas a = buildAtlas(s, 0.05, 16384, 0, angle);
-    for (int y = 0; y + 1 < a.height; ++y)
-      for (int x = 0; x + 1 < a.width; ++x) {
-        std::uint32_t p = a.chartAt(size_t(y) * a.width + x);
-        if (p == kNoPolygon) continue;
-        for (auto [dx, dy] : {std::pair{1, 0}, {0, 1}, {1, 1}}) {
-          std::uint32_t q = a.chartAt(size_t(y + dy) * a.width + x + dx);
-          CHECK((q == kNoPolygon || q == p));
+    std::vector<int> owner(a.polygonOf.size(), -1);
+    for (std::size_t c = 0; c < a.charts.size(); ++c) {
+      const Chart& chart = a.charts[c];
+      REQUIRE(chart.origin.x >= 0);
+      REQUIRE(chart.origin.y >= 0);
+      REQUIRE(chart.origin.x + chart.size.x <= a.width);
+      REQUIRE(chart.origin.y + chart.size.y <= a.height);
+      for (int j = 0; j < chart.size.y; ++j)
+        for (int i = 0; i < chart.size.x; ++i) {
+          const std::size_t t = std::size_t(chart.origin.y + j) * a.width + std::size_t(chart.origin.x + i);
+          CHECK(owner[t] == -1);  // one rectangle a texel
+          owner[t] = int(c);
+          CHECK((a.chartAt(t) == kNoPolygon || a.chartAt(t) == c));
         }
-      }
+    }
+    for (std::size_t t = 0; t < owner.size(); ++t)
+      if (a.polygonOf[t] != kNoPolygon) CHECK(owner[t] >= 0);
   }
 }
 

@@ -28,6 +28,7 @@ bool masked(const Atlas& atlas, int polygon, glm::dvec2 coord) {
   const glm::ivec2 i0(glm::floor(coord - 0.5));
   for (int k = 0; k < 4; ++k) {
     const glm::ivec2 t = i0 + glm::ivec2(k & 1, k >> 1);
+    if (t.x < 0 || t.y < 0 || t.x >= atlas.width || t.y >= atlas.height) return true;  // charts touch the border
     if (atlas.chartAt(std::size_t(t.y) * atlas.width + t.x) != atlas.chartOf[std::size_t(polygon)]) return true;
   }
   return false;

@@ -151,3 +151,13 @@ TEST_CASE("A perspective-driven solve resumed mid-solve gives the bitwise result
   CHECK(other.exitCode == 2);
   CHECK_THAT(other.output, Contains("fov_decay"));
 }
+
+TEST_CASE("A checkpoint made with another atlas layout (or before layouts were hashed) is refused", "[cpu][checkpoint]") {
+  const nlohmann::json current = {{"scene_hash", "00ff"}, {"atlas", {10, 12}}, {"atlas_layout", "1234abcd"}};
+  nlohmann::json saved = current;
+  CHECK_NOTHROW(checkResumable("same.ckpt", saved, current));
+  saved["atlas_layout"] = "4321dcba";  // same size, charts elsewhere
+  CHECK_THROWS_WITH(checkResumable("moved.ckpt", saved, current), Contains("atlas_layout"));
+  saved.erase("atlas_layout");  // written with the gutter-and-shelf atlas
+  CHECK_THROWS_WITH(checkResumable("old.ckpt", saved, current), Contains("atlas_layout = (none)"));
+}

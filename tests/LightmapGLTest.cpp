@@ -76,27 +76,29 @@ glm::vec3 clampedTexel(const Lightmap& map, int polygon, int i, int j) {
 }  // namespace
 
 TEST_CASE("The Cornell box's lightmap at the default 10,000 elements: over 80 % of its texels are elements, and every "
-          "2-texel gutter (the edge clamped to on the border) holds its own chart's value", "[cpu]") {
+          "texel of its gutter (the edge clamped to on the border) holds its own chart's value", "[cpu]") {
   Scene scene = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   const Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, {}));
   const Lightmap map = buildLightmap(atlas, polygonValues(atlas));
   INFO("atlas " << atlas.width << " x " << atlas.height << ", lightmap " << map.width << " x " << map.height
        << ", texel use " << map.texelUse() << ", packing " << map.packing());
   CHECK(map.elements == atlas.elements);
-  // 19 charts in full 2-texel gutters hold at most 74.4 % (docs/gltf.md): over 80 % needs the
-  // border's gutters cut away, and turned charts.
+  // 19 charts in full gutters: 87 % with one texel (issue 29), 82 % with the two it had
+  // (docs/gltf.md), over 80 % only with the border's gutters cut away.
   CHECK(map.texelUse() >= 0.80);
-  CHECK(map.texelUse() > double(atlas.elements) / (double(atlas.width) * atlas.height));  // the atlas's shelves
+  // The solve's atlas, without gutters (src/scene/AtlasPacker.h), holds more than any lightmap.
+  CHECK(map.texelUse() < double(atlas.elements) / (double(atlas.width) * atlas.height));
   CHECK(map.packing() >= 0.90);
   CHECK(std::max(map.width, map.height) <= 8 * std::min(map.width, map.height));
-  CHECK(std::count(map.transposed.begin(), map.transposed.end(), 1) > 0);
+  // Turned charts are the atlas packer's already (it places them lying or standing), so the
+  // lightmap's packer need not turn any (where it does, the coordinate check below covers it).
   // Every cell of every chart lies in the image, and every texel of it and its gutter reads its
   // polygon's value under CLAMP_TO_EDGE: no black, no other chart.
   std::vector<int> owners(map.rgb.size(), 0);
   std::size_t wrong = 0, cellsOutside = 0;
   for (const Chart& c : atlas.charts)
-    for (int j = -2; j < c.size.y + 2; ++j)
-      for (int i = -2; i < c.size.x + 2; ++i) {
+    for (int j = -map.gutter; j < c.size.y + map.gutter; ++j)
+      for (int i = -map.gutter; i < c.size.x + map.gutter; ++i) {
         const glm::ivec2 t = texelOf(map, c.polygon, i, j);
         const bool cell = i >= 0 && j >= 0 && i < c.size.x && j < c.size.y;
         if (t.x >= 0 && t.y >= 0 && t.x < map.width && t.y < map.height)
@@ -136,7 +138,7 @@ TEST_CASE("Lightmap gutters copy the nearest element outward, and the packing is
   Atlas atlas = buildAtlas(scene, 0.1);
   std::vector<glm::vec4> B(atlas.polygonOf.size(), glm::vec4(0.0f));
   for (std::size_t t = 0; t < B.size(); ++t) B[t] = glm::vec4(float(t % 97), float(t / 97), 1.0f, 0.0f);
-  Lightmap map = buildLightmap(atlas, B), again = buildLightmap(atlas, B);
+  Lightmap map = buildLightmap(atlas, B, {.gutter = 2}), again = buildLightmap(atlas, B, {.gutter = 2});
   CHECK(again.origins == map.origins);
   CHECK(again.transposed == map.transposed);
   for (const Chart& c : atlas.charts) {
@@ -178,7 +180,7 @@ TEST_CASE("A flat-lit box shows no darker edges or corners, in hemirad's render 
   const LightmapRender shown = renderLightmapped(g.triangles, readImage(paths.exr), g.camera, 128, 128, 1);
   // The same with the gutters left black, as the old atlas: the check must see that.
   std::vector<float> black;
-  const Lightmap undilated = buildLightmap(s.atlas, s.B, {.gutter = 2, .dilate = false});
+  const Lightmap undilated = buildLightmap(s.atlas, s.B, {.gutter = LightmapOptions{}.gutter, .dilate = false});
   for (const glm::vec3& c : undilated.rgb) black.insert(black.end(), {c.r, c.g, c.b});
   const LightmapRender dark = renderLightmapped(g.triangles, {undilated.width, undilated.height, black}, g.camera, 128, 128, 1);
 
@@ -267,7 +269,7 @@ TEST_CASE("The Cornell box's .glb reloads with every element in its own texel an
   CHECK(relative(ours.band2 / theirs.band2, ours.interior / theirs.interior) <= 0.02);
 
   // The same layout with black gutters (the old atlas's): these checks see the darkened edges.
-  const Lightmap black = buildLightmap(atlas, B, {.gutter = 2, .dilate = false});
+  const Lightmap black = buildLightmap(atlas, B, {.gutter = LightmapOptions{}.gutter, .dilate = false});
   Image blackImage{black.width, black.height, {}};
   for (const glm::vec3& c : black.rgb) blackImage.rgb.insert(blackImage.rgb.end(), {c.r, c.g, c.b});
   const LightmapRender dark = renderLightmapped(g.triangles, blackImage, g.camera, 128, 128, 2);

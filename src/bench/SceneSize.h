@@ -1,7 +1,7 @@
 // What a bench row says about its scene's size beside the element count: the polygons, the
 // triangles they make (a convex n-gon is n - 2, whatever the item mesh's level), and the texel
-// use, the share of the atlas's texels that hold an element (charts' padding and gutters are
-// the rest: many small polygons use it worse).
+// use, the share of the atlas's texels that hold an element (the charts' empty cells and the
+// packing's gaps are the rest; src/scene/AtlasUse.h).
 #pragma once
 #include <cstddef>
 

@@ -1,11 +1,15 @@
 #include <fmt/format.h>
 
+#include <chrono>
 #include <map>
 
 #include "gl/Backend.h"
 #include "src/base/Error.h"
 #include "src/base/ResidentMemory.h"
+#include "src/output/Lightmap.h"
 #include "src/scene/Atlas.h"
+#include "src/scene/AtlasPacker.h"
+#include "src/scene/AtlasUse.h"
 #include "src/scene/ItemMesh.h"
 #include "src/cli/Solve.h"
 #include "src/solver/ProgressiveSolver.h"
@@ -41,12 +45,34 @@ void printFootprint(const Scene& scene, const Atlas& atlas, const InfoOptions& o
     fmt::print("resident     {} at its peak\n", bytesPerUnit(m->peakBytes, atlas.elements, triangles));
 }
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Where the texels go, in the solve's atlas and in the lightmap `--gltf` exports (issue 29).
+void printTexelUse(const Atlas& atlas, double atlasSeconds) {
+  const AtlasUse u = atlasUse(atlas);
+  std::vector<glm::ivec2> sizes;
+  for (const Chart& c : atlas.charts) sizes.push_back(c.size);
+  auto start = std::chrono::steady_clock::now();
+  packAtlasCharts(sizes, 16384);  // again, timed alone
+  fmt::print("atlas use    {:.1f} % elements: {:.1f} % of chart cells, charts {:.1f} % of the atlas (built in {:.3f} s, "
+             "packed in {:.3f} s)\n",
+             100 * u.texelUse(), 100 * u.cellUse(), 100 * u.packing(), atlasSeconds, secondsSince(start));
+  start = std::chrono::steady_clock::now();
+  const Lightmap map = buildLightmap(atlas, std::vector<glm::vec4>(atlas.polygonOf.size(), glm::vec4(0.0f)));
+  fmt::print("lightmap     {} x {}, texel use {:.1f} %, charts with {}-texel gutters {:.1f} % (in {:.3f} s)\n", map.width,
+             map.height, 100 * map.texelUse(), map.gutter, 100 * map.packing(), secondsSince(start));
+}
+
 }  // namespace
 
 int runInfo(const InfoOptions& o) {
   Scene scene = loadScene(o.scene, o.load);
   double ts = chooseTexelSize(scene, o.discretisation);
+  const auto atlasStart = std::chrono::steady_clock::now();
   Atlas atlas = buildAtlas(scene, ts, 16384, 0, o.discretisation.chartAngle);
+  const double atlasSeconds = secondsSince(atlasStart);
   const double u = scene.unitScale;  // printed in the file's units
   glm::dvec3 lo = scene.boundsMin() / u, hi = scene.boundsMax() / u;
 
@@ -80,6 +106,7 @@ int runInfo(const InfoOptions& o) {
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);
   fmt::print("triangles    {}\n", triangleCount(scene));
+  printTexelUse(atlas, atlasSeconds);
   printFootprint(scene, atlas, o);
   fmt::print("warnings     {}\n", scene.warnings.size());
   for (const auto& line : warningLines(scene.warnings)) fmt::print("  {}\n", line);

@@ -45,6 +45,7 @@ nlohmann::json checkpointIdentity(const Scene& scene, const Atlas& atlas, const 
                    {"algorithm", solver.algorithm()},
                    {"texel_size", atlas.texelSize},
                    {"atlas", {atlas.width, atlas.height}},
+                   {"atlas_layout", fmt::format("{:016x}", atlas.layoutHash())},
                    {"elements", atlas.elements}});
   return identity;
 }

@@ -1,9 +1,9 @@
-// Where the lightmap's charts go: stb_rect_pack's skyline packer over fixed candidates (strip
-// widths, two heuristics, charts as they are, all lying or all standing, then up to 1,000 charts
-// one chart at a time turned), the least texels kept. Past 1,000 charts the widths thin out as
-// the charts grow, so the time stays near-linear in their count. The packed region's outer `trim` texels are cut away: a
-// chart on the lightmap's border needs no gutter on that side, as CLAMP_TO_EDGE repeats its own
-// edge texels there (the sampler the .glb declares). Deterministic: same sizes, same layout.
+// Where the lightmap's charts go. Up to 1,000 charts: stb_rect_pack's skyline packer over fixed
+// candidates (strip widths, two heuristics, charts as they are, all lying or all standing, then
+// one chart at a time turned), the least texels kept. Past that, the solve atlas's best-fit
+// packer (src/scene/AtlasPacker.h, O(n log n)). The packed region's outer `trim` texels are cut
+// away: a chart on the lightmap's border needs no gutter on that side, as CLAMP_TO_EDGE repeats
+// its own edge texels there (the sampler the .glb declares). Deterministic: same sizes, same layout.
 #pragma once
 #include <glm/glm.hpp>
 #include <vector>

@@ -202,7 +202,7 @@ tinygltf::Model model(const Scene& scene, const Atlas& atlas, const Lightmap& ma
     m.materials.push_back(material(scene.materials[mat], exrName, exposureScale));
   addObjects(m, scene, atlas, map);
   embedLightmap(m, png);
-  tinygltf::Sampler sampler;  // bilinear, no mipmaps: a 2-texel gutter guards level 0 only
+  tinygltf::Sampler sampler;  // bilinear, no mipmaps: a 1-texel gutter guards level 0 only
   sampler.magFilter = sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
   sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;  // the border's gutters are cut away
   m.samplers.push_back(sampler);

@@ -14,7 +14,10 @@
 namespace hemirad {
 
 struct LightmapOptions {
-  int gutter = 2;        // texels around every chart
+  // Texels around every chart: bilinear sampling anywhere on a chart reads at most one texel
+  // beyond its cells (its grid covers its outline), so one is enough for level 0; not shared
+  // between neighbours, whose edge values differ (a shared texel would blend them in).
+  int gutter = 1;
   bool dilate = true;    // false: gutters and empty cells stay black (the old atlas; for comparisons)
   double maxAspect = 8;  // the longer side over the shorter, at most (where the charts allow)
 };
@@ -27,7 +30,7 @@ struct Lightmap {
   std::size_t elements = 0;
   std::size_t chartTexels = 0;  // the charts with their gutters, as far as they lie in the image
   // Elements over texels: what of the lightmap holds radiosity. Gutters bound it: a w x h chart
-  // fills at most w h / ((w + 4) (h + 4)) of its place, more on the border.
+  // fills at most w h / ((w + 2) (h + 2)) of its place, more on the border.
   double texelUse() const { return width && height ? double(elements) / (double(width) * height) : 0; }
   // The packer's part: charts with gutters over texels.
   double packing() const { return width && height ? double(chartTexels) / (double(width) * height) : 0; }

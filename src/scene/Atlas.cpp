@@ -9,6 +9,8 @@
 #include <string>
 
 #include "src/base/Error.h"
+#include "src/base/MinAreaRect.h"
+#include "src/scene/AtlasPacker.h"
 #include "src/scene/Charts.h"
 #include "src/scene/SmoothNormals.h"
 
@@ -16,7 +18,6 @@ namespace hemirad {
 
 namespace {
 
-constexpr int kGutter = 1;
 // Over any GPU's texture size; keeps cell counts far from int overflow (fuzzed slivers).
 constexpr double kMaxChartSide = 1 << 20;
 // Memory per atlas texel: four GPU textures (centre+area, polygon id, B, dB: 52 bytes, host memory
@@ -34,11 +35,29 @@ struct ChartShape {
   glm::ivec2 size;
 };
 
+// The seed's frame turned in its plane to the minimum-area rectangle of the chart's outline
+// (src/base/MinAreaRect.h), where that saves area: fewer empty cells. A frame already along the
+// rectangle (an axis-aligned wall) is kept as it is, bit for bit.
+PlaneFrame chartFrame(const ChartGroup& g) {
+  PlaneFrame f = planeFrame(g.parts.front(), g.axis);
+  std::vector<glm::dvec2> points;
+  for (const Poly3& part : g.parts)
+    for (auto& v : part) points.push_back(f.project(v));
+  const MinAreaRect rect = minAreaRect(points);
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (glm::dvec2 q : points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+  if (!(rect.area < (1 - 1e-6) * (hi.x - lo.x) * (hi.y - lo.y))) return f;
+  const glm::dvec3 u = rect.axis.x * f.u + rect.axis.y * f.v;
+  f.u = glm::normalize(u - f.n * glm::dot(u, f.n));
+  f.v = glm::cross(f.n, f.u);
+  return f;
+}
+
 // The grid is centred on the chart's bounds so partial texels are shared by both sides.
 ChartShape chartShape(const ChartGroup& g, double ts) {
   ChartShape c;
   c.group = g;
-  c.frame = planeFrame(g.parts.front(), g.axis);
+  c.frame = chartFrame(g);
   glm::dvec2 lo(1e300), hi(-1e300);
   for (const Poly3& part : g.parts) {
     Poly2& q = c.parts.emplace_back();
@@ -52,6 +71,16 @@ ChartShape chartShape(const ChartGroup& g, double ts) {
   c.size = glm::max(glm::ivec2(cells), glm::ivec2(1));
   c.corner = lo - (glm::dvec2(c.size) * ts - extent) * 0.5;
   return c;
+}
+
+// The same grid turned a quarter counter-clockwise in its plane (u' = v, v' = -u): cell (i, j)
+// becomes (j, size.x - 1 - i), so the packer may place a chart standing or lying.
+void turnQuarter(ChartShape& c, double ts) {
+  c.frame = {c.frame.origin, c.frame.v, -c.frame.u, c.frame.n};
+  for (Poly2& part : c.parts)
+    for (glm::dvec2& q : part) q = glm::dvec2(q.y, -q.x);
+  c.corner = glm::dvec2(c.corner.y, -(c.corner.x + c.size.x * ts));
+  c.size = glm::ivec2(c.size.y, c.size.x);
 }
 
 // Chart-plane point q moved along the chart's axis onto the plane of polygon `on` (a planar
@@ -132,36 +161,18 @@ struct Layout {
   bool packed = false;           // within maxSize on both sides
   double width = 0, height = 0;  // texels (if not packed: as far as packing got)
   std::vector<glm::ivec2> origins;
+  std::vector<char> turned;      // per chart: placed a quarter turned (turnQuarter)
 };
 
-// Shelf packing, tallest first, into an atlas about as wide as high; the order is fixed, so the
-// layout is deterministic. Stops as soon as a side would exceed maxSize.
+// src/scene/AtlasPacker.h, after a cheap bound: charts over maxSize^2 texels are not packed.
 Layout pack(const std::vector<ChartShape>& shapes, int maxSize) {
-  Layout l;
-  double paddedArea = 0, widest = 0;
-  for (auto& s : shapes) {
-    paddedArea += double(s.size.x + 2 * kGutter) * (s.size.y + 2 * kGutter);
-    widest = std::max(widest, double(s.size.x + 2 * kGutter));
-  }
-  l.width = std::max(widest, std::ceil(std::sqrt(paddedArea)));
-  l.height = std::ceil(paddedArea / std::max(l.width, 1.0));
-  if (l.width > maxSize || paddedArea > double(maxSize) * maxSize) return l;
-  std::vector<int> order(shapes.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return shapes[a].size.y > shapes[b].size.y; });
-  l.origins.resize(shapes.size());
-  int width = int(l.width), x = 0, y = 0, shelf = 0;
-  for (int id : order) {
-    glm::ivec2 padded = shapes[id].size + 2 * kGutter;
-    if (x + padded.x > width) x = 0, y += shelf, shelf = 0;
-    if (y + padded.y > maxSize) return l.height = y + padded.y, l;
-    l.origins[id] = glm::ivec2(x, y) + kGutter;
-    x += padded.x;
-    shelf = std::max(shelf, padded.y);
-  }
-  l.height = y + shelf;
-  l.packed = true;
-  return l;
+  std::vector<glm::ivec2> sizes;
+  double area = 0;
+  for (auto& s : shapes) sizes.push_back(s.size), area += double(s.size.x) * s.size.y;
+  if (area > double(maxSize) * maxSize) return {false, std::sqrt(area), std::sqrt(area), {}, {}};
+  RectLayout r = packAtlasCharts(sizes, maxSize);
+  const bool packed = r.width <= maxSize && r.height <= maxSize;
+  return {packed, double(r.width), double(r.height), std::move(r.origins), std::move(r.turned)};
 }
 
 bool fits(const Layout& l, double maxBytes) { return l.packed && l.width * l.height * kBytesPerTexel <= maxBytes; }
@@ -186,11 +197,14 @@ double hostMemoryBytes() {
                                               bytesText(texels * kBytesPerTexel), bytesText(maxBytes));
   double fit = ts * std::sqrt(std::max({1.0, texels / (double(maxSize) * maxSize), texels * kBytesPerTexel / maxBytes}));
   for (int i = 0; i < 200 && !fits(pack(chartShapes(groups, fit), maxSize), maxBytes); ++i) fit *= 1.05;
+  // Shown to four digits, rounded up: rounded down it may not fit (a unit square at 64 texels).
+  const double shown = fit / scene.unitScale, unit = std::pow(10.0, std::floor(std::log10(shown)) - 3);
+  fit = std::ceil(shown / unit) * unit * scene.unitScale;
   double elements = scene.totalArea() / (fit * fit);
   double digits = std::pow(10.0, std::floor(std::log10(std::max(elements, 1.0))) - 1);  // two significant
   fail("texel size {:.4g} needs a {:.0f} x {:.0f} texel atlas, {}; use --texel-size {:.4g} or larger (or --elements {:.0f} "
        "or fewer)",
-       ts / scene.unitScale, l.width, l.height, limit, fit / scene.unitScale,
+       ts / scene.unitScale, l.width, l.height, limit, std::ceil(shown / unit) * unit,
        std::max(1.0, std::floor(elements / digits) * digits));
 }
 
@@ -238,10 +252,12 @@ Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxByte
   // Charts cover at least the scene's area: far over the texture limit, say so before cutting
   // the scene into more cells than any GPU holds.
   if (double least = scene.totalArea() / (ts * ts); least > double(maxSize) * maxSize)
-    failOverLimit(scene, groups, ts, {false, std::sqrt(least), std::sqrt(least), {}}, maxSize, memory);
+    failOverLimit(scene, groups, ts, {false, std::sqrt(least), std::sqrt(least), {}, {}}, maxSize, memory);
   std::vector<ChartShape> shapes = chartShapes(groups, ts);
   Layout layout = pack(shapes, maxSize);
   if (!fits(layout, memory)) failOverLimit(scene, groups, ts, layout, maxSize, memory);
+  for (std::size_t id = 0; id < shapes.size(); ++id)
+    if (layout.turned[id]) turnQuarter(shapes[id], ts);
   atlas.chartOf.assign(polys.size(), 0);
   for (size_t id = 0; id < shapes.size(); ++id) {
     atlas.charts.push_back(makeChart(shapes[id], layout.origins[id]));
@@ -355,6 +371,16 @@ std::vector<ShooterBlock> Atlas::shooterBlocks(const std::vector<int>& chartLeve
       }
   }
   return blocks;
+}
+
+std::uint64_t Atlas::layoutHash() const {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the values' bytes
+  auto add = [&](const auto& value) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
+    for (std::size_t i = 0; i < sizeof(value); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+  };
+  for (const Chart& c : charts) add(c.origin), add(c.size), add(c.frame.u), add(c.frame.v), add(c.corner);
+  return h;
 }
 
 double chooseTexelSize(const Scene& scene, const Discretisation& d) {

@@ -2,8 +2,8 @@
 // rectangular grid of square texels of side `texelSize`; the pieces of its polygons inside a
 // texel's prism (along the chart's axis) are one radiosity element, with their true total area
 // (partial texels at edges keep only what lies inside) and its centre at their area centroid.
-// Charts are packed with a one-texel gutter; lookups also mask by chart, so filtering never
-// mixes charts.
+// Each chart's grid lies along its outline's minimum-area rectangle; charts are packed without
+// gutters (src/scene/AtlasPacker.h): every lookup masks by chart, so filtering never mixes charts.
 #pragma once
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -64,6 +64,9 @@ class Atlas {
   // block emits from, each convex (elementShape for a 1 x 1 block).
   std::vector<Poly3> blockShape(const Scene& scene, glm::ivec4 rect) const;
   std::vector<ShooterBlock> shooterBlocks(int level) const;
+  // A hash of where every chart lies and how its grid is laid (origin, size, frame, corner):
+  // checkpoints carry it, so one made with another layout is refused, not misread.
+  std::uint64_t layoutHash() const;
   // Blocks of 2^chartLevel[c] texels a side on chart c.
   std::vector<ShooterBlock> shooterBlocks(const std::vector<int>& chartLevel) const;
   // Bilinear lookup of per-texel `values` at atlas coordinate `coord`, weighing only texels of
