@@ -9,6 +9,8 @@
 #include "tests/support/Files.h"
 #include "tests/support/Support.h"
 
+using namespace hemirad;
+
 namespace {
 
 double receiverB(const std::string& flags) {
@@ -34,8 +36,8 @@ TEST_CASE("Every item-buffer projection and stochastic iteration hide the blocke
   const double unblocked = 0.5 * 0.19982;  // rho E F, Howell C-11
   INFO("element by element " << reference << ", unblocked " << unblocked);
   CHECK(reference < 0.6 * unblocked);
-  for (const hemirad::Projection p : hemirad::allProjections()) {
-    const std::string projection = hemirad::projectionName(p);
+  for (const Projection p : allProjections()) {
+    const std::string projection = projectionName(p);
     const double b = receiverB("--hemisphere " + projection + " --item-res 128 --item-subdiv 1 --converge 0.9999");
     INFO(projection << ": " << b);
     CHECK(b == Approx(reference).epsilon(0.001));
