@@ -26,7 +26,8 @@ struct ExactVisibility::Impl {
   Tree tree;
 };
 
-ExactVisibility::ExactVisibility(const std::vector<std::vector<glm::dvec3>>& polygons) : impl_(std::make_unique<Impl>()) {
+ExactVisibility::ExactVisibility(const std::vector<std::vector<glm::dvec3>>& polygons)
+    : impl_(std::make_unique<Impl>()) {
   for (size_t p = 0; p < polygons.size(); ++p)
     for (size_t k = 1; k + 1 < polygons[p].size(); ++k) {  // convex: a fan
       impl_->triangles.emplace_back(point(polygons[p][0]), point(polygons[p][k]), point(polygons[p][k + 1]));

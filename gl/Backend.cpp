@@ -31,7 +31,8 @@ std::optional<double> RenderBackend::freeMemoryMiB() const {
   GLint extensions = 0;
   glGetIntegerv(GL_NUM_EXTENSIONS, &extensions);
   for (GLint i = 0; i < extensions; ++i)
-    if (std::string(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)))) == "GL_NVX_gpu_memory_info") {
+    if (std::string(reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, GLuint(i)))) ==
+        "GL_NVX_gpu_memory_info") {
       GLint kib = 0;
       glGetIntegerv(kCurrentAvailableVidmemNVX, &kib);
       return kib / 1024.0;
@@ -58,8 +59,10 @@ BackendKind parseBackendKind(const std::string& name) {
 
 std::unique_ptr<RenderBackend> createBackend(const BackendOptions& options) {
   switch (options.kind) {
-    case BackendKind::OSMesa: return createOSMesaBackend(options);
-    case BackendKind::Egl: return createEglBackend(options, false);
+    case BackendKind::OSMesa:
+      return createOSMesaBackend(options);
+    case BackendKind::Egl:
+      return createEglBackend(options, false);
     case BackendKind::Auto:
       // A hardware EGL device when there is one, else the software path, saying why.
       try {

@@ -15,29 +15,40 @@ std::string firstError;  // the first KHR_debug API error since the last takeDeb
 
 const char* typeName(GLenum type) {
   switch (type) {
-    case GL_DEBUG_TYPE_ERROR: return "error";
-    case GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR: return "deprecated";
-    case GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR: return "undefined behaviour";
-    case GL_DEBUG_TYPE_PORTABILITY: return "portability";
-    case GL_DEBUG_TYPE_PERFORMANCE: return "performance";
-    case GL_DEBUG_TYPE_MARKER: return "marker";
-    default: return "other";
+    case GL_DEBUG_TYPE_ERROR:
+      return "error";
+    case GL_DEBUG_TYPE_DEPRECATED_BEHAVIOR:
+      return "deprecated";
+    case GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR:
+      return "undefined behaviour";
+    case GL_DEBUG_TYPE_PORTABILITY:
+      return "portability";
+    case GL_DEBUG_TYPE_PERFORMANCE:
+      return "performance";
+    case GL_DEBUG_TYPE_MARKER:
+      return "marker";
+    default:
+      return "other";
   }
 }
 
 const char* severityName(GLenum severity) {
   switch (severity) {
-    case GL_DEBUG_SEVERITY_HIGH: return "high";
-    case GL_DEBUG_SEVERITY_MEDIUM: return "medium";
-    case GL_DEBUG_SEVERITY_LOW: return "low";
-    default: return "notification";
+    case GL_DEBUG_SEVERITY_HIGH:
+      return "high";
+    case GL_DEBUG_SEVERITY_MEDIUM:
+      return "medium";
+    case GL_DEBUG_SEVERITY_LOW:
+      return "low";
+    default:
+      return "notification";
   }
 }
 
 // Synchronous output: called on the thread of the GL call that caused it. Never throws (it
 // returns into the driver); errors are kept for checkErrors instead.
-void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length, const GLchar* message,
-                               const void*) {
+void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+                               const GLchar* message, const void*) {
   std::string text = length >= 0 ? std::string(message, size_t(length)) : std::string(message);
   while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
   std::fprintf(stderr, "hemirad: GL debug: %s (%s, id %u): %s\n", typeName(type), severityName(severity), id,
@@ -49,21 +60,30 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum sev
 
 const char* errorName(unsigned error) {
   switch (error) {
-    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
-    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
-    default: return "unknown GL error";
+    case GL_INVALID_ENUM:
+      return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE:
+      return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION:
+      return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION:
+      return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY:
+      return "GL_OUT_OF_MEMORY";
+    case GL_STACK_OVERFLOW:
+      return "GL_STACK_OVERFLOW";
+    case GL_STACK_UNDERFLOW:
+      return "GL_STACK_UNDERFLOW";
+    default:
+      return "unknown GL error";
   }
 }
 
 void enableDebugOutput() {
   if (!glDebugMessageCallback || !glDebugMessageControl) {
-    std::fprintf(stderr, "hemirad: warning: --gl-debug: no KHR_debug in this context; GL errors are only checked "
-                         "at pass ends, without the driver's messages\n");
+    std::fprintf(stderr,
+                 "hemirad: warning: --gl-debug: no KHR_debug in this context; GL errors are only checked "
+                 "at pass ends, without the driver's messages\n");
     return;
   }
   glEnable(GL_DEBUG_OUTPUT);
@@ -91,7 +111,8 @@ void checkErrors(std::string_view where) {
   GLenum e = glGetError();
   std::string detail = takeDebugError();
   if (e != GL_NO_ERROR)
-    throw Error(fmt::format("GL error 0x{:04x} ({}) in {}{}", e, errorName(e), where, detail.empty() ? "" : ": " + detail));
+    throw Error(
+        fmt::format("GL error 0x{:04x} ({}) in {}{}", e, errorName(e), where, detail.empty() ? "" : ": " + detail));
   if (!detail.empty()) throw Error(fmt::format("GL error in {}: {}", where, detail));
 }
 

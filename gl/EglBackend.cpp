@@ -1,10 +1,10 @@
 // EGL: a headless context on a GPU through EGL_EXT_platform_device, or Mesa's surfaceless
 // platform (llvmpipe) as the fallback. libEGL is opened at run time, like libOSMesa.
-#include "gl/GL.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <dlfcn.h>
 #include <fmt/format.h>
+#include "gl/GL.h"
 
 #include <cstdlib>
 #include <cstring>
@@ -92,9 +92,15 @@ class EglBackend final : public RenderBackend {
     auto bindApi = a.get<PFNEGLBINDAPIPROC>("eglBindAPI");
     auto createContext = a.get<PFNEGLCREATECONTEXTPROC>("eglCreateContext");
     if (!bindApi(EGL_OPENGL_API)) throw Error("egl: desktop OpenGL is not supported");
-    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                              EGL_CONTEXT_OPENGL_DEBUG, options.debug ? EGL_TRUE : EGL_FALSE, EGL_NONE};
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                              4,
+                              EGL_CONTEXT_MINOR_VERSION,
+                              5,
+                              EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                              EGL_CONTEXT_OPENGL_DEBUG,
+                              options.debug ? EGL_TRUE : EGL_FALSE,
+                              EGL_NONE};
     // No config and no surface: rendering goes to FBOs (EGL_KHR_no_config_context, surfaceless_context).
     context_ = createContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
     if (context_ == EGL_NO_CONTEXT) {

@@ -72,9 +72,10 @@ void dispatchLinear(std::uint64_t groups) {
 void requireStorageBlock(std::size_t bytes, const std::string& what) {
   const std::size_t most = limits().storageBlockBytes;
   if (bytes > most)
-    throw Error(fmt::format("{} needs {} bytes in one shader storage block, over the GPU's "
-                            "GL_MAX_SHADER_STORAGE_BLOCK_SIZE of {} ({:.1f} MiB)",
-                            what, bytes, most, most / 1048576.0));
+    throw Error(
+        fmt::format("{} needs {} bytes in one shader storage block, over the GPU's "
+                    "GL_MAX_SHADER_STORAGE_BLOCK_SIZE of {} ({:.1f} MiB)",
+                    what, bytes, most, most / 1048576.0));
 }
 
 }  // namespace hemirad::gl

@@ -43,7 +43,8 @@ OSMesaApi& api() {
                                   : "libOSMesa.so.8 not found (install libosmesa6, or set HEMIRAD_OSMESA_LIBRARY)";
       return r;
     }
-    r.createContextAttribs = reinterpret_cast<decltype(r.createContextAttribs)>(dlsym(r.lib, "OSMesaCreateContextAttribs"));
+    r.createContextAttribs =
+        reinterpret_cast<decltype(r.createContextAttribs)>(dlsym(r.lib, "OSMesaCreateContextAttribs"));
     r.makeCurrent = reinterpret_cast<decltype(r.makeCurrent)>(dlsym(r.lib, "OSMesaMakeCurrent"));
     r.destroyContext = reinterpret_cast<decltype(r.destroyContext)>(dlsym(r.lib, "OSMesaDestroyContext"));
     r.getProcAddress = reinterpret_cast<decltype(r.getProcAddress)>(dlsym(r.lib, "OSMesaGetProcAddress"));
@@ -61,8 +62,17 @@ class OSMesaBackend final : public RenderBackend {
     if (!a.lib) throw Error("osmesa: " + a.error);
     if (!a.createContextAttribs || !a.makeCurrent || !a.destroyContext || !a.getProcAddress)
       throw Error("osmesa: libOSMesa lacks OSMesaCreateContextAttribs (Mesa too old)");
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE,
-                           OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           0,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           4,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           5,
+                           0};
     context_ = a.createContextAttribs(attribs, nullptr);
     if (!context_) throw Error("osmesa: could not create a GL 4.5 core context");
     // All rendering goes to FBOs; the default framebuffer is a 1x1 placeholder.

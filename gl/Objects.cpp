@@ -20,12 +20,24 @@ std::string formatBytes(double bytes) {
 
 std::string formatName(GLenum f, int& bytesPerTexel) {
   switch (f) {
-    case GL_RGBA32F: bytesPerTexel = 16; return "GL_RGBA32F";
-    case GL_R32UI: bytesPerTexel = 4; return "GL_R32UI";
-    case GL_R32F: bytesPerTexel = 4; return "GL_R32F";
-    case GL_DEPTH_COMPONENT32F: bytesPerTexel = 4; return "GL_DEPTH_COMPONENT32F";
-    case GL_RGBA8: bytesPerTexel = 4; return "GL_RGBA8";
-    default: bytesPerTexel = 16; return fmt::format("format 0x{:04x}", f);
+    case GL_RGBA32F:
+      bytesPerTexel = 16;
+      return "GL_RGBA32F";
+    case GL_R32UI:
+      bytesPerTexel = 4;
+      return "GL_R32UI";
+    case GL_R32F:
+      bytesPerTexel = 4;
+      return "GL_R32F";
+    case GL_DEPTH_COMPONENT32F:
+      bytesPerTexel = 4;
+      return "GL_DEPTH_COMPONENT32F";
+    case GL_RGBA8:
+      bytesPerTexel = 4;
+      return "GL_RGBA8";
+    default:
+      bytesPerTexel = 16;
+      return fmt::format("format 0x{:04x}", f);
   }
 }
 
@@ -111,7 +123,8 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
     glTextureStorage2D(id_, 1, internalFormat, width, height);
   int texel = 0;
   const std::string name = formatName(internalFormat, texel);
-  const std::size_t bytes = std::size_t(texel) * std::size_t(width) * std::size_t(height) * std::size_t(std::max(layers, 1));
+  const std::size_t bytes =
+      std::size_t(texel) * std::size_t(width) * std::size_t(height) * std::size_t(std::max(layers, 1));
   checkAllocation([&] {
     return fmt::format("a {} x {}{} {} texture ({})", width, height, layers ? fmt::format(" x {}", layers) : "", name,
                        formatBytes(double(bytes)));

@@ -78,7 +78,7 @@ class Buffer : public Handle<deleteBuffer> {
   void read(std::size_t offset, std::size_t bytes, void* out) const;
   void bindBase(GLenum target, GLuint index) const;  // SSBO / UBO binding point
   void bind(GLenum target) const;                    // e.g. GL_DISPATCH_INDIRECT_BUFFER
-  void clear(float value);          // every 32-bit word
+  void clear(float value);                           // every 32-bit word
   void clear(std::uint32_t value);
   void copyTo(Buffer& destination, std::size_t from, std::size_t to, std::size_t bytes) const;
 
@@ -133,7 +133,7 @@ class VertexArray : public Handle<deleteVertexArray> {
   // Vertex buffer binding 1, advanced once per instance: attribute `location` is GLuint
   // `buffer[baseInstance + instance]` (an indirect draw's baseInstance picks the element).
   void instanceUintAttribute(GLuint location, const Buffer& buffer);
-  void indexBuffer(const Buffer& buffer);               // GLuint indices (drawIndexedTriangles)
+  void indexBuffer(const Buffer& buffer);  // GLuint indices (drawIndexedTriangles)
   void bind() const;
 };
 
@@ -141,7 +141,7 @@ class Query : public Handle<deleteQuery> {
  public:
   Query() = default;
   explicit Query(GLenum target);  // GL_TIMESTAMP, GL_TIME_ELAPSED, GL_SAMPLES_PASSED...
-  std::uint64_t result() const;  // waits if not yet available
+  std::uint64_t result() const;   // waits if not yet available
 };
 
 class Program : public Handle<deleteProgram> {
@@ -154,8 +154,8 @@ class Program : public Handle<deleteProgram> {
   void set(const char* uniform, unsigned v) const;
   void set(const char* uniform, float v) const;
   void set(const char* uniform, const float* mat4) const;
-  void set(const char* uniform, int x, int y) const;              // ivec2
-  void set(const char* uniform, float x, float y, float z) const;  // vec3
+  void set(const char* uniform, int x, int y) const;                      // ivec2
+  void set(const char* uniform, float x, float y, float z) const;         // vec3
   void set(const char* uniform, std::span<const unsigned> values) const;  // uint[]
   // Compute dispatch helpers (the program must be in use).
   static void dispatch(unsigned x, unsigned y = 1, unsigned z = 1);

@@ -21,6 +21,7 @@ Program renderProgram(const std::string& vertexFile, const std::string& fragment
 void checkCompiles(const std::string& file, const Defines& defines);
 
 // The expanded source as the driver sees it (exposed for tests and error messages).
-std::string shaderSource(const std::string& file, const Defines& defines, std::vector<std::string>* sourceNames = nullptr);
+std::string shaderSource(const std::string& file, const Defines& defines,
+                         std::vector<std::string>* sourceNames = nullptr);
 
 }  // namespace hemirad::gl

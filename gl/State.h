@@ -45,7 +45,7 @@ enum class Barrier : GLbitfield {
   TextureUpdate = GL_TEXTURE_UPDATE_BARRIER_BIT,  // glGetTextureImage and uploads
   BufferUpdate = GL_BUFFER_UPDATE_BARRIER_BIT,    // buffer reads, copies and uploads
   Framebuffer = GL_FRAMEBUFFER_BARRIER_BIT,
-  Command = GL_COMMAND_BARRIER_BIT,               // indirect commands
+  Command = GL_COMMAND_BARRIER_BIT,  // indirect commands
 };
 constexpr Barrier operator|(Barrier a, Barrier b) { return Barrier(GLbitfield(a) | GLbitfield(b)); }
 void barrier(Barrier bits);

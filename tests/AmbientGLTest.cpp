@@ -83,8 +83,9 @@ TEST_CASE("A solve's own camera images carry no ambient term unless --ambient on
   // face at 0.999). So a solve's --out is B alone unless asked; view and walkthrough frames keep it.
   auto render = [](const std::string& flags) {
     const std::string exr = test::tempPath("solve-ambient" + std::to_string(std::hash<std::string>{}(flags)) + ".exr");
-    const test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
-                                        " --elements 300 --shots 16 --width 32 --height 32 --quiet --out " + exr + flags);
+    const test::Run run =
+        test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                      " --elements 300 --shots 16 --width 32 --height 32 --quiet --out " + exr + flags);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
     return test::readText(exr);

@@ -46,8 +46,10 @@ TEST_CASE("A light path blends its keyframes' offsets and holds them past the en
 }
 
 TEST_CASE("A bad light path is refused naming the file and line", "[cpu][bad-input]") {
-  for (auto [text, why] : {std::pair{"0 1 2\n", ":1: a keyframe is TIME DX DY DZ"}, {"0 0 0 0\nx 0 0 0\n", ":2: 'x' is not a number"},
-                           {"1 0 0 0\n1 0 0 0\n", ":2: keyframe times must be >= 0 and increase"}, {"# none\n", "no keyframes"}}) {
+  for (auto [text, why] : {std::pair{"0 1 2\n", ":1: a keyframe is TIME DX DY DZ"},
+                           {"0 0 0 0\nx 0 0 0\n", ":2: 'x' is not a number"},
+                           {"1 0 0 0\n1 0 0 0\n", ":2: keyframe times must be >= 0 and increase"},
+                           {"# none\n", "no keyframes"}}) {
     const std::string path = writePath("bad.path", text);
     try {
       readLightPath(path);
@@ -66,7 +68,8 @@ TEST_CASE("Moving the lights translates only the emitters and keeps the atlas la
   for (std::size_t i = 0; i < s.polygons().size(); ++i) {
     const bool emits = s.materials[std::size_t(s.polygons()[i].material)].emissive();
     lights += emits;
-    CHECK(moved.polygons()[i].vertices[0] == s.polygons()[i].vertices[0] + (emits ? glm::dvec3(0, 0, 100) : glm::dvec3(0.0)));
+    CHECK(moved.polygons()[i].vertices[0] ==
+          s.polygons()[i].vertices[0] + (emits ? glm::dvec3(0, 0, 100) : glm::dvec3(0.0)));
   }
   CHECK(lights > 0);
   // The moved atlas keeps the layout, and its elements are where the moved scene's own atlas puts them.
@@ -80,18 +83,20 @@ TEST_CASE("Moving the lights translates only the emitters and keeps the atlas la
   CHECK(b.charts[1].frame.origin == rebuilt.charts[1].frame.origin);
 }
 
-TEST_CASE("animate carries the solution across frames and its window forgets the light's old place", "[heavy][cli][gl]") {
+TEST_CASE("animate carries the solution across frames and its window forgets the light's old place",
+          "[heavy][cli][gl]") {
   // The light drops 150 mm in the first 0.1 s and stays. With a window of 16 iterations the
   // mean forgets where the light was: two frames (48 iterations) after the move its error is
   // back at a short solve's (measured 0.10 before the move, 0.11 after); the plain mean of all
   // iterations keeps a quarter of the old light (measured 0.39).
   auto animate = [](const std::string& name, unsigned window) {
     const std::string dir = test::tempPath(name);
-    test::Run run = test::hemirad(
-        "animate " + test::sourcePath("scenes/cornell/cornell.obj") +
-        " --elements 200 --fps 10 --frame-shots 24 --item-res 64 --item-subdiv 1 --width 32 --height 32 "
-        "--reference-convergence 0.99 --window " + std::to_string(window) + " --light-path " +
-        writePath("drop.path", "0 0 0 0\n0.1 0 -150 0\n0.3 0 -150 0\n") + " --frames " + dir);
+    test::Run run =
+        test::hemirad("animate " + test::sourcePath("scenes/cornell/cornell.obj") +
+                      " --elements 200 --fps 10 --frame-shots 24 --item-res 64 --item-subdiv 1 --width 32 --height 32 "
+                      "--reference-convergence 0.99 --window " +
+                      std::to_string(window) + " --light-path " +
+                      writePath("drop.path", "0 0 0 0\n0.1 0 -150 0\n0.3 0 -150 0\n") + " --frames " + dir);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
     return std::pair{dir, readCsv(dir + "/frames.csv")};

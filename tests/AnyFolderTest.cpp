@@ -12,8 +12,10 @@ using namespace hemirad;
 using Catch::Contains;
 namespace fs = std::filesystem;
 
-TEST_CASE("bench and experiment run from an empty folder, finding the shipped scenes beside the binary, and experiment's "
-          "default output is a new folder, never an earlier run's", "[heavy][gl][cli]") {
+TEST_CASE(
+    "bench and experiment run from an empty folder, finding the shipped scenes beside the binary, and experiment's "
+    "default output is a new folder, never an earlier run's",
+    "[heavy][gl][cli]") {
   const std::string dir = test::tempPath("elsewhere");
   fs::create_directories(dir);
   test::Run bench = test::shell("cd " + dir + " && $HEMIRAD bench --elements 300 --split-shots 4 --json bench.json");
@@ -26,9 +28,10 @@ TEST_CASE("bench and experiment run from an empty folder, finding the shipped sc
 
   fs::create_directories(dir + "/hemirad-experiment");  // an earlier run's folder: left alone
   std::ofstream(dir + "/hemirad-experiment/summary.md") << "mine";
-  test::Run experiment = test::shell(
-      "cd " + dir + " && $HEMIRAD experiment --scenes scenes/cornell/cornell.obj --algorithms progressive --elements 150 "
-      "--reference-convergence 0.9 --fps 0.25 --frame-ms 5 --width 32 --height 32");
+  test::Run experiment =
+      test::shell("cd " + dir +
+                  " && $HEMIRAD experiment --scenes scenes/cornell/cornell.obj --algorithms progressive --elements 150 "
+                  "--reference-convergence 0.9 --fps 0.25 --frame-ms 5 --width 32 --height 32");
   INFO(experiment.output);
   REQUIRE(experiment.exitCode == 0);
   const std::string out = dir + "/hemirad-experiment-2/";

@@ -16,7 +16,8 @@ using namespace hemirad;
 
 namespace {
 glm::dvec3 turnedXy(glm::dvec2 p, double angle, glm::dvec3 at) {
-  return at + glm::dvec3(p.x * std::cos(angle) - p.y * std::sin(angle), p.x * std::sin(angle) + p.y * std::cos(angle), 0);
+  return at +
+         glm::dvec3(p.x * std::cos(angle) - p.y * std::sin(angle), p.x * std::sin(angle) + p.y * std::cos(angle), 0);
 }
 
 // n separate small charts on the floor, turned at random: triangles, thin strips and quads cut
@@ -31,9 +32,14 @@ Scene smallCharts(int n) {
     const double angle = 2 * M_PI * unit(rng), w = 0.2 + 0.8 * unit(rng), h = 0.2 + 0.8 * unit(rng);
     auto p = [&](double x, double y) { return turnedXy({x, y}, angle, at); };
     switch (k % 3) {
-      case 0: s.addPolygon({p(0, 0), p(w, 0), p(w * unit(rng), h)}, m, o); break;
-      case 1: s.addPolygon({p(0, 0), p(w + 0.5, 0), p(w + 0.5, 0.06), p(0, 0.06)}, m, o); break;
-      default: s.addPolygon({p(0, 0), p(w, 0), p(w, h)}, m, o), s.addPolygon({p(0, 0), p(w, h), p(0, h)}, m, o);
+      case 0:
+        s.addPolygon({p(0, 0), p(w, 0), p(w * unit(rng), h)}, m, o);
+        break;
+      case 1:
+        s.addPolygon({p(0, 0), p(w + 0.5, 0), p(w + 0.5, 0.06), p(0, 0.06)}, m, o);
+        break;
+      default:
+        s.addPolygon({p(0, 0), p(w, 0), p(w, h)}, m, o), s.addPolygon({p(0, 0), p(w, h), p(0, h)}, m, o);
     }
   }
   return s;
@@ -63,7 +69,8 @@ TEST_CASE("A rectangle turned in its plane and cut along its diagonal gets a tig
   const double angle = 0.65, fold = 2 * M_PI / 180;
   const glm::dvec3 a = turnedXy({0, 0}, angle, {}), b = turnedXy({1, 0}, angle, {}), c = turnedXy({1, 0.3}, angle, {}),
                    d0 = turnedXy({0, 0.3}, angle, {});
-  const glm::dvec3 mid = 0.5 * (a + c), across = d0 - mid - glm::dot(d0 - mid, glm::normalize(c - a)) * glm::normalize(c - a);
+  const glm::dvec3 mid = 0.5 * (a + c),
+                   across = d0 - mid - glm::dot(d0 - mid, glm::normalize(c - a)) * glm::normalize(c - a);
   const glm::dvec3 d = d0 + glm::dvec3(0, 0, std::sin(fold) * glm::length(across)) - across * (1 - std::cos(fold));
   s.addPolygon({a, b, c}, m, o), s.addPolygon({a, c, d}, m, o);
   const Atlas atlas = buildAtlas(s, 0.01, 16384, 0, 30);
@@ -90,7 +97,8 @@ TEST_CASE("Best-fit packing places every rectangle once, inside the strip, in st
   std::vector<std::size_t> steps;
   for (int n : {2000, 20000}) {
     std::vector<glm::ivec2> sizes;
-    for (int i = 0; i < n; ++i) sizes.push_back(i % 10 ? glm::ivec2(side(rng), side(rng)) : glm::ivec2(longSide(rng), side(rng)));
+    for (int i = 0; i < n; ++i)
+      sizes.push_back(i % 10 ? glm::ivec2(side(rng), side(rng)) : glm::ivec2(longSide(rng), side(rng)));
     const RectLayout l = packAtlasCharts(sizes, 16384);
     std::vector<char> used(std::size_t(l.width) * l.height, 0);
     double area = 0;

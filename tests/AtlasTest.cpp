@@ -11,7 +11,7 @@ Scene shapes() {
   Scene s;
   int m = test::material(s, 0.5, 1.0);
   int o = s.addObject("shapes");
-  s.addPolygon({{0, 0, 0}, {1, 0, 0}, {0.3, 0.8, 0}}, m, o);                        // triangle
+  s.addPolygon({{0, 0, 0}, {1, 0, 0}, {0.3, 0.8, 0}}, m, o);                           // triangle
   s.addPolygon(test::rectangle({0, 0, 1}, {1, 0, 0}, {0, 0.6, 0.8}, 1.3, 0.7), m, o);  // tilted quad
   Poly3 pentagon;
   for (int k = 0; k < 5; ++k) pentagon.push_back({2 + std::cos(k * 2 * M_PI / 5), 0.5, std::sin(k * 2 * M_PI / 5)});
@@ -29,13 +29,16 @@ Scene charted() {
   for (int j = 0; j < 6; ++j)
     for (int i = 0; i < 6; ++i) {
       glm::dvec3 a(4 + i / 6.0, j / 6.0, 0), b = a + glm::dvec3(1 / 6.0, 0, 0), c = b + glm::dvec3(0, 1 / 6.0, 0),
-                 d = a + glm::dvec3(0, 1 / 6.0, 0);
+                                             d = a + glm::dvec3(0, 1 / 6.0, 0);
       s.addPolygon({a, b, c}, m, o), s.addPolygon({a, c, d}, m, o);
     }
-  for (auto [x, y] : {std::pair{0, 0}, {1, 0}, {0, 1}}) s.addPolygon(test::rectangle({6 + 0.4 * x, 0.4 * y, 0}, {1, 0, 0}, {0, 1, 0}, 0.4, 0.4), m, o);
+  for (auto [x, y] : {std::pair{0, 0}, {1, 0}, {0, 1}})
+    s.addPolygon(test::rectangle({6 + 0.4 * x, 0.4 * y, 0}, {1, 0, 0}, {0, 1, 0}, 0.4, 0.4), m, o);
   for (int j = 0; j < 3; ++j)
     for (int k = 0; k < 24; ++k) {
-      auto at = [&](int kk, int jj) { return glm::dvec3(9 + std::cos(kk * M_PI / 12), jj / 3.0, std::sin(kk * M_PI / 12)); };
+      auto at = [&](int kk, int jj) {
+        return glm::dvec3(9 + std::cos(kk * M_PI / 12), jj / 3.0, std::sin(kk * M_PI / 12));
+      };
       s.addPolygon({at(k, j), at(k, j + 1), at(k + 1, j + 1), at(k + 1, j)}, m, o);
     }
   return s;
@@ -49,7 +52,8 @@ std::vector<double> chartAreas(const Scene& s, const Atlas& a) {
 }
 }  // namespace
 
-TEST_CASE("Charts join coplanar neighbours at angle 0 and curved ones at 30 degrees, one material and object each", "[cpu]") {
+TEST_CASE("Charts join coplanar neighbours at angle 0 and curved ones at 30 degrees, one material and object each",
+          "[cpu]") {
   Scene s = charted();
   const Atlas flat = buildAtlas(s, 0.05), curved = buildAtlas(s, 0.05, 16384, 0, 30);
   // shapes' 3 polygons, the wall (one merged outline), the L (3 parts), 24 x 3 cylinder quads.
@@ -65,7 +69,8 @@ TEST_CASE("Charts join coplanar neighbours at angle 0 and curved ones at 30 degr
       for (int p : c.polygons) {
         CHECK(s.polygons()[std::size_t(p)].material == s.polygons()[std::size_t(c.polygon)].material);
         CHECK(s.polygons()[std::size_t(p)].object == s.polygons()[std::size_t(c.polygon)].object);
-        CHECK(glm::dot(s.polygons()[std::size_t(p)].normal, c.frame.n) > std::cos((a == &flat ? 1e-3 : 30.0 * M_PI / 180)));
+        CHECK(glm::dot(s.polygons()[std::size_t(p)].normal, c.frame.n) >
+              std::cos((a == &flat ? 1e-3 : 30.0 * M_PI / 180)));
       }
 }
 

@@ -26,7 +26,8 @@ TEST_CASE("Bench scene size counts a triangle a quad and a pentagon as 6 triangl
 
 TEST_CASE("Bench texel use of a unit square at texel 1/4 is its 16 elements over the atlas", "[cpu]") {
   Scene s;
-  s.addPolygon(test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 1.0), test::material(s, 0.5, 1.0), s.addObject("square"));
+  s.addPolygon(test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0, 1.0), test::material(s, 0.5, 1.0),
+               s.addObject("square"));
   Atlas a = buildAtlas(s, 0.25);
   REQUIRE(a.elements == 16);
   CHECK(a.width * a.height == 16);  // no gutters (src/scene/AtlasPacker.h): the chart is the atlas
@@ -35,8 +36,8 @@ TEST_CASE("Bench texel use of a unit square at texel 1/4 is its 16 elements over
 }
 
 TEST_CASE("Bench triangle ceiling keeps L6 for the Cornell box and splits real scenes under 2^22 triangles", "[cpu]") {
-  CHECK(ceilingLevel(32) == 6);              // 131,072 item triangles
-  CHECK(ceilingLevel(21004) == 3);           // 1,344,256; L4 would be 5,376,024
-  CHECK(ceilingLevel(1029046) == 1);         // 4,116,184
-  CHECK(ceilingLevel(5000000) == 0);         // drawn unsplit however large
+  CHECK(ceilingLevel(32) == 6);       // 131,072 item triangles
+  CHECK(ceilingLevel(21004) == 3);    // 1,344,256; L4 would be 5,376,024
+  CHECK(ceilingLevel(1029046) == 1);  // 4,116,184
+  CHECK(ceilingLevel(5000000) == 0);  // drawn unsplit however large
 }

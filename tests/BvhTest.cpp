@@ -57,7 +57,8 @@ TEST_CASE("BVH nodes bound their triangles and every triangle lies in exactly on
     for (std::uint32_t t = first; t < first + count; ++t) {
       seen.insert(t);
       const BvhTriangle& tri = bvh.triangles()[t];
-      for (glm::vec3 v : {glm::vec3(tri.v0), glm::vec3(tri.v0) + glm::vec3(tri.e1), glm::vec3(tri.v0) + glm::vec3(tri.e2)})
+      for (glm::vec3 v :
+           {glm::vec3(tri.v0), glm::vec3(tri.v0) + glm::vec3(tri.e1), glm::vec3(tri.v0) + glm::vec3(tri.e2)})
         for (std::uint32_t a : above) {
           CHECK(glm::all(glm::lessThanEqual(glm::vec3(bvh.nodes()[a].lo), v)));
           CHECK(glm::all(glm::greaterThanEqual(glm::vec3(bvh.nodes()[a].hi), v)));

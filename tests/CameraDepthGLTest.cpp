@@ -24,7 +24,8 @@ Scene hungLightCornell() {
     const int object = s.addObject(name);
     Poly3 v = p.vertices;
     if (name == "ceiling") {  // drawn before the light, as in the OBJ: depth ties go to the ceiling
-      if (!ceilingDone) s.addPolygon({{0, 548.8, 0}, {556, 548.8, 0}, {556, 548.8, 559.2}, {0, 548.8, 559.2}}, p.material, object);
+      if (!ceilingDone)
+        s.addPolygon({{0, 548.8, 0}, {556, 548.8, 0}, {556, 548.8, 559.2}, {0, 548.8, 559.2}}, p.material, object);
       ceilingDone = true;
       continue;
     }
@@ -55,7 +56,8 @@ double insideBy(const std::vector<glm::dvec2>& corners, glm::dvec2 q) {
 
 }  // namespace
 
-TEST_CASE("A light hung 0.5 mm below the ceiling carries its emission in every pixel it covers, seen from 5 m", "[heavy][gl][camera]") {
+TEST_CASE("A light hung 0.5 mm below the ceiling carries its emission in every pixel it covers, seen from 5 m",
+          "[heavy][gl][camera]") {
   test::backend();
   Scene scene = hungLightCornell();
   Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, 2000));

@@ -1,8 +1,8 @@
 // camera.frag's atlas lookup against its CPU twin Atlas::sample: a triangle (its hypotenuse cuts
 // texels, so lookups there mask out texels of no element) beside a pentagon, random per-texel
 // values, rendered through the Renderer on the GL backend, compared pixel by pixel.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <optional>
 #include <random>
@@ -46,7 +46,8 @@ std::vector<Poly3> fan(const Poly3& p) {
 std::optional<glm::vec3> stableSample(const Atlas& atlas, const std::vector<glm::vec4>& values, int polygon,
                                       const glm::dvec3& p, double step) {
   const glm::vec3 v = atlas.sample(values, polygon, atlas.atlasCoord(polygon, p));
-  for (const glm::dvec3 d : {glm::dvec3(step, 0, 0), glm::dvec3(-step, 0, 0), glm::dvec3(0, step, 0), glm::dvec3(0, -step, 0)}) {
+  for (const glm::dvec3 d :
+       {glm::dvec3(step, 0, 0), glm::dvec3(-step, 0, 0), glm::dvec3(0, step, 0), glm::dvec3(0, -step, 0)}) {
     const glm::vec3 w = atlas.sample(values, polygon, atlas.atlasCoord(polygon, p + d));
     if (glm::length(w - v) > 1e-2f) return std::nullopt;
   }
@@ -95,7 +96,7 @@ TEST_CASE("camera.frag's masked bilinear atlas lookup equals Atlas::sample pixel
         ++background;
         continue;
       }
-      const int polygon = in0 > in1 ? 0 : 1;  // a polygon of the shape's chart (the triangle's fan is itself)
+      const int polygon = in0 > in1 ? 0 : 1;     // a polygon of the shape's chart (the triangle's fan is itself)
       if (std::max(in0, in1) < pixel) continue;  // at an edge: coverage is the rasteriser's call
       const std::optional<glm::vec3> expect = stableSample(atlas, values, polygon, p, 1e-3 * atlas.texelSize);
       if (!expect) continue;

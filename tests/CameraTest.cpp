@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
-#include "src/scene/Camera.h"
 #include "src/base/Error.h"
+#include "src/scene/Camera.h"
 
 using namespace hemirad;
 

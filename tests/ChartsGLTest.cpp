@@ -1,7 +1,7 @@
 // Charts over many polygons (issue 29, src/scene/Charts.h): a tessellated surface solves as
 // the untessellated one, shows no seam at its polygons' edges, and shoots no more often.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 
 #include "src/output/Renderer.h"
@@ -15,7 +15,8 @@ namespace {
 void addTessellated(Scene& s, glm::dvec3 o, glm::dvec3 u, glm::dvec3 v, double w, double h, int n, int m, int obj) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      const glm::dvec3 a = o + u * (w * i / n) + v * (h * j / n), b = a + u * (w / n), c = b + v * (h / n), d = a + v * (h / n);
+      const glm::dvec3 a = o + u * (w * i / n) + v * (h * j / n), b = a + u * (w / n), c = b + v * (h / n),
+                       d = a + v * (h / n);
       s.addPolygon({a, b, c}, m, obj), s.addPolygon({a, c, d}, m, obj);
     }
 }
@@ -48,8 +49,10 @@ Scene litFloor(int n) {
   const int grey = test::material(s, 0.5, 0.0), lamp = test::material(s, 0.0, 10.0);
   const int floor = s.addObject("floor"), light = s.addObject("lamp");
   const glm::dvec3 X(1, 0, 0), Z(0, 0, 1);
-  if (n == 0) s.addPolygon(test::rectangle({0, 0, 0}, Z, X, 1, 1), grey, floor);
-  else addTessellated(s, {0, 0, 0}, Z, X, 1, 1, n, grey, floor);
+  if (n == 0)
+    s.addPolygon(test::rectangle({0, 0, 0}, Z, X, 1, 1), grey, floor);
+  else
+    addTessellated(s, {0, 0, 0}, Z, X, 1, 1, n, grey, floor);
   s.addPolygon(test::rectangle({0.3, 0.5, 0.4}, X, Z, 0.2, 0.2), lamp, light);  // faces down
   return s;
 }
@@ -81,7 +84,8 @@ TEST_CASE("A floor of 32 x 32 triangle pairs is one chart: shots to 90 % as for 
           "[gl][charts]") {
   const Scene quad = litFloor(0), cut = litFloor(32);
   const Camera top{{0.5, 0.4, 0.5}, {0.5, 0.0, 0.5}, {0, 0, 1}, 90.0};  // under the lamp: x in [0.1, 0.9] in view
-  const test::Solved a = test::solve(quad, 1.0 / 24, fastPlan(0.9), &top), b = test::solve(cut, 1.0 / 24, fastPlan(0.9), &top);
+  const test::Solved a = test::solve(quad, 1.0 / 24, fastPlan(0.9), &top),
+                     b = test::solve(cut, 1.0 / 24, fastPlan(0.9), &top);
   CHECK(b.atlas.charts.size() == 2);
   INFO("shots: quad " << a.status.shots << ", 2048 triangles " << b.status.shots);
   CHECK(double(b.status.shots) == Approx(double(a.status.shots)).epsilon(0.05));
@@ -90,7 +94,9 @@ TEST_CASE("A floor of 32 x 32 triangle pairs is one chart: shots to 90 % as for 
   // lookup blends across the cut as within a polygon.
   const Image& im = b.view;
   const double half = 0.4 * std::tan(glm::radians(45.0));  // half the view's side at the floor
-  auto column = [&](double x) { return int(std::floor((0.5 + half - x) / (2 * half) * im.width)); };  // x runs right to left
+  auto column = [&](double x) {
+    return int(std::floor((0.5 + half - x) / (2 * half) * im.width));
+  };  // x runs right to left
   int rows = 0;
   for (int y = im.height / 2 - 20; y < im.height / 2 + 20; ++y) {
     double atCut = 0, elsewhere = 0;
@@ -135,8 +141,11 @@ test::Solved solveCharts(const Scene& s, double texel, double angle, const Progr
 }
 }  // namespace
 
-TEST_CASE("Curved charts at --chart-angle 30 on a tessellated tube: a tenth of the charts, every polygon's area covered once, the "
-          "tube's radiosity as with a chart per facet", "[heavy][gl][charts]") {
+TEST_CASE(
+    "Curved charts at --chart-angle 30 on a tessellated tube: a tenth of the charts, every polygon's area covered "
+    "once, the "
+    "tube's radiosity as with a chart per facet",
+    "[heavy][gl][charts]") {
   const Scene s = litTube();
   const Atlas atlas = buildAtlas(s, 0.05, 16384, 0, 30);
   CHECK(atlas.charts.size() * 10 < s.polygons().size());

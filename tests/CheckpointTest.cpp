@@ -53,7 +53,9 @@ TEST_CASE("A solve stopped by SIGTERM checkpoints and resumes to the bitwise res
   // Signal the solve once its first periodic checkpoint exists: it is then well under way.
   test::Run run = test::shell("$HEMIRAD " + solveArgs() + " --checkpoint " + ck +
                               " --checkpoint-every 50 & p=$!\n"
-                              "while [ ! -e " + ck + " ] && kill -0 $p 2>/dev/null; do sleep 0.02; done\n"
+                              "while [ ! -e " +
+                              ck +
+                              " ] && kill -0 $p 2>/dev/null; do sleep 0.02; done\n"
                               "kill -TERM $p; wait $p; echo \"exit $?\"");
   INFO(run.output);
   CHECK_THAT(run.output, Contains("exit 143"));
@@ -102,9 +104,10 @@ TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint
   CHECK_THAT(needs.output, Contains("--checkpoint"));
 }
 
-TEST_CASE("A checkpoint that names the orthographic projection by its old name stereographic resumes, and another "
-          "projection is refused",
-          "[cpu][checkpoint]") {
+TEST_CASE(
+    "A checkpoint that names the orthographic projection by its old name stereographic resumes, and another "
+    "projection is refused",
+    "[cpu][checkpoint]") {
   const nlohmann::json current = {{"scene_hash", "00ff"}, {"projection", "orthographic"}, {"item_resolution", 128}};
   nlohmann::json saved = current;
   saved["projection"] = "stereographic";  // as written before issue 27: the same map, bitwise
@@ -152,7 +155,8 @@ TEST_CASE("A perspective-driven solve resumed mid-solve gives the bitwise result
   CHECK_THAT(other.output, Contains("fov_decay"));
 }
 
-TEST_CASE("A checkpoint made with another atlas layout (or before layouts were hashed) is refused", "[cpu][checkpoint]") {
+TEST_CASE("A checkpoint made with another atlas layout (or before layouts were hashed) is refused",
+          "[cpu][checkpoint]") {
   const nlohmann::json current = {{"scene_hash", "00ff"}, {"atlas", {10, 12}}, {"atlas_layout", "1234abcd"}};
   nlohmann::json saved = current;
   CHECK_NOTHROW(checkResumable("same.ckpt", saved, current));

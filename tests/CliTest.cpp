@@ -41,24 +41,27 @@ TEST_CASE("Bad flags and bad scenes exit with code 2 and one error line, writing
 
   const std::string mtl = "newmtl lamp\nKe 1 1 1\nnewmtl grey\nKd 0.5 0.5 0.5\n";
   const std::string quad = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
-  expectInputError("solve " + test::writeScene("nomtl", "mtllib x.mtl\n" + quad.substr(13) + "f 1 2 3\n", mtl) + " --out " + out,
-                   "material library 'x.mtl' not found", out);
+  expectInputError(
+      "solve " + test::writeScene("nomtl", "mtllib x.mtl\n" + quad.substr(13) + "f 1 2 3\n", mtl) + " --out " + out,
+      "material library 'x.mtl' not found", out);
   expectInputError("solve " + test::writeScene("unknown", quad + "usemtl neon\nf 1 2 3\n", mtl) + " --out " + out,
                    ":6: unknown material 'neon'", out);
-  expectInputError("solve " + test::writeScene("nan", quad + "v nan 0 0\nusemtl lamp\nf 1 2 5\n", mtl) + " --out " + out,
-                   ":6: vertex coordinate is not a finite number", out);
+  expectInputError(
+      "solve " + test::writeScene("nan", quad + "v nan 0 0\nusemtl lamp\nf 1 2 5\n", mtl) + " --out " + out,
+      ":6: vertex coordinate is not a finite number", out);
   expectInputError("solve " + test::writeScene("dark", quad + "usemtl grey\nf 1 2 3 4\n", mtl) + " --out " + out,
                    "no emitter", out);
-  expectInputError("solve " + test::writeScene("bright", quad + "usemtl grey\nf 1 2 3 4\n", "newmtl grey\nKd 1.2 0 0\nKe 1 1 1\n") +
-                       " --out " + out,
-                   "reflectance Kd 1.2 is above 1", out);
+  expectInputError(
+      "solve " + test::writeScene("bright", quad + "usemtl grey\nf 1 2 3 4\n", "newmtl grey\nKd 1.2 0 0\nKe 1 1 1\n") +
+          " --out " + out,
+      "reflectance Kd 1.2 is above 1", out);
   expectInputError("solve " + test::writeScene("empty", "", mtl) + " --out " + out, "no faces", out);
 }
 
 TEST_CASE("Degenerate faces are skipped with a warning and the solve goes on", "[cli]") {
-  std::string obj = test::writeScene("degenerate",
-                             "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nusemtl lamp\nf 1 2 3 4\nf 1 2 5\n",
-                             "newmtl lamp\nKe 1 1 1\n");
+  std::string obj = test::writeScene(
+      "degenerate", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nusemtl lamp\nf 1 2 3 4\nf 1 2 5\n",
+      "newmtl lamp\nKe 1 1 1\n");
   test::Run run = test::hemirad("solve " + obj + " --shots 3 --quiet");
   INFO(run.output);
   CHECK(run.exitCode == 0);
@@ -79,9 +82,10 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
   // 003's orthographic item buffer, importance-driven.
   auto hashOf = [](const std::string& flags, const std::string& env) {
     std::string report = test::tempPath("det" + std::to_string(std::hash<std::string>{}(flags + env)) + ".json");
-    test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
-                                      " --elements 1500 --shots 64 --item-res 256 --quiet " + flags + " --report " + report,
-                                  env);
+    test::Run run =
+        test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                          " --elements 1500 --shots 64 --item-res 256 --quiet " + flags + " --report " + report,
+                      env);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
     return test::readJson(report)["radiosity_hash"].get<std::string>();
@@ -99,17 +103,18 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
   }
 }
 
-TEST_CASE("The orthographic map's old name, --hemisphere stereographic, gives its bitwise result with a warning, and "
-          "conformal and equal-area give others",
-          "[cli]") {
+TEST_CASE(
+    "The orthographic map's old name, --hemisphere stereographic, gives its bitwise result with a warning, and "
+    "conformal and equal-area give others",
+    "[cli]") {
   auto solve = [](const std::string& flags) {
     std::string report = test::tempPath("proj" + std::to_string(std::hash<std::string>{}(flags)) + ".json");
     // Seed 003's item buffer at 128^2 and item-mesh level 0, where each map bends the mesh's straight
     // edges its own way and so nominates other occluders (at L3 two maps may nominate the same).
-    test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
-                                  " --elements 1500 --shots 32 --preset seed003 --item-res 128 --item-subdiv 0 --quiet " +
-                                  flags +
-                                  " --report " + report);
+    test::Run run =
+        test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                      " --elements 1500 --shots 32 --preset seed003 --item-res 128 --item-subdiv 0 --quiet " + flags +
+                      " --report " + report);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
     return std::pair{test::readJson(report)["radiosity_hash"].get<std::string>(), run.output};

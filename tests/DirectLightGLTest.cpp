@@ -31,9 +31,10 @@ constexpr int kDirectSize = 48;
 Image directSolve(const std::string& scene, const std::string& camera, const std::string& more = "",
                   const std::string& mode = "per-pixel") {
   const std::string out = test::tempPath("direct.exr");
-  const test::Run run = test::hemirad("solve " + scene + " --camera '" + camera + "' --width " +
-                                      std::to_string(kDirectSize) + " --height " + std::to_string(kDirectSize) +
-                                      " --supersample 1 --ambient off --quiet --direct " + mode + " --out " + out + " " + more);
+  const test::Run run =
+      test::hemirad("solve " + scene + " --camera '" + camera + "' --width " + std::to_string(kDirectSize) +
+                    " --height " + std::to_string(kDirectSize) + " --supersample 1 --ambient off --quiet --direct " +
+                    mode + " --out " + out + " " + more);
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
   return readImage(out);
@@ -54,10 +55,11 @@ std::string occluderScene() {
   std::filesystem::create_directories(dir);
   std::ofstream(dir + "/occluder.mtl") << "newmtl lamp\nKd 0 0 0\nKe 1 1 1\nnewmtl grey\nKd 0.5 0.5 0.5\n"
                                           "newmtl black\nKd 0 0 0\n";
-  std::ofstream(dir + "/occluder.obj") << "mtllib occluder.mtl\no lamp\nusemtl lamp\n"
-                                          "v 0.4 0.4 0\nv 0.6 0.4 0\nv 0.6 0.6 0\nv 0.4 0.6 0\nf 1 2 3 4\n"
-                                          "o receiver\nusemtl grey\nv -0.5 -0.5 1\nv -0.5 1.5 1\nv 1.5 1.5 1\nv 1.5 -0.5 1\nf 5 6 7 8\n"
-                                          "o occluder\nusemtl black\nv -1 -1 0.5\nv 0.5 -1 0.5\nv 0.5 2 0.5\nv -1 2 0.5\nf 9 10 11 12\n";
+  std::ofstream(dir + "/occluder.obj")
+      << "mtllib occluder.mtl\no lamp\nusemtl lamp\n"
+         "v 0.4 0.4 0\nv 0.6 0.4 0\nv 0.6 0.6 0\nv 0.4 0.6 0\nf 1 2 3 4\n"
+         "o receiver\nusemtl grey\nv -0.5 -0.5 1\nv -0.5 1.5 1\nv 1.5 1.5 1\nv 1.5 -0.5 1\nf 5 6 7 8\n"
+         "o occluder\nusemtl black\nv -1 -1 0.5\nv 0.5 -1 0.5\nv 0.5 2 0.5\nv -1 2 0.5\nf 9 10 11 12\n";
   return dir + "/occluder.obj";
 }
 
@@ -67,7 +69,9 @@ cpu::Polygon lampPart(double x0) {  // the lamp's part with x >= x0, counter-clo
 
 }  // namespace
 
-TEST_CASE("Per-pixel direct light under a square lamp is rho E times the exact point form factor at every receiver pixel", "[gl][direct]") {
+TEST_CASE(
+    "Per-pixel direct light under a square lamp is rho E times the exact point form factor at every receiver pixel",
+    "[gl][direct]") {
   const std::string path = test::sourcePath("scenes/analytic/parallel_squares.obj");
   const std::string view = "eye=0.5,0.5,0.05 target=0.5,0.5,1 up=0,1,0 fov=70";  // between the plates
   const Image image = directSolve(path, view, "--elements 400 --converge 0.999");
@@ -83,17 +87,21 @@ TEST_CASE("Per-pixel direct light under a square lamp is rho E times the exact p
     for (int x = 0; x < kDirectSize; ++x) {
       const std::size_t p = std::size_t(y) * kDirectSize + x;
       if (regions.polygon[p] != 1 || regions.edgeDistance[p] < 1) continue;
-      const double exact = 0.5 * cpu::pointToPolygon(pixelHit(camera, bvh, x, y), scene.polygons()[1].normal, shape, lamp.normal);
+      const double exact =
+          0.5 * cpu::pointToPolygon(pixelHit(camera, bvh, x, y), scene.polygons()[1].normal, shape, lamp.normal);
       worst = std::max(worst, std::abs(image.rgb[3 * p + 1] - exact) / exact), ++n;
     }
   REQUIRE(n > 1000);
   CHECK(worst < 1e-4);
 }
 
-TEST_CASE("Per-pixel direct light behind a hard occluder: umbra black, lit pixels exact, the penumbra the exact form factor to the lamp's visible part within the grid's step, and sharper than the atlas's", "[gl][direct]") {
+TEST_CASE(
+    "Per-pixel direct light behind a hard occluder: umbra black, lit pixels exact, the penumbra the exact form factor "
+    "to the lamp's visible part within the grid's step, and sharper than the atlas's",
+    "[gl][direct]") {
   const std::string path = occluderScene();
   const std::string view = "eye=0.5,0.5,0.6 target=0.5,0.5,1 up=0,1,0 fov=90";  // between occluder and receiver
-  const std::string elements = "--elements 100 --converge 0.999";  // elements ~0.3 wide, the penumbra 0.2
+  const std::string elements = "--elements 100 --converge 0.999";               // elements ~0.3 wide, the penumbra 0.2
   const Image image = directSolve(path, view, elements);
   const Image atlas = directSolve(path, view, elements, "atlas");
   const Scene scene = loadScene(path);
@@ -135,9 +143,13 @@ TEST_CASE("Per-pixel direct light behind a hard occluder: umbra black, lit pixel
   CHECK(bandError < atlasBandError / 4);
 }
 
-TEST_CASE("On the Cornell box the per-pixel image and the atlas image agree in surface interiors: the direct/indirect split neither loses nor adds light", "[gl][direct]") {
+TEST_CASE(
+    "On the Cornell box the per-pixel image and the atlas image agree in surface interiors: the direct/indirect split "
+    "neither loses nor adds light",
+    "[gl][direct]") {
   const std::string cornell = test::sourcePath("scenes/cornell/cornell.obj");
-  const std::string common = "solve " + cornell + " --elements 1000 --converge 0.99 --width 64 --height 64 --ambient off --quiet";
+  const std::string common =
+      "solve " + cornell + " --elements 1000 --converge 0.99 --width 64 --height 64 --ambient off --quiet";
   const std::string atlas = test::tempPath("cornell_atlas.exr"), perPixel = test::tempPath("cornell_pp.exr");
   const std::string report = test::tempPath("cornell_pp.json");
   REQUIRE(test::hemirad(common + " --out " + atlas).exitCode == 0);
@@ -160,7 +172,8 @@ TEST_CASE("On the Cornell box the per-pixel image and the atlas image agree in s
 TEST_CASE("Per-pixel direct light is deterministic: the same solve writes the same bytes", "[gl][direct]") {
   const std::string path = test::sourcePath("scenes/analytic/parallel_squares.obj");
   const std::string a = test::tempPath("direct_a.exr"), b = test::tempPath("direct_b.exr");
-  const std::string common = "solve " + path + " --elements 400 --width 32 --height 32 --direct per-pixel --quiet --out ";
+  const std::string common =
+      "solve " + path + " --elements 400 --width 32 --height 32 --direct per-pixel --quiet --out ";
   REQUIRE(test::hemirad(common + a).exitCode == 0);
   REQUIRE(test::hemirad(common + b).exitCode == 0);
   std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
@@ -169,7 +182,8 @@ TEST_CASE("Per-pixel direct light is deterministic: the same solve writes the sa
   CHECK(bytesA == bytesB);
 }
 
-TEST_CASE("Bad --direct input is one error line and exit code 2: an unknown mode, a method without it, a walkthrough", "[gl][direct][cli][bad-input]") {
+TEST_CASE("Bad --direct input is one error line and exit code 2: an unknown mode, a method without it, a walkthrough",
+          "[gl][direct][cli][bad-input]") {
   const std::string cornell = test::sourcePath("scenes/cornell/cornell.obj");
   const std::string out = " --out " + test::tempPath("bad_direct.exr");
   const std::pair<std::string, std::string> cases[] = {

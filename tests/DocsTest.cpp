@@ -23,8 +23,10 @@ std::string read(const fs::path& p) {
 std::string slug(const std::string& heading) {
   std::string out;
   for (unsigned char c : heading) {
-    if (std::isalnum(c) || c == '-' || c == '_') out += char(std::tolower(c));
-    else if (c == ' ') out += '-';
+    if (std::isalnum(c) || c == '-' || c == '_')
+      out += char(std::tolower(c));
+    else if (c == ' ')
+      out += '-';
   }
   return out;
 }

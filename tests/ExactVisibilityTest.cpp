@@ -12,8 +12,8 @@ const glm::dvec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1);
 
 TEST_CASE("Exact visibility: an occluder between two points hides them, beside it does not", "[cpu]") {
   // 0: floor, 1: ceiling, 2: a unit blocker half way up covering x in [0, 1], z in [0, 1].
-  cpu::ExactVisibility vis({square({-2, 0, -2}, 4.0 * X, 4.0 * Z), square({-2, 2, -2}, 4.0 * Z, 4.0 * X),
-                            square({0, 1, 0}, Z, X)});
+  cpu::ExactVisibility vis(
+      {square({-2, 0, -2}, 4.0 * X, 4.0 * Z), square({-2, 2, -2}, 4.0 * Z, 4.0 * X), square({0, 1, 0}, Z, X)});
   CHECK_FALSE(vis.visible({0.5, 0, 0.5}, 0, {0.5, 2, 0.5}, 1));
   CHECK(vis.visible({1.5, 0, 0.5}, 0, {1.5, 2, 0.5}, 1));
   // Grazing: the segment touches the blocker's edge x = 1 exactly: touching counts as hidden...

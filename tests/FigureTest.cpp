@@ -27,7 +27,7 @@ TEST_CASE("Figure size column draws 3.5 x 2.6 inches, text as outlines, the titl
   figures.write();
   const std::string svg = test::readText(stem + ".svg");
   CHECK_THAT(svg, Contains("width=\"252pt\" height=\"187.2pt\""));  // 72 pt an inch
-  CHECK(occurrences(svg, "<text") == 0);                           // glyphs as paths: no font needed to view it
+  CHECK(occurrences(svg, "<text") == 0);                            // glyphs as paths: no font needed to view it
   CHECK_THAT(svg, Contains("<dc:title>Form factor error against level</dc:title>"));
   // Drawn, the title would need the glyph of its capital F (U+0046), which no label or legend has.
   CHECK(occurrences(svg, "id=\"DejaVuSans-46\"") == 0);

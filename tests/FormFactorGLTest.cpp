@@ -59,14 +59,16 @@ TEST_CASE("GPU form factor between parallel opposed rectangles matches Howell C-
   }
 }
 
-TEST_CASE("GPU form factor between perpendicular rectangles sharing an edge matches Howell C-14 within 0.3%", "[heavy][gl]") {
+TEST_CASE("GPU form factor between perpendicular rectangles sharing an edge matches Howell C-14 within 0.3%",
+          "[heavy][gl]") {
   // The disc form factor was 0.6-0.9% low here (1x1x1: 0.19823 for 0.20004).
   // Emitter on the floor (l along x, w along z), receiver wall (l along x, h along y).
   for (auto [l, w, h] : {std::tuple{1.0, 1.0, 1.0}, {2.0, 1.0, 1.0}, {1.0, 2.0, 0.5}}) {
     Scene s = twoPatches(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, w, l),
                          test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, l, h));
     double exact = cpu::perpendicularRectangles(l, w, h);
-    double gpu = gpuFormFactor(s, std::min({l, w, h}) / 24, 0, kHowellShootLevel, Projection::Hemicube, kUnoccludedItemRes);
+    double gpu =
+        gpuFormFactor(s, std::min({l, w, h}) / 24, 0, kHowellShootLevel, Projection::Hemicube, kUnoccludedItemRes);
     INFO("l=" << l << " w=" << w << " h=" << h << " exact " << exact << " gpu " << gpu);
     CHECK(gpu == Approx(exact).epsilon(0.003));
   }
@@ -114,10 +116,12 @@ ShadowedPlates shadowedPlates(double texel) {
   const double zo = 0.4;
   ShadowedPlates p;
   Scene& s = p.scene;
-  s.addPolygon(test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1, 1), test::material(s, 0.0, 1.0), s.addObject("emitter"));
-  s.addPolygon(test::rectangle({0, 0, 1}, {0, 1, 0}, {1, 0, 0}, 1, 1), test::material(s, kRho, 0.0), s.addObject("receiver"));
-  s.addPolygon(test::rectangle({o0.x, o0.y, zo}, {1, 0, 0}, {0, 1, 0}, o1.x - o0.x, o1.y - o0.y), test::material(s, 0.0, 0.0),
-               s.addObject("occluder"));
+  s.addPolygon(test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1, 1), test::material(s, 0.0, 1.0),
+               s.addObject("emitter"));
+  s.addPolygon(test::rectangle({0, 0, 1}, {0, 1, 0}, {1, 0, 0}, 1, 1), test::material(s, kRho, 0.0),
+               s.addObject("receiver"));
+  s.addPolygon(test::rectangle({o0.x, o0.y, zo}, {1, 0, 0}, {0, 1, 0}, o1.x - o0.x, o1.y - o0.y),
+               test::material(s, 0.0, 0.0), s.addObject("occluder"));
   const Atlas atlas = buildAtlas(s, texel);
   const cpu::Polygon emitter = s.polygons()[0].vertices;
   for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t) {
@@ -128,15 +132,17 @@ ShadowedPlates shadowedPlates(double texel) {
     cpu::Polygon shadow;
     for (auto& q : cut) shadow.push_back({q.x, q.y, 0});
     const double open = cpu::pointToPolygon(x, n, emitter, {0, 0, 1});
-    p.exact += (open - (shadow.size() >= 3 ? cpu::pointToPolygon(x, n, shadow, {0, 0, 1}) : 0.0)) * atlas.positionArea[t].w;
+    p.exact +=
+        (open - (shadow.size() >= 3 ? cpu::pointToPolygon(x, n, shadow, {0, 0, 1}) : 0.0)) * atlas.positionArea[t].w;
     p.unblocked += open * atlas.positionArea[t].w;
   }
   return p;
 }
 }  // namespace
 
-TEST_CASE("GPU form factor between parallel plates with a plate between them matches the exact shadowed one within 0.3%",
-          "[heavy][gl]") {
+TEST_CASE(
+    "GPU form factor between parallel plates with a plate between them matches the exact shadowed one within 0.3%",
+    "[heavy][gl]") {
   const double texel = 1.0 / 24;
   const ShadowedPlates plates = shadowedPlates(texel);
   // Seed 003's orthographic item buffer (mesh L3, the default) and the hemicube (L0, the fast plan).
@@ -149,9 +155,10 @@ TEST_CASE("GPU form factor between parallel plates with a plate between them mat
   CHECK(gpu == Approx(plates.exact).epsilon(0.003));
 }
 
-TEST_CASE("The conformal and equal-area item buffers' shadowed form factor is within 0.3% of the exact one, their "
-          "item-buffer error shrinking with the item-mesh level and resolution",
-          "[heavy][gl]") {
+TEST_CASE(
+    "The conformal and equal-area item buffers' shadowed form factor is within 0.3% of the exact one, their "
+    "item-buffer error shrinking with the item-mesh level and resolution",
+    "[heavy][gl]") {
   // Their straight edges rasterise as curves, as the orthographic map's do: the item mesh's
   // subdivision and the pixels bound the visibility error. The hemicube at L0 decides this scene's
   // visibility exactly (straight edges, agreement 1.00000 on the Cornell box): what is left against

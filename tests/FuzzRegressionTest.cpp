@@ -1,11 +1,11 @@
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "tests/support/Support.h"
 #include "tests/fuzz/FuzzInput.h"
+#include "tests/support/Support.h"
 
 using namespace hemirad;
 

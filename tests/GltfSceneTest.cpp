@@ -31,7 +31,8 @@ std::string gltf(const std::string& nodes, const std::string& sceneNodes, const 
                  const std::string& extra = "", const std::string& indexCount = "6") {
   return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[)" + sceneNodes + R"(]}],"nodes":[)" + nodes +
          R"(],"meshes":[{"name":"quad","primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],)" +
-         R"("materials":[)" + materials + R"(],"accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3"},)" +
+         R"("materials":[)" + materials +
+         R"(],"accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3"},)" +
          R"({"bufferView":1,"componentType":5125,"count":)" + indexCount + R"(,"type":"SCALAR"}],)" +
          R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":24}],)" +
          R"("buffers":[{"byteLength":72,"uri":")" + kQuadBuffer + "\"}]" + extra + "}";
@@ -110,7 +111,8 @@ TEST_CASE("glTF node transforms (TRS and matrix, nested) place meshes and emissi
 TEST_CASE("The glTF Cornell box solves to the OBJ's radiosity", "[heavy][cli]") {
   auto report = [](const std::string& scene) {
     const std::string path = test::tempPath("gltf-vs-obj-" + fs::path(scene).extension().string().substr(1) + ".json");
-    test::Run run = test::hemirad("solve " + test::sourcePath(scene) + " --elements 600 --shots 48 --quiet --report " + path);
+    test::Run run =
+        test::hemirad("solve " + test::sourcePath(scene) + " --elements 600 --shots 48 --quiet --report " + path);
     INFO(run.output);
     REQUIRE(run.exitCode == 0);
     return test::readJson(path);
@@ -127,8 +129,9 @@ TEST_CASE("The glTF Cornell box solves to the OBJ's radiosity", "[heavy][cli]") 
 }
 
 TEST_CASE("MTL: one Kd value is grey and texture maps are ignored with a warning naming the line", "[cpu]") {
-  const std::string obj = test::writeScene("kd-grey", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl a\nf 1 2 3 4\n",
-                                           "newmtl a\nKd 0.4\nKe 2\nmap_Kd wood.png\n");
+  const std::string obj =
+      test::writeScene("kd-grey", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl a\nf 1 2 3 4\n",
+                       "newmtl a\nKd 0.4\nKe 2\nmap_Kd wood.png\n");
   const Scene s = loadScene(obj);
   CHECK(s.materials[0].reflectance == glm::dvec3(0.4));
   CHECK(s.materials[0].emission == glm::dvec3(2.0));
@@ -140,16 +143,25 @@ TEST_CASE("Bad input: broken glTF is one error line naming the file and what is 
   using test::bad_input::expectRefused;
   auto scene = [](const std::string& name, const std::string& text) { return writeGltf("bad-" + name, text); };
   expectRefused("gltf-json", "solve " + scene("json", "{\"asset\":") + " --shots 2 --quiet", {"bad-json.gltf:"});
-  expectRefused("gltf-past-buffer", "solve " + scene("past", gltf(R"({"mesh":0})", "0", kLamp, "", "60")) + " --shots 2 --quiet",
+  expectRefused("gltf-past-buffer",
+                "solve " + scene("past", gltf(R"({"mesh":0})", "0", kLamp, "", "60")) + " --shots 2 --quiet",
                 {"bad-past.gltf: indices: accessor 1 reaches past the end of its buffer"});
-  expectRefused("gltf-bright", "solve " + scene("bright", gltf(R"({"mesh":0})", "0",
-                R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1.25,1,1]},"emissiveFactor":[1,1,1]})")) +
-                    " --shots 2 --quiet",
-                {"material 'material 0': reflectance baseColorFactor 1.25 is above 1"});
-  expectRefused("gltf-dark", "solve " + scene("dark", gltf(R"({"mesh":0})", "0", 
-                R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})")) + " --shots 2 --quiet",
-                {"no emitter"});
-  expectRefused("gltf-node", "solve " + scene("node", gltf(R"({"mesh":0,"children":[7]})", "0", kLamp)) + " --shots 2 --quiet",
+  expectRefused(
+      "gltf-bright",
+      "solve " +
+          scene("bright",
+                gltf(R"({"mesh":0})", "0",
+                     R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1.25,1,1]},"emissiveFactor":[1,1,1]})")) +
+          " --shots 2 --quiet",
+      {"material 'material 0': reflectance baseColorFactor 1.25 is above 1"});
+  expectRefused(
+      "gltf-dark",
+      "solve " +
+          scene("dark", gltf(R"({"mesh":0})", "0", R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})")) +
+          " --shots 2 --quiet",
+      {"no emitter"});
+  expectRefused("gltf-node",
+                "solve " + scene("node", gltf(R"({"mesh":0,"children":[7]})", "0", kLamp)) + " --shots 2 --quiet",
                 {"bad-node.gltf: node 7 does not exist (1 nodes)"});
 }
 
@@ -191,8 +203,7 @@ void addPrimitive(tinygltf::Model& m, int mode, const std::vector<glm::vec3>& po
   tinygltf::Primitive p;
   p.mode = mode;
   p.material = 0;
-  p.attributes["POSITION"] =
-      addAccessor(m, points, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, points.size());
+  p.attributes["POSITION"] = addAccessor(m, points, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, points.size());
   if (!indices.empty())
     p.indices = addAccessor(m, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, indices.size());
   m.meshes[0].primitives.push_back(p);
@@ -214,9 +225,10 @@ std::vector<Poly3> specTriangles(int mode, const std::vector<glm::vec3>& points,
 }
 }  // namespace
 
-TEST_CASE("glTF triangle strips and fans, indexed or not, load as their triangles with the spec's winding, and points and "
-          "lines are skipped with a warning",
-          "[cpu]") {
+TEST_CASE(
+    "glTF triangle strips and fans, indexed or not, load as their triangles with the spec's winding, and points and "
+    "lines are skipped with a warning",
+    "[cpu]") {
   tinygltf::Model m;
   m.asset.version = "2.0";
   m.meshes.emplace_back();
@@ -230,11 +242,14 @@ TEST_CASE("glTF triangle strips and fans, indexed or not, load as their triangle
   for (int k = 0; k < 3; ++k) strip.insert(strip.end(), {{k, 0, 0}, {k, 1, 0}});
   for (float x : {3.f, 5.f}) quads.insert(quads.end(), {{x, 0, 0}, {x + 1, 0, 0}, {x, 1, 0}, {x + 1, 1, 0}});
   const std::vector<std::uint16_t> stitched{0, 1, 2, 3, 3, 4, 4, 5, 6, 7}, ring{0, 5, 4, 3, 2, 1};
-  const struct { int mode; const std::vector<glm::vec3>& points; std::vector<std::uint16_t> indices; } prims[] = {
-      {TINYGLTF_MODE_TRIANGLE_STRIP, strip, {}},
-      {TINYGLTF_MODE_TRIANGLE_STRIP, quads, stitched},
-      {TINYGLTF_MODE_TRIANGLE_FAN, pyramid, {}},
-      {TINYGLTF_MODE_TRIANGLE_FAN, pyramid, ring}};
+  const struct {
+    int mode;
+    const std::vector<glm::vec3>& points;
+    std::vector<std::uint16_t> indices;
+  } prims[] = {{TINYGLTF_MODE_TRIANGLE_STRIP, strip, {}},
+               {TINYGLTF_MODE_TRIANGLE_STRIP, quads, stitched},
+               {TINYGLTF_MODE_TRIANGLE_FAN, pyramid, {}},
+               {TINYGLTF_MODE_TRIANGLE_FAN, pyramid, ring}};
   std::vector<Poly3> expected;
   for (const auto& p : prims) {
     addPrimitive(m, p.mode, p.points, p.indices);

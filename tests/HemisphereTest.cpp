@@ -22,10 +22,14 @@ namespace {
 glm::dvec2 twinProject(Projection p, const glm::dvec3& local, int& face) {
   face = 0;
   switch (p) {
-    case Projection::Orthographic: return cpu::hemiProject(local);
-    case Projection::Conformal: return cpu::conformalProject(local);
-    case Projection::EqualArea: return cpu::equalAreaProject(local);
-    case Projection::Hemicube: break;
+    case Projection::Orthographic:
+      return cpu::hemiProject(local);
+    case Projection::Conformal:
+      return cpu::conformalProject(local);
+    case Projection::EqualArea:
+      return cpu::equalAreaProject(local);
+    case Projection::Hemicube:
+      break;
   }
   face = cpu::cubeFaceOf(local);
   const glm::dvec3 f = cpu::cubeFace(local, face);
@@ -34,10 +38,14 @@ glm::dvec2 twinProject(Projection p, const glm::dvec3& local, int& face) {
 
 glm::dvec3 twinDirection(Projection p, const glm::dvec2& ndc, int face) {
   switch (p) {
-    case Projection::Orthographic: return cpu::hemiDirection(ndc);
-    case Projection::Conformal: return cpu::conformalDirection(ndc);
-    case Projection::EqualArea: return cpu::equalAreaDirection(ndc);
-    case Projection::Hemicube: break;
+    case Projection::Orthographic:
+      return cpu::hemiDirection(ndc);
+    case Projection::Conformal:
+      return cpu::conformalDirection(ndc);
+    case Projection::EqualArea:
+      return cpu::equalAreaDirection(ndc);
+    case Projection::Hemicube:
+      break;
   }
   return cpu::cubeDirection(ndc, face);
 }
@@ -120,7 +128,8 @@ TEST_CASE("GLSL hemisphere maths equals its C++ mirror", "[gl]") {
   for (size_t i = 0; i < in.size(); ++i) {
     glm::dvec3 t, b;
     cpu::shooterBasis(glm::dvec3(n), t, b);
-    glm::dvec3 world = glm::dvec3(origin) + 4.0 * (double(in[i].x) * t + double(in[i].y) * b + double(in[i].z) * glm::dvec3(n));
+    glm::dvec3 world =
+        glm::dvec3(origin) + 4.0 * (double(in[i].x) * t + double(in[i].y) * b + double(in[i].z) * glm::dvec3(n));
     glm::dvec2 expect = cpu::hemiProject(cpu::shooterLocal(world, glm::dvec3(origin), glm::dvec3(n)));
     CHECK(out[i].x == Approx(expect.x).margin(1e-5));
     CHECK(out[i].y == Approx(expect.y).margin(1e-5));
@@ -237,7 +246,8 @@ TEST_CASE("GLSL exact form factor (formfactor.glsl) equals cpu::pointToPolygon o
     cpu::shooterBasis(nf, a, b);
     cpu::Polygon poly;
     const int k = 3 + i % 6;
-    for (int j = 0; j < k; ++j) poly.push_back(centre + std::cos(2 * M_PI * j / k) * a + std::sin(2 * M_PI * j / k) * b);
+    for (int j = 0; j < k; ++j)
+      poly.push_back(centre + std::cos(2 * M_PI * j / k) * a + std::sin(2 * M_PI * j / k) * b);
     // The GPU gets the inputs rounded to float: the reference takes the same rounded inputs.
     auto f = [](const glm::dvec3& d) { return glm::dvec3(glm::vec3(d)); };
     cpu::Polygon rounded;
@@ -247,7 +257,8 @@ TEST_CASE("GLSL exact form factor (formfactor.glsl) equals cpu::pointToPolygon o
     in.push_back(glm::vec4(glm::vec3(n), 0));
     in.push_back(glm::vec4(glm::vec3(nf), 0));
     shapes.push_back(glm::vec4(float(k), 0, 0, 0));  // formfactor.glsl's shape layout: count, then vertices
-    for (int j = 0; j < kMaxShapeVertices; ++j) shapes.push_back(j < k ? glm::vec4(glm::vec3(poly[size_t(j)]), 1) : glm::vec4(0.0f));
+    for (int j = 0; j < kMaxShapeVertices; ++j)
+      shapes.push_back(j < k ? glm::vec4(glm::vec3(poly[size_t(j)]), 1) : glm::vec4(0.0f));
   }
   gl::Buffer inBuf{std::span<const glm::vec4>(in)}, shapeBuf{std::span<const glm::vec4>(shapes)},
       outBuf{cases * sizeof(float)};

@@ -43,7 +43,8 @@ TEST_CASE("Direct importance is the view's pixels per element: inside a closed r
   CHECK(seen == Approx(1.0).margin(1e-3));
   // Only room 0 and what its doorways show receive direct importance.
   double room3 = areaSum(r.atlas, [&](std::size_t t) {
-    return s.objects[s.polygons()[r.atlas.polygonOf[t]].object].name.rfind("room3_", 0) == 0 ? double(r.direct[t]) : 0.0;
+    return s.objects[s.polygons()[r.atlas.polygonOf[t]].object].name.rfind("room3_", 0) == 0 ? double(r.direct[t])
+                                                                                             : 0.0;
   });
   CHECK(room3 == 0.0);
 }
@@ -102,9 +103,10 @@ TEST_CASE("A camera move changes dI by exactly the change in direct importance, 
   CHECK(wrong == 0);
 }
 
-TEST_CASE("Camera in one room of a 16-room building: view-driven shooting reaches progressive refinement's view error "
-          "in a quarter of the shots",
-          "[heavy][gl][importance][perspective]") {
+TEST_CASE(
+    "Camera in one room of a 16-room building: view-driven shooting reaches progressive refinement's view error "
+    "in a quarter of the shots",
+    "[heavy][gl][importance][perspective]") {
   // Issue 19 (seed 004 §6.2): the camera in room 0 of scenes/building/building_16 sees mostly
   // that room. Plain progressive refinement lights all rooms alike; importance-driven shooting
   // spends its shots on the light that reaches the view, so N / 4 of them leave the view at
@@ -115,7 +117,8 @@ TEST_CASE("Camera in one room of a 16-room building: view-driven shooting reache
   Camera c = sceneCamera("scenes/building/building_16.obj");
   const double texel = texelSizeForElements(s, 800);
   constexpr unsigned N = 256;
-  ProgressiveSettings converged, progressive, importance = importanceDriven(N / 4), perspective = importanceDriven(N / 4);
+  ProgressiveSettings converged, progressive, importance = importanceDriven(N / 4),
+                                              perspective = importanceDriven(N / 4);
   for (ProgressiveSettings* p : {&converged, &progressive, &importance, &perspective})
     p->itemSubdivision = 1, p->itemResolution = 128;  // cheap: the same for all four
   converged.stop = {0, 0.95};
@@ -125,7 +128,8 @@ TEST_CASE("Camera in one room of a 16-room building: view-driven shooting reache
   test::Solved plain = test::solve(s, texel, progressive, &c);
   test::Solved driven = test::solve(s, texel, importance, &c);
   test::Solved local = test::solve(s, texel, perspective, &c);
-  const double plainError = imageError(plain.view, reference.view), drivenError = imageError(driven.view, reference.view),
+  const double plainError = imageError(plain.view, reference.view),
+               drivenError = imageError(driven.view, reference.view),
                localError = imageError(local.view, reference.view);
   INFO("view error: progressive " << plainError << " after " << plain.status.shots << " shots; importance-driven "
                                   << drivenError << " and perspective-driven " << localError << " after "
@@ -136,7 +140,8 @@ TEST_CASE("Camera in one room of a 16-room building: view-driven shooting reache
   CHECK(localError <= plainError);
 }
 
-TEST_CASE("Importance-driven and plain progressive refinement converge to the same solution", "[heavy][gl][importance]") {
+TEST_CASE("Importance-driven and plain progressive refinement converge to the same solution",
+          "[heavy][gl][importance]") {
   // To 0.99 the two differ only in the order of the shots: object means agree to 1 %.
   Scene s = load("scenes/cornell/cornell.obj");
   Camera c = sceneCamera("scenes/cornell/cornell.obj");
@@ -147,8 +152,8 @@ TEST_CASE("Importance-driven and plain progressive refinement converge to the sa
     p->projection = Projection::Hemicube, p->itemSubdivision = 0, p->itemResolution = 256;
   test::Solved a = test::solve(s, texel, plain), b = test::solve(s, texel, driven, &c);
   for (std::size_t o = 0; o < a.objects.size(); ++o) {
-    INFO(a.objects[o].name << ": progressive " << a.objects[o].mean.x << " (" << a.status.shots << " shots), importance "
-                           << b.objects[o].mean.x << " (" << b.status.shots << ")");
+    INFO(a.objects[o].name << ": progressive " << a.objects[o].mean.x << " (" << a.status.shots
+                           << " shots), importance " << b.objects[o].mean.x << " (" << b.status.shots << ")");
     CHECK(b.objects[o].mean.x == Approx(a.objects[o].mean.x).epsilon(0.01));
   }
 }

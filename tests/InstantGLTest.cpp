@@ -40,7 +40,9 @@ const Scene& cornell() {
 
 }  // namespace
 
-TEST_CASE("VPL buffers read back in the vec4 std430 layout: each VPL lies in its polygon, at its level, at the nearest hit", "[gl][instant]") {
+TEST_CASE(
+    "VPL buffers read back in the vec4 std430 layout: each VPL lies in its polygon, at its level, at the nearest hit",
+    "[gl][instant]") {
   test::backend();
   const Scene& scene = cornell();
   VplTracer tracer(scene, small(500));
@@ -82,7 +84,8 @@ TEST_CASE("VPL buffers read back in the vec4 std430 layout: each VPL lies in its
   CHECK(stats.paths == levels.count[0]);
   CHECK(emitted == Approx(stats.emitted).epsilon(1e-4));
   CHECK(emitted == Approx(scene.emittedPower()).epsilon(1e-4));
-  CHECK(lit + stats.escapedPaths + stats.behindPaths >= levels.count[0]);  // a path ends by a miss or runs out of levels
+  CHECK(lit + stats.escapedPaths + stats.behindPaths >=
+        levels.count[0]);  // a path ends by a miss or runs out of levels
   CHECK(lit > levels.count[0]);
   CHECK(checkedBounces == lit - levels.count[0]);
 }
@@ -180,13 +183,15 @@ TEST_CASE("Instant radiosity: one seed gives bitwise the same image, another see
   CHECK(interleaved != first);
 }
 
-TEST_CASE("solve --method instant writes the camera images and a report, and refuses atlas outputs", "[heavy][instant][cli]") {
+TEST_CASE("solve --method instant writes the camera images and a report, and refuses atlas outputs",
+          "[heavy][instant][cli]") {
   const std::string png = test::tempPath("instant.png"), exr = test::tempPath("instant.exr"),
                     report = test::tempPath("instant.json");
   const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
-  const test::Run run = test::hemirad("solve " + scene + " --method instant --vpls 64 --shadow-res 32 --width 24 "
-                                      "--height 24 --supersample 1 --quiet --image " + png + " --out " + exr +
-                                      " --report " + report);
+  const test::Run run = test::hemirad("solve " + scene +
+                                      " --method instant --vpls 64 --shadow-res 32 --width 24 "
+                                      "--height 24 --supersample 1 --quiet --image " +
+                                      png + " --out " + exr + " --report " + report);
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
   CHECK(std::ifstream(png).good());
@@ -196,8 +201,8 @@ TEST_CASE("solve --method instant writes the camera images and a report, and ref
   CHECK(r["method"] == "instant");
   CHECK(r["escaped_fraction"].get<double>() >= 0);
   CHECK(r["clamp_bias"].get<double>() >= 0);
-  for (const std::string& bad :
-       std::vector<std::string>{"--atlas " + test::tempPath("a.exr"), "--vpls 0", "--shots 4", "--shading sideways", "--interleave 0"}) {
+  for (const std::string& bad : std::vector<std::string>{"--atlas " + test::tempPath("a.exr"), "--vpls 0", "--shots 4",
+                                                         "--shading sideways", "--interleave 0"}) {
     const test::Run refused = test::hemirad("solve " + scene + " --method instant --quiet " + bad);
     INFO(bad << ": " << refused.output);
     CHECK(refused.exitCode == 2);
@@ -209,7 +214,10 @@ TEST_CASE("solve --method instant writes the camera images and a report, and ref
   }
 }
 
-TEST_CASE("Interleaved instant radiosity under a smooth light stays within the analytic bound of the exact image, and never mixes polygons", "[gl][instant]") {
+TEST_CASE(
+    "Interleaved instant radiosity under a smooth light stays within the analytic bound of the exact image, and never "
+    "mixes polygons",
+    "[gl][instant]") {
   test::backend();
   // A floor of two polygons (rho 0.3 | 0.7, seam at x = 0) lit by a 1 x 1 emitter facing down
   // at height h = 1, direct light only (every VPL on the emitter), no clamp: each VPL's term
@@ -240,15 +248,15 @@ TEST_CASE("Interleaved instant radiosity under a smooth light stays within the a
   std::vector<std::uint32_t> ids;
   const Image exact = render(1, &ids), interleaved = render(interleave);
   const double pixel = 2 * height * std::tan(glm::radians(fov / 2)) / size;  // on the floor
-  const int lo = -(interleave / 2), hi = lo + interleave - 1;                 // the filter's window
+  const int lo = -(interleave / 2), hi = lo + interleave - 1;                // the filter's window
   const double D = pixel * std::sqrt(2.0) * std::max(-lo, hi), bound = std::exp(2 * D / 1.0) - 1;
   const double rho[2] = {0.3, 0.7};
   double worst = 0, seamError = 0, mixingError = 0;
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const std::size_t i = std::size_t(y) * size + x;
-      REQUIRE(ids[i] < 2);  // the floor fills the view
-      bool whole = true;  // the window lies on the pixel's own polygon
+      REQUIRE(ids[i] < 2);           // the floor fills the view
+      bool whole = true;             // the window lies on the pixel's own polygon
       double window = 0, mixed = 0;  // its pixels, and their reflectance summed
       for (int dy = lo; dy <= hi; ++dy)
         for (int dx = lo; dx <= hi; ++dx) {
@@ -258,7 +266,8 @@ TEST_CASE("Interleaved instant radiosity under a smooth light stays within the a
           if (inside) window += 1, mixed += rho[ids[std::size_t(v) * size + u]];
         }
       const double e = luminance(glm::dvec3(exact.rgb[3 * i], exact.rgb[3 * i + 1], exact.rgb[3 * i + 2]));
-      const double f = luminance(glm::dvec3(interleaved.rgb[3 * i], interleaved.rgb[3 * i + 1], interleaved.rgb[3 * i + 2]));
+      const double f =
+          luminance(glm::dvec3(interleaved.rgb[3 * i], interleaved.rgb[3 * i + 1], interleaved.rgb[3 * i + 2]));
       const double relative = std::abs(f - e) / e;
       if (whole) {
         worst = std::max(worst, relative);

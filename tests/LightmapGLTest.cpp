@@ -2,15 +2,15 @@
 // the exported file read back with tinygltf: every element's centre lands in its own texel,
 // and the mesh drawn with the lightmap under plain GL_LINEAR shows hemirad's own image, edges
 // and corners included (docs/gltf.md, "Lightmap export").
-#include <catch2/catch.hpp>
-#include <nlohmann/json.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "src/output/GltfWriter.h"
@@ -43,12 +43,14 @@ glm::dvec4 barycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec
 }
 
 // TEXCOORD_1 x the lightmap's size at p, interpolated over the reloaded triangle p lies most inside.
-std::optional<glm::dvec2> lightmapCoord(const test::ReloadedGltf& g, const glm::dvec3& p, glm::dvec2 size, double tolerance) {
+std::optional<glm::dvec2> lightmapCoord(const test::ReloadedGltf& g, const glm::dvec3& p, glm::dvec2 size,
+                                        double tolerance) {
   double best = -1e-6;
   std::optional<glm::dvec2> coord;
   for (std::size_t t = 0; t + 2 < g.triangles.size(); t += 3) {
     glm::dvec3 v[3];
-    for (int k = 0; k < 3; ++k) v[k] = glm::dvec3(g.triangles[t + k].position[0], g.triangles[t + k].position[1], g.triangles[t + k].position[2]);
+    for (int k = 0; k < 3; ++k)
+      v[k] = glm::dvec3(g.triangles[t + k].position[0], g.triangles[t + k].position[1], g.triangles[t + k].position[2]);
     const glm::dvec4 w = barycentric(p, v[0], v[1], v[2]);
     if (w.w > tolerance || std::min({w.x, w.y, w.z}) <= best) continue;
     best = std::min({w.x, w.y, w.z});
@@ -64,24 +66,28 @@ double relative(double a, double b) { return std::abs(a / b - 1); }
 // The lightmap texel of chart-local cell (i, j) of `polygon` (gutter cells negative or past the
 // chart's size), transposed where the chart is.
 glm::ivec2 texelOf(const Lightmap& map, int polygon, int i, int j) {
-  return map.origins[std::size_t(polygon)] + (map.transposed[std::size_t(polygon)] ? glm::ivec2(j, i) : glm::ivec2(i, j));
+  return map.origins[std::size_t(polygon)] +
+         (map.transposed[std::size_t(polygon)] ? glm::ivec2(j, i) : glm::ivec2(i, j));
 }
 
 // What a CLAMP_TO_EDGE sampler reads there: the image's edge repeated outside it.
 glm::vec3 clampedTexel(const Lightmap& map, int polygon, int i, int j) {
-  const glm::ivec2 t = glm::clamp(texelOf(map, polygon, i, j), glm::ivec2(0), glm::ivec2(map.width - 1, map.height - 1));
+  const glm::ivec2 t =
+      glm::clamp(texelOf(map, polygon, i, j), glm::ivec2(0), glm::ivec2(map.width - 1, map.height - 1));
   return map.rgb[std::size_t(t.y) * map.width + std::size_t(t.x)];
 }
 
 }  // namespace
 
-TEST_CASE("The Cornell box's lightmap at the default 10,000 elements: over 80 % of its texels are elements, and every "
-          "texel of its gutter (the edge clamped to on the border) holds its own chart's value", "[cpu]") {
+TEST_CASE(
+    "The Cornell box's lightmap at the default 10,000 elements: over 80 % of its texels are elements, and every "
+    "texel of its gutter (the edge clamped to on the border) holds its own chart's value",
+    "[cpu]") {
   Scene scene = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   const Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, {}));
   const Lightmap map = buildLightmap(atlas, polygonValues(atlas));
   INFO("atlas " << atlas.width << " x " << atlas.height << ", lightmap " << map.width << " x " << map.height
-       << ", texel use " << map.texelUse() << ", packing " << map.packing());
+                << ", texel use " << map.texelUse() << ", packing " << map.packing());
   CHECK(map.elements == atlas.elements);
   // 19 charts in full gutters: 87 % with one texel (issue 29), 82 % with the two it had
   // (docs/gltf.md), over 80 % only with the border's gutters cut away.
@@ -122,7 +128,8 @@ TEST_CASE("The Cornell box's lightmap at the default 10,000 elements: over 80 % 
     if (atlas.polygonOf[t] == kNoPolygon) continue;
     const int p = int(atlas.polygonOf[t]);
     const glm::dvec2 a = atlas.atlasCoord(p, glm::dvec3(atlas.positionArea[t])), c = values.coord(atlas, p, a);
-    const glm::dvec2 within = values.transposed[std::size_t(p)] ? glm::dvec2(glm::fract(a).y, glm::fract(a).x) : glm::fract(a);
+    const glm::dvec2 within =
+        values.transposed[std::size_t(p)] ? glm::dvec2(glm::fract(a).y, glm::fract(a).x) : glm::fract(a);
     const glm::ivec2 texel(glm::floor(c));
     misplaced += values.rgb[std::size_t(texel.y) * values.width + std::size_t(texel.x)].r != float(t + 1) ||
                  glm::any(glm::greaterThan(glm::abs(glm::fract(c) - within), glm::dvec2(1e-9)));
@@ -143,7 +150,9 @@ TEST_CASE("Lightmap gutters copy the nearest element outward, and the packing is
   CHECK(again.transposed == map.transposed);
   for (const Chart& c : atlas.charts) {
     auto value = [&](int i, int j) { return clampedTexel(map, c.polygon, i, j); };
-    auto element = [&](int i, int j) { return glm::vec3(B[std::size_t(c.origin.y + j) * atlas.width + std::size_t(c.origin.x + i)]); };
+    auto element = [&](int i, int j) {
+      return glm::vec3(B[std::size_t(c.origin.y + j) * atlas.width + std::size_t(c.origin.x + i)]);
+    };
     for (int j = 0; j < c.size.y; ++j) {  // left and right gutters: the row's end elements, twice
       for (int g : {-1, -2}) CHECK(value(g, j) == element(0, j));
       for (int g : {c.size.x, c.size.x + 1}) CHECK(value(g, j) == element(c.size.x - 1, j));
@@ -182,9 +191,11 @@ TEST_CASE("A flat-lit box shows no darker edges or corners, in hemirad's render 
   std::vector<float> black;
   const Lightmap undilated = buildLightmap(s.atlas, s.B, {.gutter = LightmapOptions{}.gutter, .dilate = false});
   for (const glm::vec3& c : undilated.rgb) black.insert(black.end(), {c.r, c.g, c.b});
-  const LightmapRender dark = renderLightmapped(g.triangles, {undilated.width, undilated.height, black}, g.camera, 128, 128, 1);
+  const LightmapRender dark =
+      renderLightmapped(g.triangles, {undilated.width, undilated.height, black}, g.camera, 128, 128, 1);
 
-  for (auto [name, image] : {std::pair{"hemirad", &s.view}, {"lightmap", &shown.image}, {"black gutters", &dark.image}}) {
+  for (auto [name, image] :
+       {std::pair{"hemirad", &s.view}, {"lightmap", &shown.image}, {"black gutters", &dark.image}}) {
     const test::Bands b = test::bandLuminance(*image, shown.surface);
     INFO(name << ": 1-px band " << b.band1 << ", 2-px band " << b.band2 << ", interior " << b.interior);
     if (std::string(name) == "black gutters") {
@@ -197,12 +208,16 @@ TEST_CASE("A flat-lit box shows no darker edges or corners, in hemirad's render 
   }
 }
 
-TEST_CASE("The Cornell box's .glb reloads with every element in its own texel and renders as hemirad's image under "
-          "GL_LINEAR", "[gl][cli]") {
+TEST_CASE(
+    "The Cornell box's .glb reloads with every element in its own texel and renders as hemirad's image under "
+    "GL_LINEAR",
+    "[gl][cli]") {
   const std::string dir = test::tempPath("cornell-glb"), obj = test::sourcePath("scenes/cornell/cornell.obj");
   std::filesystem::create_directories(dir);
-  test::Run run = test::hemirad("solve " + obj + " --elements 400 --shots 40 --ambient off --width 128 --height 128 "
-                                "--out " + dir + "/view.exr --atlas " + dir + "/atlas.exr --gltf " + dir + "/cornell.glb --quiet");
+  test::Run run = test::hemirad("solve " + obj +
+                                " --elements 400 --shots 40 --ambient off --width 128 --height 128 "
+                                "--out " +
+                                dir + "/view.exr --atlas " + dir + "/atlas.exr --gltf " + dir + "/cornell.glb --quiet");
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
   test::backend();
@@ -225,7 +240,8 @@ TEST_CASE("The Cornell box's .glb reloads with every element in its own texel an
   const Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, {.texelSize = std::nullopt, .elements = 400}));
   REQUIRE((atlas.width == atlasImage.width && atlas.height == atlasImage.height));
   std::vector<glm::vec4> B(atlas.polygonOf.size());
-  for (std::size_t t = 0; t < B.size(); ++t) B[t] = glm::vec4(atlasImage.rgb[t * 3], atlasImage.rgb[t * 3 + 1], atlasImage.rgb[t * 3 + 2], 0);
+  for (std::size_t t = 0; t < B.size(); ++t)
+    B[t] = glm::vec4(atlasImage.rgb[t * 3], atlasImage.rgb[t * 3 + 1], atlasImage.rgb[t * 3 + 2], 0);
   const Lightmap layout = buildLightmap(atlas, B);  // the export's layout: which charts are transposed
   REQUIRE((layout.width == lightmap.width && layout.height == lightmap.height));
   CHECK(std::count(layout.transposed.begin(), layout.transposed.end(), 1) > 0);  // 400 elements: 8 charts turned
@@ -249,8 +265,10 @@ TEST_CASE("The Cornell box's .glb reloads with every element in its own texel an
       continue;
     }
     const std::size_t l = std::size_t(texel.y) * lightmap.width + std::size_t(texel.x);
-    const bool same = texels.insert({texel.x, texel.y}).second && glm::all(glm::lessThan(glm::abs(glm::fract(*c) - glm::fract(a)), glm::dvec2(1e-3))) &&
-                      lightmap.rgb[l * 3] == atlasImage.rgb[t * 3] && lightmap.rgb[l * 3 + 1] == atlasImage.rgb[t * 3 + 1];
+    const bool same = texels.insert({texel.x, texel.y}).second &&
+                      glm::all(glm::lessThan(glm::abs(glm::fract(*c) - glm::fract(a)), glm::dvec2(1e-3))) &&
+                      lightmap.rgb[l * 3] == atlasImage.rgb[t * 3] &&
+                      lightmap.rgb[l * 3 + 1] == atlasImage.rgb[t * 3 + 1];
     misplaced += !same;
   }
   CHECK(elements == atlas.elements);
@@ -261,9 +279,11 @@ TEST_CASE("The Cornell box's .glb reloads with every element in its own texel an
   const LightmapRender shown = renderLightmapped(g.triangles, lightmap, g.camera, 128, 128, 2);
   writePng(dir + "/rerender.png", shown.image, exposureScale(shown.image, 0));
   const double error = imageError(shown.image, reference);
-  const test::Bands ours = test::bandLuminance(shown.image, shown.surface), theirs = test::bandLuminance(reference, shown.surface);
+  const test::Bands ours = test::bandLuminance(shown.image, shown.surface),
+                    theirs = test::bandLuminance(reference, shown.surface);
   INFO("mean relative difference " << error << "; 1-px band " << ours.band1 / theirs.band1 << ", 2-px band "
-       << ours.band2 / theirs.band2 << ", interior " << ours.interior / theirs.interior << " of hemirad's; " << dir);
+                                   << ours.band2 / theirs.band2 << ", interior " << ours.interior / theirs.interior
+                                   << " of hemirad's; " << dir);
   CHECK(error <= 0.005);
   CHECK(relative(ours.band1 / theirs.band1, ours.interior / theirs.interior) <= 0.02);
   CHECK(relative(ours.band2 / theirs.band2, ours.interior / theirs.interior) <= 0.02);
@@ -275,7 +295,8 @@ TEST_CASE("The Cornell box's .glb reloads with every element in its own texel an
   const LightmapRender dark = renderLightmapped(g.triangles, blackImage, g.camera, 128, 128, 2);
   const test::Bands d = test::bandLuminance(dark.image, shown.surface);
   INFO("black gutters: mean relative difference " << imageError(dark.image, reference) << "; 1-px band "
-       << d.band1 / theirs.band1 << ", 2-px band " << d.band2 / theirs.band2 << ", interior " << d.interior / theirs.interior);
+                                                  << d.band1 / theirs.band1 << ", 2-px band " << d.band2 / theirs.band2
+                                                  << ", interior " << d.interior / theirs.interior);
   CHECK(d.band1 / theirs.band1 < 0.98 * d.interior / theirs.interior);
 }
 
@@ -287,7 +308,8 @@ TEST_CASE("Screenshot of an exported .glb drawn with GL_LINEAR", "[.screenshot]"
   test::backend();
   const test::ReloadedGltf g = test::reloadGltf(glb);
   const int height = 512, width = int(std::lround(height * g.aspect));
-  const LightmapRender shown = renderLightmapped(g.triangles, readImage(gltfPaths(glb).exr), g.camera, width, height, 2);
+  const LightmapRender shown =
+      renderLightmapped(g.triangles, readImage(gltfPaths(glb).exr), g.camera, width, height, 2);
   writePng(png, shown.image, exposureScale(shown.image, 0));
 }
 

@@ -3,23 +3,23 @@
 // naming it), and a killed solve resumes from its checkpoint to the bitwise result of an
 // uninterrupted one (or, without checkpoints, --checkpoint is refused). A method added to
 // src/method/Registry.cpp is tested here with no line added.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "src/base/Error.h"
+#include "src/bench/Bench.h"
 #include "src/cli/Commands.h"
-#include "src/options/Options.h"
 #include "src/method/MethodChoice.h"
 #include "src/method/MethodFlag.h"
 #include "src/method/Registry.h"
+#include "src/options/Options.h"
 #include "src/output/ImageFile.h"
 #include "src/output/Report.h"
 #include "src/solver/Solver.h"
 #include "src/viewer/ViewerWorker.h"
-#include "src/bench/Bench.h"
 #include "tests/support/Files.h"
 #include "tests/support/Support.h"
 
@@ -113,9 +113,10 @@ TEST_CASE("Every method takes each of its own flags, and solve declares every me
   }
 }
 
-TEST_CASE("Every method killed in a checkpoint write resumes from the previous one to the bitwise result of an "
-          "uninterrupted solve, or refuses --checkpoint before reading the scene",
-          "[cli][checkpoint]") {
+TEST_CASE(
+    "Every method killed in a checkpoint write resumes from the previous one to the bitwise result of an "
+    "uninterrupted solve, or refuses --checkpoint before reading the scene",
+    "[cli][checkpoint]") {
   const std::string name = GENERATE(from_range(methodNames()));
   const std::vector<std::unique_ptr<MethodUnit>> methods = makeMethods();
   const MethodUnit& method = named(methods, name);
@@ -134,9 +135,10 @@ TEST_CASE("Every method killed in a checkpoint write resumes from the previous o
   // at 16 shots, stays whole, and the half-written one has a .tmp name.
   const std::string ck = test::tempPath("killed-" + method.name() + ".ckpt");
   const Report whole = solveReport(method, "--shots 48", "whole");
-  test::Run killed = test::hemirad("solve " + kScene + " --quiet --method " + method.name() + " " + method.quickFlags() +
-                                       " --shots 48 --checkpoint " + ck + " --checkpoint-every 16",
-                                   "HEMIRAD_TEST_KILL_IN_CHECKPOINT=2");
+  test::Run killed =
+      test::hemirad("solve " + kScene + " --quiet --method " + method.name() + " " + method.quickFlags() +
+                        " --shots 48 --checkpoint " + ck + " --checkpoint-every 16",
+                    "HEMIRAD_TEST_KILL_IN_CHECKPOINT=2");
   INFO(killed.output);
   REQUIRE(killed.exitCode == 128 + 9);
   const std::string stem = std::filesystem::path(ck).stem().string();
@@ -150,9 +152,10 @@ TEST_CASE("Every method killed in a checkpoint write resumes from the previous o
   CHECK(resumed.json["convergence_history"].dump() == whole.json["convergence_history"].dump());
 }
 
-TEST_CASE("Every method solves a closed box of emitting grey walls to the B it declares, and one seed gives "
-          "byte-identical images",
-          "[gl][closed-box]") {
+TEST_CASE(
+    "Every method solves a closed box of emitting grey walls to the B it declares, and one seed gives "
+    "byte-identical images",
+    "[gl][closed-box]") {
   const std::string name = GENERATE(from_range(methodNames()));
   const std::vector<std::unique_ptr<MethodUnit>> methods = makeMethods();
   const MethodUnit& method = named(methods, name);
@@ -262,9 +265,10 @@ TEST_CASE("A method added to the choice gets its flags bound, refuses the others
   CHECK(objects[0].mean.x == Approx(1.0 / 6));  // the lamp's emission over the box, nothing transported
 }
 
-TEST_CASE("The viewer and the bench pick methods by registered name: each runs only registered methods and the bench "
-          "measures every one",
-          "[cli]") {
+TEST_CASE(
+    "The viewer and the bench pick methods by registered name: each runs only registered methods and the bench "
+    "measures every one",
+    "[cli]") {
   const std::vector<std::string> registered = methodNames();
   auto isRegistered = [&](const std::string& n) {
     return std::find(registered.begin(), registered.end(), n) != registered.end();

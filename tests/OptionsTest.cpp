@@ -97,7 +97,8 @@ TEST_CASE("validate takes --gpu, the EGL device index, as solve does", "[cli][ba
   CHECK_THAT(run.output, Contains("egl: GPU 99 not usable"));
 }
 
-TEST_CASE("Solve refuses atlas outputs of --method instant and unknown methods, before the scene is read", "[cli][bad-input]") {
+TEST_CASE("Solve refuses atlas outputs of --method instant and unknown methods, before the scene is read",
+          "[cli][bad-input]") {
   // An OBJ without faces: reading it would be an error of its own.
   const std::string dir = test::tempPath("method");
   std::filesystem::create_directories(dir);
@@ -107,7 +108,8 @@ TEST_CASE("Solve refuses atlas outputs of --method instant and unknown methods, 
   expectOneError("solve " + dir + "/empty.obj --method gauss-seidel", "--method");
 }
 
-TEST_CASE("Solve with --method progressive gives the bitwise result of the default and the report names the method", "[cli]") {
+TEST_CASE("Solve with --method progressive gives the bitwise result of the default and the report names the method",
+          "[cli]") {
   auto report = [](const std::string& flags) {
     const std::string path = test::tempPath("method" + std::to_string(flags.size()) + ".json");
     test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +

@@ -45,8 +45,9 @@ TEST_CASE("A FIFO or a symlink as an output is written through, not replaced by 
   const std::string dir = test::tempPath("write-through");
   fs::create_directories(dir);
   // FIFO: a reader drains it while hemirad writes; the FIFO must still be a FIFO afterwards.
-  test::Run fifo = test::shell("cd " + dir + " && mkfifo r.fifo && (timeout 60 cat r.fifo > got.json 2>/dev/null &) && $HEMIRAD " +
-                               quickSolve() + " --report r.fifo");
+  test::Run fifo =
+      test::shell("cd " + dir + " && mkfifo r.fifo && (timeout 60 cat r.fifo > got.json 2>/dev/null &) && $HEMIRAD " +
+                  quickSolve() + " --report r.fifo");
   INFO(fifo.output);
   REQUIRE(fifo.exitCode == 0);
   CHECK(fs::is_fifo(dir + "/r.fifo"));
@@ -92,8 +93,10 @@ TEST_CASE("A solve without any output warns that only the summary line shows the
   CHECK_FALSE(Catch::Contains("warning").match(test::hemirad(quickSolve() + " --report /dev/null").output));
 }
 
-TEST_CASE("A PNG named by --out is the tone-mapped render, pixel for pixel the --image PNG, not linear values clipped to black",
-          "[cli]") {
+TEST_CASE(
+    "A PNG named by --out is the tone-mapped render, pixel for pixel the --image PNG, not linear values clipped to "
+    "black",
+    "[cli]") {
   const std::string dir = test::tempPath("out-png");
   fs::create_directories(dir);
   test::Run run = test::hemirad(quickSolve() + " --width 64 --height 64 --out " + dir + "/out.png --image " + dir +

@@ -1,6 +1,6 @@
 // What `hemirad solve` writes: images, atlas, PLY mesh and report, checked by reading them back.
-#include <catch2/catch.hpp>
 #include <fmt/format.h>
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -16,10 +16,12 @@ using Catch::Contains;
 TEST_CASE("solve writes the EXR, PNG, atlas, PLY and report it is asked for", "[gl][cli]") {
   std::string dir = test::tempPath("outputs");
   std::filesystem::create_directories(dir);
-  test::Run run = test::hemirad("solve " + test::sourcePath("scenes/analytic/parallel_squares.obj") +
-                                " --texel-size 0.1 --converge 0.5 --width 64 --height 48 --camera eye=0.5,0.5,3,target=0.5,0.5,0"
-                                " --out " + dir + "/v.exr --image " + dir + "/v.png --atlas " + dir + "/a.exr --ply " +
-                                dir + "/m.ply --report " + dir + "/r.json");
+  test::Run run =
+      test::hemirad("solve " + test::sourcePath("scenes/analytic/parallel_squares.obj") +
+                    " --texel-size 0.1 --converge 0.5 --width 64 --height 48 --camera eye=0.5,0.5,3,target=0.5,0.5,0"
+                    " --out " +
+                    dir + "/v.exr --image " + dir + "/v.png --atlas " + dir + "/a.exr --ply " + dir +
+                    "/m.ply --report " + dir + "/r.json");
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
   nlohmann::json r = test::readJson(dir + "/r.json");
@@ -61,7 +63,7 @@ TEST_CASE("solve writes the EXR, PNG, atlas, PLY and report it is asked for", "[
     if (a == "element" && b == "vertex") vertices = n;
     if (a == "element" && b == "face") faces = n;
   }
-  CHECK(faces == 200);           // one face per element
+  CHECK(faces == 200);             // one face per element
   CHECK(vertices == 2 * 11 * 11);  // a 10 x 10 grid of elements per square, corners shared
 }
 
@@ -80,9 +82,9 @@ TEST_CASE("The shipped Cornell box has about 10,000 elements at the default texe
 TEST_CASE("validate --hemisphere all compares the four projections in one table, errors in significant digits",
           "[gl][cli]") {
   std::string report = test::tempPath("validate_all.json");
-  test::Run v = test::hemirad("validate " + test::sourcePath("scenes/cornell/cornell.obj") +
-                              " --elements 300 --levels 0,1 --shooters 2 --item-res 64 --hemisphere all --report " +
-                              report);
+  test::Run v =
+      test::hemirad("validate " + test::sourcePath("scenes/cornell/cornell.obj") +
+                    " --elements 300 --levels 0,1 --shooters 2 --item-res 64 --hemisphere all --report " + report);
   INFO(v.output);
   REQUIRE(v.exitCode == 0);
   nlohmann::json r = test::readJson(report);
@@ -97,14 +99,15 @@ TEST_CASE("validate writes its report and figures, and bench its table and JSON"
   std::string dir = test::tempPath("validate");
   test::Run v = test::hemirad("validate " + test::sourcePath("scenes/cornell/cornell.obj") +
                               " --elements 1500 --levels 0,2 --shooters 4 --hemisphere stereographic,hemicube"
-                              " --report " + dir + ".json --figures " + dir);
+                              " --report " +
+                              dir + ".json --figures " + dir);
   INFO(v.output);
   REQUIRE(v.exitCode == 0);
   nlohmann::json r = test::readJson(dir + ".json");
   REQUIRE(r["levels"].size() == 4);  // two projections x two levels
-  for (const char* key : {"item_subdivision", "texel_pairs", "visibility_agreement", "false_visible", "false_hidden",
-                          "ff_rel_error_median", "ff_rel_error_mean", "ff_rel_error_p95", "ff_rel_error_max",
-                          "item_triangles", "gpu_ms"})
+  for (const char* key :
+       {"item_subdivision", "texel_pairs", "visibility_agreement", "false_visible", "false_hidden",
+        "ff_rel_error_median", "ff_rel_error_mean", "ff_rel_error_p95", "ff_rel_error_max", "item_triangles", "gpu_ms"})
     CHECK(r["levels"][0].contains(key));
   CHECK(r["levels"][0]["hemisphere"] == "orthographic");  // asked for by its old name, stereographic
   CHECK(r["levels"][3]["hemisphere"] == "hemicube");
@@ -118,7 +121,8 @@ TEST_CASE("validate writes its report and figures, and bench its table and JSON"
   // command line as run, the backend.
   const std::string version = test::hemirad("--version").output;
   const nlohmann::json& p = r["provenance"];
-  CHECK(version == fmt::format("hemirad {} (git {})\n", p["version"].get<std::string>(), p["git_hash"].get<std::string>()));
+  CHECK(version ==
+        fmt::format("hemirad {} (git {})\n", p["version"].get<std::string>(), p["git_hash"].get<std::string>()));
   CHECK(p["git_hash"].get<std::string>().size() >= 7);
   CHECK_THAT(p["command_line"].get<std::string>(), Contains("validate ") && Contains(" --figures " + dir));
   CHECK(p["backend"] == r["backend"]);

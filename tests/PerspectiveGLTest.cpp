@@ -25,7 +25,7 @@ ProgressiveSettings perspective(unsigned decayShots) {
   s.shootLevel = 0;  // element by element: sigma is per element
   s.shootersPerPass = 8;
   s.fovDecayShots = decayShots;
-  s.viewInterest = 0;  // the simulated field of view alone: the walls are out of the area of interest
+  s.viewInterest = 0;      // the simulated field of view alone: the walls are out of the area of interest
   s.itemResolution = 128;  // a convex box: the exact bookkeeping is checked, not the item buffer's resolution
   s.stop = {0, 0.9999};
   return s;
@@ -120,7 +120,8 @@ TEST_CASE("A camera move hands the surfaces entering the view their stored entri
   CHECK(moved.held[0] == Approx(moved.shotAt[0]).epsilon(1e-4));
   for (int face : {3, 4, 5}) CHECK(moved.held[face] == 0.0);
 }
-TEST_CASE("Perspective-driven and plain progressive refinement converge to the same solution", "[heavy][gl][perspective]") {
+TEST_CASE("Perspective-driven and plain progressive refinement converge to the same solution",
+          "[heavy][gl][perspective]") {
   // Per face of the lamp-lit box, to convergence 0.998: only the order of the shots differs.
   test::backend();
   Scene s = test::cube(kRho, 0.0, 1);
@@ -147,16 +148,18 @@ TEST_CASE("Perspective-driven and plain progressive refinement converge to the s
   }
 }
 
-TEST_CASE("Along a walk through the doors of four rooms, perspective-driven shooting shoots every frame, deliveries "
-          "taking at most every other pass",
-          "[gl][perspective][walkthrough]") {
+TEST_CASE(
+    "Along a walk through the doors of four rooms, perspective-driven shooting shoots every frame, deliveries "
+    "taking at most every other pass",
+    "[gl][perspective][walkthrough]") {
   // Issue 19: a camera that moves every frame brings surfaces into view every frame. Were their
   // entries delivered before any further shot, the frame budget would go to deliveries and the
   // view would stop brightening (main before the fix: no shot from 1.5 s to 10.5 s of the
   // 16-room walk). Importance-driven shooting walks alongside for the record (INFO).
   test::backend();
   const Scene s = loadScene(test::sourcePath("scenes/building/building_4.obj"));
-  const CameraPath path = readCameraPath(test::sourcePath("scenes/building/building_4.path"), resolveCamera(s, std::nullopt));
+  const CameraPath path =
+      readCameraPath(test::sourcePath("scenes/building/building_4.path"), resolveCamera(s, std::nullopt));
   const Atlas atlas = buildAtlas(s, texelSizeForElements(s, 600), 4096);
   ProgressiveSettings settings;
   settings.shootersPerPass = 8, settings.itemSubdivision = 1, settings.itemResolution = 64;
@@ -177,7 +180,7 @@ TEST_CASE("Along a walk through the doors of four rooms, perspective-driven shoo
     INFO("frame " << f << ": importance " << importance.imageError << " after " << importance.shots
                   << " shots; perspective " << perspective.imageError << " after " << perspective.shots << " shots and "
                   << perspective.deliveryShots << " deliveries");
-    CHECK(perspective.shots >= before.shots + 8);  // at least one shooting pass of the frame's two
+    CHECK(perspective.shots >= before.shots + 8);               // at least one shooting pass of the frame's two
     CHECK(perspective.deliveryShots <= perspective.shots + 8);  // a delivery pass (<= 8) per shooting pass, + 1
   }
 }

@@ -41,7 +41,8 @@ TEST_CASE("The default solve is the fast plan and matches element-by-element sho
   // the reference preset, its hemicube at 256^2 (exact: CGAL agreement 1.00000 at 10k elements,
   // docs/design.md#item-buffer-projection).
   const std::string common = "--elements 1500 --converge 0.995";
-  const nlohmann::json fast = presetSolve(common), reference = presetSolve(common + " --preset reference --item-res 256");
+  const nlohmann::json fast = presetSolve(common),
+                       reference = presetSolve(common + " --preset reference --item-res 256");
   CHECK(fast["preset"] == "fast");
   CHECK(fast["projection"] == "hemicube");
   CHECK(fast["item_subdivision"] == 0);
@@ -54,8 +55,8 @@ TEST_CASE("The default solve is the fast plan and matches element-by-element sho
     for (const auto& r : reference["objects"])
       if (f["name"] == r["name"] && f["name"] != "light") {
         const double a = luminance(f["mean_radiosity"]), b = luminance(r["mean_radiosity"]);
-        UNSCOPED_INFO(f["name"].get<std::string>() << ": fast " << a << ", element by element " << b << " ("
-                                                   << (a / b - 1) * 100 << " %)");
+        UNSCOPED_INFO(f["name"].get<std::string>()
+                      << ": fast " << a << ", element by element " << b << " (" << (a / b - 1) * 100 << " %)");
         worst = std::max(worst, std::abs(a / b - 1));
       }
   INFO("worst object " << worst * 100 << " % (fast " << fast["shots"] << " shots, element by element "
@@ -71,7 +72,8 @@ TEST_CASE("The seed003 preset reproduces the old default bitwise: seed 003's ite
       presetSolve(common + " --hemisphere orthographic --item-subdiv 3 --item-res 512 --shoot-level 1");
   CHECK(preset["radiosity_hash"] == explicitFlags["radiosity_hash"]);
   CHECK(preset["preset"] == "seed003");
-  CHECK(explicitFlags["preset"] == "fast with --hemisphere orthographic --item-subdiv 3 --item-res 512 --shoot-level 1");
+  CHECK(explicitFlags["preset"] ==
+        "fast with --hemisphere orthographic --item-subdiv 3 --item-res 512 --shoot-level 1");
   for (const char* field : {"projection", "item_subdivision", "item_resolution", "shoot_level", "item_triangles"})
     CHECK(preset[field] == explicitFlags[field]);
   CHECK(preset["projection"] == "orthographic");
@@ -111,9 +113,10 @@ TEST_CASE("Explicit flags override a preset, given before or after it, and the r
   CHECK_THAT(bench.output, Contains("preset seed003 with --item-subdiv 1"));
 }
 
-TEST_CASE("Every command that solves by progressive refinement takes --preset, and without it shows the fast plan as "
-          "its default",
-          "[cli][preset]") {
+TEST_CASE(
+    "Every command that solves by progressive refinement takes --preset, and without it shows the fast plan as "
+    "its default",
+    "[cli][preset]") {
   for (const char* command : {"solve", "bench", "view", "experiment", "compare-methods"}) {
     test::Run help = test::hemirad(std::string(command) + " --help");
     INFO(command << "\n" << help.output);

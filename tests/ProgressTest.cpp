@@ -14,9 +14,10 @@ using namespace hemirad;
 namespace {
 
 // The recorded runs (tests/data/): convergence after each pass, as (shots, convergence).
-const char* const kRuns[] = {"tests/data/convergence_cornell_1500.json",    "tests/data/convergence_four_boxes_1000.json",
-                             "tests/data/convergence_cornell_10000.json",   "tests/data/convergence_four_boxes_10000.json",
-                             "tests/data/convergence_cornell_40000.json",   "tests/data/convergence_building_16_20000.json"};
+const char* const kRuns[] = {
+    "tests/data/convergence_cornell_1500.json",  "tests/data/convergence_four_boxes_1000.json",
+    "tests/data/convergence_cornell_10000.json", "tests/data/convergence_four_boxes_10000.json",
+    "tests/data/convergence_cornell_40000.json", "tests/data/convergence_building_16_20000.json"};
 
 struct Recorded {
   double target = 0;
@@ -42,9 +43,10 @@ Recorded recorded(const std::string& file) {
 
 }  // namespace
 
-TEST_CASE("The first ETA after 10 % of a run is within 25 % of the shots really left, later ones within 2x, on six "
-          "recorded runs",
-          "[cpu]") {
+TEST_CASE(
+    "The first ETA after 10 % of a run is within 25 % of the shots really left, later ones within 2x, on six "
+    "recorded runs",
+    "[cpu]") {
   for (const char* file : kRuns) {
     INFO(file);
     const Recorded run = recorded(file);

@@ -37,9 +37,10 @@ TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho) wi
   // wall settles at E / (1 - rho); the disc approximation (docs/design.md#form-factor) lost 2.3% here (rho 0.5:
   // 1.953 for 2). Batched passes (16 shooters from one unshot state), shooting blocks and the
   // bench's planned shooting (coarse blocks, planned item buffer, either projection) must reach the same answer.
-  for (auto [rho, shooters, level, projection] :
-       {std::tuple{0.5, 16, 0, Projection::Hemicube}, {0.5, 1, 2, Projection::Hemicube},
-        {0.5, 16, kAutoShootLevel, Projection::Orthographic}, {0.5, 16, kAutoShootLevel, Projection::Hemicube}}) {
+  for (auto [rho, shooters, level, projection] : {std::tuple{0.5, 16, 0, Projection::Hemicube},
+                                                  {0.5, 1, 2, Projection::Hemicube},
+                                                  {0.5, 16, kAutoShootLevel, Projection::Orthographic},
+                                                  {0.5, 16, kAutoShootLevel, Projection::Hemicube}}) {
     Scene s = furnace(rho, 1.0);
     ProgressiveSettings settings;  // the hemicube rows: the default (the fast preset)
     if (projection == Projection::Orthographic) settings.usePreset("seed003");  // L3, 512^2
@@ -49,8 +50,8 @@ TEST_CASE("A closed box of emitting grey walls converges to B = E / (1 - rho) wi
     settings.stop.targetConvergence = 0.9995;  // what is left unshot lowers B by < 0.05%
     test::Solved r = test::solve(s, 1.0 / 8, settings);
     double mean = test::object(r, "box").mean.x, exact = 1 / (1 - rho);
-    INFO("rho " << rho << ", " << shooters << " shooters a pass, level " << level << ", " << projectionName(projection) << ": mean B " << mean << " after "
-                << r.status.shots << " shots; E/(1-rho) " << exact);
+    INFO("rho " << rho << ", " << shooters << " shooters a pass, level " << level << ", " << projectionName(projection)
+                << ": mean B " << mean << " after " << r.status.shots << " shots; E/(1-rho) " << exact);
     CHECK(mean == Approx(exact).epsilon(0.001));
   }
 }

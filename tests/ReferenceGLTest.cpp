@@ -86,7 +86,9 @@ double exactReceiverCheck(const std::string& name, const std::optional<std::stri
 
 }  // namespace
 
-TEST_CASE("The reference sees the furnace's exact B = 2 at every pixel within 6 standard errors and on average within 0.5 %", "[gl][reference]") {
+TEST_CASE(
+    "The reference sees the furnace's exact B = 2 at every pixel within 6 standard errors and on average within 0.5 %",
+    "[gl][reference]") {
   const Scene scene = loadScene(analyticScene("furnace.obj"));
   const ReferenceEstimate e = referenceOf(scene, resolveCamera(scene, std::nullopt), 64, 64);
   double worst = 0;
@@ -99,7 +101,9 @@ TEST_CASE("The reference sees the furnace's exact B = 2 at every pixel within 6 
   CHECK(std::abs(e.meanLuminance - 2.0) < 0.01);
 }
 
-TEST_CASE("The reference matches the plates' and the perpendicular squares' exact point form factors in surface interiors", "[gl][reference]") {
+TEST_CASE(
+    "The reference matches the plates' and the perpendicular squares' exact point form factors in surface interiors",
+    "[gl][reference]") {
   // The plates' own camera sees them edge on: this one looks at the receiver from between them.
   const std::pair<std::string, std::optional<std::string>> views[] = {
       {"parallel_squares.obj", "eye=0.5,0.5,0.05 target=0.5,0.5,1 up=0,1,0 fov=70"}, {"perpendicular_squares.obj", {}}};
@@ -112,7 +116,10 @@ TEST_CASE("The reference matches the plates' and the perpendicular squares' exac
   }
 }
 
-TEST_CASE("The reference and a converged radiosity solve of the perpendicular squares agree in surface interiors within the solver's error and the reference's noise", "[gl][reference]") {
+TEST_CASE(
+    "The reference and a converged radiosity solve of the perpendicular squares agree in surface interiors within the "
+    "solver's error and the reference's noise",
+    "[gl][reference]") {
   const Scene scene = loadScene(analyticScene("perpendicular_squares.obj"));
   const Camera camera = resolveCamera(scene, std::nullopt);
   ProgressiveSettings settings;
@@ -133,11 +140,14 @@ TEST_CASE("The reference and a converged radiosity solve of the perpendicular sq
   CHECK(interior.meanAbsolute < 0.005 + interior.noise);
 }
 
-TEST_CASE("A reference's bytes are fixed by its seed: the same seed writes identical files, another seed different ones", "[gl][reference][cli]") {
+TEST_CASE(
+    "A reference's bytes are fixed by its seed: the same seed writes identical files, another seed different ones",
+    "[gl][reference][cli]") {
   auto run = [](unsigned seed, const std::string& name) {
     const std::string out = test::tempPath(name);
-    const test::Run r = test::hemirad("reference " + analyticScene("furnace.obj") + " --spp 32 --batches 4 --width 24 --height 24 --seed " +
-                                      std::to_string(seed) + " --out " + out + ".exr --stderr " + out + "_se.exr");
+    const test::Run r = test::hemirad("reference " + analyticScene("furnace.obj") +
+                                      " --spp 32 --batches 4 --width 24 --height 24 --seed " + std::to_string(seed) +
+                                      " --out " + out + ".exr --stderr " + out + "_se.exr");
     INFO(r.output);
     REQUIRE(r.exitCode == 0);
     return fileBytes(out + ".exr") + fileBytes(out + "_se.exr");
@@ -147,7 +157,10 @@ TEST_CASE("A reference's bytes are fixed by its seed: the same seed writes ident
   CHECK(a != c);
 }
 
-TEST_CASE("compare prints the known error of an image scaled by 1.01 in every region, and a bias put on the corner band lands there alone", "[gl][reference][cli]") {
+TEST_CASE(
+    "compare prints the known error of an image scaled by 1.01 in every region, and a bias put on the corner band "
+    "lands there alone",
+    "[gl][reference][cli]") {
   const std::string scene = analyticScene("perpendicular_squares.obj");
   const Scene loaded = loadScene(scene);
   const int size = 64;
@@ -175,7 +188,8 @@ TEST_CASE("compare prints the known error of an image scaled by 1.01 in every re
   CHECK(rows[3].bias == 0.0);  // 2 px from the crease
 }
 
-TEST_CASE("Bad reference and compare input is one error line and a nonzero exit before any work", "[gl][reference][cli][bad-input]") {
+TEST_CASE("Bad reference and compare input is one error line and a nonzero exit before any work",
+          "[gl][reference][cli][bad-input]") {
   const std::string furnace = analyticScene("furnace.obj"), out = test::tempPath("bad.exr");
   auto oneError = [](const std::string& args, const std::string& message) {
     const test::Run r = test::hemirad(args);

@@ -36,7 +36,8 @@ std::string manyTriangleScene() {
   for (int r = 0; r < kRows; ++r)
     for (int c = 0; c < kColumns; ++c, v += 3) {
       const double y = 0.05 + r * cell, z = 0.05 + c * cell;
-      obj << fmt::format("v 0 {0} {1}\nv 0 {2} {1}\nv 0 {0} {3}\nf {4} {5} {6}\n", y, z, y + side, z + side, v, v + 1, v + 2);
+      obj << fmt::format("v 0 {0} {1}\nv 0 {2} {1}\nv 0 {0} {3}\nf {4} {5} {6}\n", y, z, y + side, z + side, v, v + 1,
+                         v + 2);
     }
   return dir + "/s.obj";
 }
@@ -98,9 +99,10 @@ TEST_CASE("A solve whose dispatches tile over a 3D grid gives the radiosity of o
   CHECK(tiled.hash == plain.hash);
 }
 
-TEST_CASE("A scene of 70,000 polygons, more shooter blocks than one dispatch dimension holds, solves with its light "
-          "reaching the floor",
-          "[heavy][gl][scale]") {  // ~5 s optimized; the capped-grid test above runs the same paths under ASan
+TEST_CASE(
+    "A scene of 70,000 polygons, more shooter blocks than one dispatch dimension holds, solves with its light "
+    "reaching the floor",
+    "[heavy][gl][scale]") {  // ~5 s optimized; the capped-grid test above runs the same paths under ASan
   test::backend();
   const auto start = std::chrono::steady_clock::now();
   const Scene scene = loadScene(manyTriangleScene());

@@ -12,7 +12,8 @@ using Catch::Contains;
 
 namespace {
 const char* kMtl =
-    "newmtl white\nKd 0.5 0.5 0.5\n\nnewmtl lamp\nKd 0 0 0\nKe 2 2 2\nKa 0 0 0\n\nnewmtl thesis_lamp\nKd 0 0 0\nKa 3 3 3\n";
+    "newmtl white\nKd 0.5 0.5 0.5\n\nnewmtl lamp\nKd 0 0 0\nKe 2 2 2\nKa 0 0 0\n\nnewmtl thesis_lamp\nKd 0 0 0\nKa 3 3 "
+    "3\n";
 
 // Writes NAME.obj (+ scene.mtl) in a fresh folder and returns the OBJ's path.
 std::string writeScene(const std::string& name, const std::string& obj, const std::string& mtl = kMtl) {
@@ -81,7 +82,7 @@ TEST_CASE("Bad scenes are refused with the file and line", "[cpu]") {
 
 TEST_CASE("Degenerate faces are skipped and non-planar ones triangulated, with warnings", "[cpu]") {
   std::string obj = kQuads +
-                    "v 2 0 0\nv 3 0 0\nv 4 0 0\n"          // 9-11: collinear
+                    "v 2 0 0\nv 3 0 0\nv 4 0 0\n"             // 9-11: collinear
                     "v 0 0 3\nv 1 0 3\nv 1 1 3.5\nv 0 1 3\n"  // 12-15: bent quad
                     "o junk\nusemtl white\nf 9 10 11\nf 12 13 14 15\nf 1 1 2\n";
   Scene s = loadScene(writeScene("repairs", obj));
@@ -98,9 +99,10 @@ TEST_CASE("A scene without emitters is refused before solving", "[cpu]") {
   CHECK_THROWS_AS(validateSolvable(loadScene(writeScene("dark", obj))), InputError);
 }
 
-TEST_CASE("Scene warnings print each of a rare kind, one line for a frequent kind, and at most kWarningLines lines "
-          "with the last counting what is left out",
-          "[cpu]") {
+TEST_CASE(
+    "Scene warnings print each of a rare kind, one line for a frequent kind, and at most kWarningLines lines "
+    "with the last counting what is left out",
+    "[cpu]") {
   // Kind k is seen k % 6 + 1 times; 3 * kWarningLines kinds cannot all fit.
   std::vector<SceneWarning> warnings;
   const std::size_t kinds = 3 * kWarningLines;
@@ -123,8 +125,8 @@ TEST_CASE("Scene warnings print each of a rare kind, one line for a frequent kin
     shown += n;
   }
   REQUIRE(line == lines.size() - 1);
-  CHECK(lines.back() == fmt::format("{} more warnings of {} other kinds not shown", warnings.size() - shown,
-                                    kinds - kindsShown));
+  CHECK(lines.back() ==
+        fmt::format("{} more warnings of {} other kinds not shown", warnings.size() - shown, kinds - kindsShown));
   CHECK(withThousands(87432) == "87,432");
   CHECK(withThousands(999) == "999");
 }

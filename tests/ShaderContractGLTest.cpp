@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 #include <map>
 #include <regex>
-#include <sstream>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "gl/EmbeddedShaders.h"

@@ -44,9 +44,10 @@ TEST_CASE("A block's quadtree tiles it: every element lies in one leaf, and chil
   CHECK(once == elements);
 }
 
-TEST_CASE("Coarse blocks shoot their lit parts: the planned shooting stays within 1.5% of element-by-element on the "
-          "Cornell box, and refining visibility near the blocks halves the blocks' error",
-          "[heavy][gl]") {
+TEST_CASE(
+    "Coarse blocks shoot their lit parts: the planned shooting stays within 1.5% of element-by-element on the "
+    "Cornell box, and refining visibility near the blocks halves the blocks' error",
+    "[heavy][gl]") {
   // Blocks of 8 x 8 elements next to the boxes lie partly under them and across their shadows.
   // Shot whole, their mean unshot radiosity spreads over the dark part, which the boxes' faces
   // see only in part: the boxes come out 2-4 % dark. Cut where the radiosity is not uniform,
@@ -79,7 +80,8 @@ TEST_CASE("Coarse blocks shoot their lit parts: the planned shooting stays withi
     worstPlanned = std::max(worstPlanned, std::abs(p / ref - 1));
     worstWhole = std::max(worstWhole, std::abs(w / ref - 1));
     if (o.name.ends_with("_block"))
-      blocksPlanned = std::max(blocksPlanned, std::abs(p / ref - 1)), blocksRefined = std::max(blocksRefined, std::abs(r / ref - 1));
+      blocksPlanned = std::max(blocksPlanned, std::abs(p / ref - 1)),
+      blocksRefined = std::max(blocksRefined, std::abs(r / ref - 1));
   }
   INFO("shots: per element " << a.status.shots << ", planned " << b.status.shots << ", uncut " << c.status.shots);
   CHECK(worstWhole > 1.5 * worstPlanned);  // the cut is what makes the difference
@@ -88,9 +90,10 @@ TEST_CASE("Coarse blocks shoot their lit parts: the planned shooting stays withi
   CHECK(blocksRefined < blocksPlanned / 2);
 }
 
-TEST_CASE("Refining visibility near shooters changes nothing where nothing occludes: an empty Cornell box solves "
-          "bitwise as without it",
-          "[gl]") {
+TEST_CASE(
+    "Refining visibility near shooters changes nothing where nothing occludes: an empty Cornell box solves "
+    "bitwise as without it",
+    "[gl]") {
   // The refinement only splits visibility (each part's light share seen from its own origin),
   // never the transfer: with every pair visible its share is 1, so the result is the unrefined
   // one to the bit. (Splitting the transfer as well lost 0.35 % of the light: near receivers

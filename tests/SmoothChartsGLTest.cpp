@@ -103,9 +103,10 @@ Steps stepsAcross(const Scene& s, const test::Solved& r, const std::vector<std::
 
 }  // namespace
 
-TEST_CASE("Curved charts show no faceting on a tessellated sphere and cylinder: the step across a facet edge is as across "
-          "the same distance inside a facet, where a chart per facet plane steps several times more",
-          "[gl][charts][heavy]") {
+TEST_CASE(
+    "Curved charts show no faceting on a tessellated sphere and cylinder: the step across a facet edge is as across "
+    "the same distance inside a facet, where a chart per facet plane steps several times more",
+    "[gl][charts][heavy]") {
   const Scene s = roomWithCurves();
   const double texel = 0.07, delta = 0.035;  // facets about 0.16 wide: 2.2 texels
   const test::Solved curved = solveAt(s, texel, 30), flat = solveAt(s, texel, 0);
@@ -174,10 +175,12 @@ TEST_CASE("A floor cut into two charts jumps at the seam, and stitching the seam
   // Stitching a single chart changes nothing: it has no seam.
   const std::vector<glm::vec4> same = stitchSeams(one, a.atlas, a.B);
   CHECK(same == a.B);
-  INFO("relative luminance jump across x = 1: one chart " << single << ", two charts " << before << ", stitched " << after);
+  INFO("relative luminance jump across x = 1: one chart " << single << ", two charts " << before << ", stitched "
+                                                          << after);
   CHECK(before > 3 * single);
   CHECK(after < 1.5 * single + 1e-3);
   // Far from the seam nothing moves.
   for (std::size_t t = 0; t < b.B.size(); ++t)
-    if (b.atlas.polygonOf[t] != kNoPolygon && std::abs(b.atlas.positionArea[t].x - 1.0) > 2 * texel) CHECK(stitched[t] == b.B[t]);
+    if (b.atlas.polygonOf[t] != kNoPolygon && std::abs(b.atlas.positionArea[t].x - 1.0) > 2 * texel)
+      CHECK(stitched[t] == b.B[t]);
 }

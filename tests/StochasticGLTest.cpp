@@ -117,7 +117,8 @@ TEST_CASE("The stochastic operator is unbiased: the mean of many applications is
   const double fraction = double(within) / double(count), meanZ = sumZ / double(count);
   INFO(atlas.elements << " elements, " << N << " applications of 16 shooters: " << fraction * 100
                       << " % of z within 4; mean z " << meanZ << "; power " << mean << " vs exact " << exactPower
-                      << " (z " << zPower << ", relative standard error " << std::sqrt(var / double(N)) / exactPower << ")");
+                      << " (z " << zPower << ", relative standard error " << std::sqrt(var / double(N)) / exactPower
+                      << ")");
   CHECK(fraction >= 0.99);
   CHECK(std::abs(meanZ) < 0.5);  // z's of one run are correlated (shared shooters): a loose bound
   CHECK(std::abs(zPower) < 4.0);
@@ -179,8 +180,10 @@ TEST_CASE("Stochastic iteration: a closed box of emitting grey walls (rho 0.5) c
   CHECK(std::abs(mean - 2.0) <= tolerance);
 }
 
-TEST_CASE("Stochastic iteration on curved charts: a closed tessellated sphere of emitting grey facets samples texels "
-          "across polygons and agrees with progressive refinement on the same atlas", "[gl][charts]") {
+TEST_CASE(
+    "Stochastic iteration on curved charts: a closed tessellated sphere of emitting grey facets samples texels "
+    "across polygons and agrees with progressive refinement on the same atlas",
+    "[gl][charts]") {
   // 16 x 8 facets facing in, every one emitting 1 with rho 0.5; at --chart-angle 30 a chart spans
   // several facets and many texels span two or more (their shapes: up to 16 convex pieces).
   Scene s;
@@ -213,8 +216,9 @@ TEST_CASE("Stochastic iteration on curved charts: a closed tessellated sphere of
   for (double b : batchMean) var += (b - grand) * (b - grand) / (batches - 1);
   const double se = std::sqrt(var / batches), mean = areaWeightedLuminance(atlas, ss.readRadiosity());
   const double tolerance = 3 * se + 0.001 * reference + 2.0 / M;  // as the box's, the reference's unshot 0.1 %
-  INFO(atlas.charts.size() << " charts, " << atlas.elements << " elements (" << spanning << " over 2+ polygons): stochastic "
-                           << mean << " (standard error " << se << "), progressive " << reference << ", 2E = 2");
+  INFO(atlas.charts.size() << " charts, " << atlas.elements << " elements (" << spanning
+                           << " over 2+ polygons): stochastic " << mean << " (standard error " << se
+                           << "), progressive " << reference << ", 2E = 2");
   CHECK(std::abs(mean - reference) <= tolerance);
 }
 
@@ -254,7 +258,8 @@ TEST_CASE("Stochastic iteration: Cornell box object means within 1 % of progress
   double worst = 0;
   for (std::size_t i = 0; i < progressive.objects.size(); ++i) {
     const double p = luminance(progressive.objects[i].mean), q = luminance(stochastic.objects[i].mean);
-    UNSCOPED_INFO(progressive.objects[i].name << ": progressive " << p << ", stochastic " << q << " (" << (q / p - 1) * 100 << " %)");
+    UNSCOPED_INFO(progressive.objects[i].name << ": progressive " << p << ", stochastic " << q << " ("
+                                              << (q / p - 1) * 100 << " %)");
     worst = std::max(worst, std::abs(q / p - 1));
   }
   INFO(iterations << " iterations of 16 shooters; worst " << worst * 100 << " %");
@@ -281,9 +286,10 @@ TEST_CASE("Stochastic camera images carry no ambient term: --ambient on and off 
   // iterate: added to the running mean, it washed the image out (every bounce counted twice).
   auto render = [](const std::string& ambient) {
     const std::string exr = test::tempPath("stochastic-ambient-" + ambient + ".exr");
-    test::Run r = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
-                                " --method stochastic --elements 500 --shots 4 --width 32 --height 32 --quiet --ambient " +
-                                ambient + " --out " + exr);
+    test::Run r =
+        test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                      " --method stochastic --elements 500 --shots 4 --width 32 --height 32 --quiet --ambient " +
+                      ambient + " --out " + exr);
     INFO(r.output);
     REQUIRE(r.exitCode == 0);
     return readImage(exr);

@@ -30,7 +30,8 @@ using test::readText;
 std::string cornellSpec(const std::string& name) {
   return test::writeTempFile(name, R"({
   "name": "cornell-item-mesh",
-  "scenes": [")" + test::sourcePath("scenes/cornell/cornell.obj") + R"("],
+  "scenes": [")" + test::sourcePath("scenes/cornell/cornell.obj") +
+                                       R"("],
   "axes": {"item-subdiv": [0, 2], "item-res": [64, 128]},
   "flags": {"elements": 300, "shots": 96, "shooters-per-pass": 4, "preset": "seed003"},
   "resources": {"cpus": 2, "mem": "1G", "time": "00:05:00"},
@@ -54,9 +55,10 @@ const std::pair<std::string, std::string>& localResults() {
 
 }  // namespace
 
-TEST_CASE("A sweep's tasks run as Slurm runs them (one stopped by SIGTERM mid-solve and run again) merge to the bytes "
-          "of a local --jobs 2 run",
-          "[heavy][cli][sweep]") {
+TEST_CASE(
+    "A sweep's tasks run as Slurm runs them (one stopped by SIGTERM mid-solve and run again) merge to the bytes "
+    "of a local --jobs 2 run",
+    "[heavy][cli][sweep]") {
   const std::string dir = test::tempPath("sweep-tasks");
   test::Run made = test::hemirad("experiment " + cornellSpec("tasks.json") + " --slurm " + dir);
   INFO(made.output);
@@ -70,21 +72,30 @@ TEST_CASE("A sweep's tasks run as Slurm runs them (one stopped by SIGTERM mid-so
   // Task 1 is stopped once its first checkpoint (16 shots) is written, then run again: the
   // requeue. The others run whole, beside it, logging where Slurm would.
   const std::string ck = dir + "/tasks/0001/checkpoint.ckpt";
-  test::Run run = test::shell(
-      "for i in 0 2 3; do $HEMIRAD experiment run-task " + dir + " $i >>" + dir + "/logs/task_$i.log 2>&1 || echo \"task $i failed\" & done\n"
-      "$HEMIRAD experiment run-task " + dir + " 1 & p=$!\n"
-      "while [ ! -e " + ck + " ] && kill -0 $p 2>/dev/null; do sleep 0.01; done\n"
-      "kill -TERM $p; wait $p; echo \"first attempt exit $?\"; wait\n"
-      "$HEMIRAD experiment merge " + dir + "; echo \"merge exit $?\"\n"
-      "$HEMIRAD experiment run-task " + dir + " 1; echo \"second attempt exit $?\"\n"
-      "$HEMIRAD experiment run-task " + dir + " 1; echo \"third attempt exit $?\"");
+  test::Run run = test::shell("for i in 0 2 3; do $HEMIRAD experiment run-task " + dir + " $i >>" + dir +
+                              "/logs/task_$i.log 2>&1 || echo \"task $i failed\" & done\n"
+                              "$HEMIRAD experiment run-task " +
+                              dir +
+                              " 1 & p=$!\n"
+                              "while [ ! -e " +
+                              ck +
+                              " ] && kill -0 $p 2>/dev/null; do sleep 0.01; done\n"
+                              "kill -TERM $p; wait $p; echo \"first attempt exit $?\"; wait\n"
+                              "$HEMIRAD experiment merge " +
+                              dir +
+                              "; echo \"merge exit $?\"\n"
+                              "$HEMIRAD experiment run-task " +
+                              dir +
+                              " 1; echo \"second attempt exit $?\"\n"
+                              "$HEMIRAD experiment run-task " +
+                              dir + " 1; echo \"third attempt exit $?\"");
   INFO(run.output);
   CHECK_THAT(run.output, Contains("first attempt exit 143") && Contains("interrupted by SIGTERM"));
-  CHECK_THAT(run.output, Contains("merge exit 1") && Contains("configuration 0001 (") &&
-                             Contains("missing (checkpointed)"));
+  CHECK_THAT(run.output,
+             Contains("merge exit 1") && Contains("configuration 0001 (") && Contains("missing (checkpointed)"));
   CHECK_THAT(run.output, Contains("task 0001 (scene=") && Contains("resuming from its checkpoint at"));
-  CHECK_THAT(run.output, Contains("second attempt exit 0") && Contains("already done") &&
-                             Contains("third attempt exit 0"));
+  CHECK_THAT(run.output,
+             Contains("second attempt exit 0") && Contains("already done") && Contains("third attempt exit 0"));
   CHECK_THAT(run.output, !Contains("failed"));
   test::Run merged = test::hemirad("experiment merge " + dir);
   INFO(merged.output);
@@ -97,7 +108,8 @@ TEST_CASE("A sweep's tasks run as Slurm runs them (one stopped by SIGTERM mid-so
   // and the sweep as its provenance.
   // (Text is drawn as glyph outlines; matplotlib keeps each string in a comment beside them.)
   CHECK(test::count(figure, "<!-- scene=cornell, item-subdiv=") == 2);
-  CHECK_THAT(figure, Contains("<!-- scene=cornell, item-subdiv=0 -->") && Contains("<!-- scene=cornell, item-subdiv=2 -->"));
+  CHECK_THAT(figure,
+             Contains("<!-- scene=cornell, item-subdiv=0 -->") && Contains("<!-- scene=cornell, item-subdiv=2 -->"));
   CHECK_THAT(figure, Contains("<dc:description>hemirad ") && Contains("sweep cornell-item-mesh (4 configurations"));
   CHECK(readText(dir + "/results.pdf").rfind("%PDF-", 0) == 0);
   CHECK(test::count(table, ",done\n") == 4);
@@ -126,7 +138,8 @@ TEST_CASE("merge lists missing and failed configurations with their error lines 
   const std::string dark = test::writeScene(folder, "mtllib m.mtl\nusemtl grey\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
                                             "newmtl grey\nKd 0.5 0.5 0.5\n", "dark.obj");
   const std::string spec = test::writeTempFile("fail.json", R"({
-  "scenes": [")" + test::sourcePath("scenes/cornell/cornell.obj") + R"(", ")" + dark + R"("],
+  "scenes": [")" + test::sourcePath("scenes/cornell/cornell.obj") +
+                                                                R"(", ")" + dark + R"("],
   "axes": {"method": ["progressive", "stochastic"]},
   "flags": {"elements": 100, "shots": 8, "item-res": 32},
   "metrics": ["shots", "radiosity_hash"]
@@ -144,8 +157,8 @@ TEST_CASE("merge lists missing and failed configurations with their error lines 
   CHECK(merged.exitCode == 1);
   CHECK_THAT(merged.output, Contains("1 of 4 configurations done"));
   CHECK_THAT(merged.output, Contains("configuration 0001 (") && Contains("stochastic): missing"));
-  CHECK_THAT(merged.output, Contains("configuration 0002 (" + dark + ", progressive): failed: " +
-                                     errorLine.substr(0, errorLine.size() - 1)));
+  CHECK_THAT(merged.output, Contains("configuration 0002 (" + dark +
+                                     ", progressive): failed: " + errorLine.substr(0, errorLine.size() - 1)));
   const std::string table = readText(dir + "/results.csv");
   CHECK(test::count(table, ",done\n") == 1);
   CHECK(test::count(table, ",,,missing\n") == 2);
@@ -187,9 +200,11 @@ TEST_CASE("A bad sweep spec is refused with one error line before anything is wr
              Contains("--report is set by each task"));
   CHECK_THAT(message("{" + scenes + R"("flags": {"method": "stochastic"}, "metrics": ["shots"]})"),
              Contains("--method stochastic needs --shots"));
-  CHECK_THAT(message("{" + scenes + R"("metrics": ["shot"]})"), Contains("metric 'shot': 'shot' is not a report field"));
+  CHECK_THAT(message("{" + scenes + R"("metrics": ["shot"]})"),
+             Contains("metric 'shot': 'shot' is not a report field"));
   CHECK_THAT(message("{" + scenes + R"("metrics": ["shots"], "resource": {}})"), Contains("unknown field 'resource'"));
-  CHECK_THAT(message("{" + scenes + R"("metrics": ["shots"], "resources": {"gpu": "yes"}})"), Contains("resources.gpu"));
+  CHECK_THAT(message("{" + scenes + R"("metrics": ["shots"], "resources": {"gpu": "yes"}})"),
+             Contains("resources.gpu"));
   CHECK_THAT(message("{" + scenes + R"("metrics": ["shots"], "resources": {"mem": "1 G"}})"),
              Contains("'1 G' is not a Slurm value"));
   CHECK_THAT(message(R"({"scenes": ["missing.obj"], "metrics": ["shots"]})"), Contains("missing.obj"));
@@ -203,7 +218,8 @@ TEST_CASE("A bad sweep spec is refused with one error line before anything is wr
 
 TEST_CASE("A GPU sweep's array tasks request a GPU with --gres and solve on EGL", "[cli][sweep]") {
   const std::string spec = test::writeTempFile("gpu.json", R"({
-  "scenes": [")" + test::sourcePath("scenes/cornell/cornell.obj") + R"("],
+  "scenes": [")" + test::sourcePath("scenes/cornell/cornell.obj") +
+                                                               R"("],
   "axes": {"item-res": [256, 512, 1024]},
   "resources": {"gpu": true, "cpus": 4, "mem": "8G", "time": "02:00:00"},
   "metrics": ["shots", "timings_ms.total"]
@@ -222,5 +238,6 @@ TEST_CASE("A GPU sweep's array tasks request a GPU with --gres and solve on EGL"
     const auto args = c["args"].get<std::vector<std::string>>();
     CHECK(std::search(args.begin(), args.end(), egl.begin(), egl.end()) != args.end());
   }
-  CHECK(sweep["configurations"][2]["values"] == nlohmann::json({test::sourcePath("scenes/cornell/cornell.obj"), "1024"}));
+  CHECK(sweep["configurations"][2]["values"] ==
+        nlohmann::json({test::sourcePath("scenes/cornell/cornell.obj"), "1024"}));
 }

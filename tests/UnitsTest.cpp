@@ -1,7 +1,7 @@
 // Units never change the answer (src/scene/Units.h): the Cornell box in mm, m and km and scaled
 // far out of float's comfort solves to the same radiosity; an emission float cannot hold is refused.
-#include <catch2/catch.hpp>
 #include <fmt/format.h>
+#include <catch2/catch.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -64,7 +64,8 @@ TEST_CASE("The same scene in mm, m, km and at 1e8, 1e20 and 1e-25 times its size
     }
 }
 
-TEST_CASE("Bad input: an emission beyond float radiosity's range is one error naming the material", "[cli][bad-input]") {
+TEST_CASE("Bad input: an emission beyond float radiosity's range is one error naming the material",
+          "[cli][bad-input]") {
   std::string mtl = cornellMtl();
   mtl.replace(mtl.find("\nKe ") + 1, 2, "Ke 1e38 1e38 1e38\n#");  // the light's
   const std::string obj = scaledCornell("huge-emission", 1.0, mtl);

@@ -3,9 +3,9 @@
 // 99.9% overall and 99% at contacts at L = 4, and no light leaks above a lowered ceiling light.
 #include <catch2/catch.hpp>
 
+#include "src/scene/SceneLoader.h"
 #include "src/validate/DenseSolver.h"
 #include "src/validate/ExactReference.h"
-#include "src/scene/SceneLoader.h"
 #include "src/validate/Validate.h"
 #include "tests/support/Support.h"
 
@@ -16,15 +16,16 @@ TEST_CASE("Exact reference: unoccluded pairs get the exact contour form factor, 
   // element above it; elements clear of it see their shooter unoccluded (bound 0).
   Scene s;
   int m = test::material(s, 0.5, 1.0), o = s.addObject("box");
-  s.addPolygon(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 4, 4), m, o);    // floor, faces +y
-  s.addPolygon(test::rectangle({0, 2, 0}, {1, 0, 0}, {0, 0, 1}, 4, 4), m, o);    // ceiling, faces -y
+  s.addPolygon(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 4, 4), m, o);      // floor, faces +y
+  s.addPolygon(test::rectangle({0, 2, 0}, {1, 0, 0}, {0, 0, 1}, 4, 4), m, o);      // ceiling, faces -y
   s.addPolygon(test::rectangle({1.5, 1, 1.5}, {1, 0, 0}, {0, 0, 1}, 1, 1), m, o);  // blocker
   Atlas atlas = buildAtlas(s, 0.5);
   ExactReference ref(s, atlas);
   // The ceiling element over the floor's centre.
   std::size_t shooter = 0;
   for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
-    if (atlas.polygonOf[t] == 1 && glm::distance(glm::dvec3(atlas.positionArea[t]), glm::dvec3(1.75, 2, 1.75)) < 1e-6) shooter = t;
+    if (atlas.polygonOf[t] == 1 && glm::distance(glm::dvec3(atlas.positionArea[t]), glm::dvec3(1.75, 2, 1.75)) < 1e-6)
+      shooter = t;
   REQUIRE(atlas.polygonOf[shooter] == 1);
   std::vector<PairSample> pairs = ref.fromShooter(shooter);
   int hidden = 0, clear = 0;
@@ -85,9 +86,10 @@ TEST_CASE("Hemicube baseline: straight edges stay straight, so it agrees well wi
   CHECK(hemicube.levels[0].ffRelErrorP95 < 0.01);
 }
 
-TEST_CASE("Cornell box: the conformal and equal-area item buffers agree with CGAL on over 99% of pairs at 256^2, "
-          "better with the item-mesh level",
-          "[heavy][gl]") {
+TEST_CASE(
+    "Cornell box: the conformal and equal-area item buffers agree with CGAL on over 99% of pairs at 256^2, "
+    "better with the item-mesh level",
+    "[heavy][gl]") {
   test::backend();
   Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2500));
@@ -113,8 +115,9 @@ TEST_CASE("Dense exact solver: a closed box of emitting grey walls gives B = E /
   Scene s;
   int m = test::material(s, 0.6, 1.0), o = s.addObject("box");
   const glm::dvec3 X(1, 0, 0), Y(0, 1, 0), Z(0, 0, 1), O(0.0);
-  for (const Poly3& f : {test::rectangle(O, Z, X, 1, 1), test::rectangle(Y, X, Z, 1, 1), test::rectangle(O, X, Y, 1, 1),
-                         test::rectangle(Z, Y, X, 1, 1), test::rectangle(O, Y, Z, 1, 1), test::rectangle(X, Z, Y, 1, 1)})
+  for (const Poly3& f :
+       {test::rectangle(O, Z, X, 1, 1), test::rectangle(Y, X, Z, 1, 1), test::rectangle(O, X, Y, 1, 1),
+        test::rectangle(Z, Y, X, 1, 1), test::rectangle(O, Y, Z, 1, 1), test::rectangle(X, Z, Y, 1, 1)})
     s.addPolygon(f, m, o);
   Atlas atlas = buildAtlas(s, 1.0 / 8);
   cpu::ExactVisibility vis(polygonList(s));
@@ -155,9 +158,10 @@ std::vector<bool> contactBand(const Scene& s, const Atlas& atlas, double width) 
 }
 }  // namespace
 
-TEST_CASE("Cornell box: visibility agrees with CGAL on 99.9% of pairs and 99% within two elements of contacts "
-          "(orthographic L4, hemicube L0)",
-          "[heavy][gl]") {
+TEST_CASE(
+    "Cornell box: visibility agrees with CGAL on 99.9% of pairs and 99% within two elements of contacts "
+    "(orthographic L4, hemicube L0)",
+    "[heavy][gl]") {
   test::backend();
   Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2500));
@@ -182,8 +186,9 @@ TEST_CASE("Cornell box: visibility agrees with CGAL on 99.9% of pairs and 99% wi
     }
   }
   const double overall = double(agree) / double(pairs), contact = double(bandAgree) / double(bandPairs);
-  INFO(projectionName(projection) << " L" << level << " " << resolution << "^2: " << pairs << " pairs, agreement " << overall << "; " << bandPairs << " in the contact band (" << bandHidden
-             << " hidden), agreement " << contact);
+  INFO(projectionName(projection) << " L" << level << " " << resolution << "^2: " << pairs << " pairs, agreement "
+                                  << overall << "; " << bandPairs << " in the contact band (" << bandHidden
+                                  << " hidden), agreement " << contact);
   REQUIRE(bandHidden > 100);  // the band holds shadowed pairs: agreement there is not trivial
   CHECK(overall >= 0.999);
   CHECK(contact >= 0.99);
@@ -236,7 +241,8 @@ TEST_CASE("A light hung 0.5 mm below the ceiling leaves the ceiling above it dar
   }
   REQUIRE(area > 0);
   ring /= area;
-  INFO(projectionName(settings.projection) << ": ceiling above the light: B " << covered << ", its neighbours " << ring);
+  INFO(projectionName(settings.projection)
+       << ": ceiling above the light: B " << covered << ", its neighbours " << ring);
   CHECK(ring > 0.05);
   CHECK(covered < 0.01 * ring);
 }

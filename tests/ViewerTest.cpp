@@ -1,8 +1,8 @@
 // `hemirad view` run headless under Xvfb: the window shows what `solve` computes, each
 // algorithm runs, and without a display it fails cleanly. CI installs xvfb: without xvfb-run
 // these tests fail rather than skip.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -21,14 +21,16 @@ const std::string kViewerScene = test::sourcePath("scenes/cornell/cornell.obj");
 
 // `hemirad view ARGS` on a fresh virtual display; exit 97 says xvfb-run is missing.
 test::Run viewUnderXvfb(const std::string& args) {
-  return test::shell("command -v xvfb-run >/dev/null || { echo 'xvfb-run not found: install xvfb and xauth'; exit 97; }\n"
-                     "xvfb-run -a -s '-screen 0 1024x768x24' \"$HEMIRAD\" view " + args);
+  return test::shell(
+      "command -v xvfb-run >/dev/null || { echo 'xvfb-run not found: install xvfb and xauth'; exit 97; }\n"
+      "xvfb-run -a -s '-screen 0 1024x768x24' \"$HEMIRAD\" view " +
+      args);
 }
 
 // The viewer's last frame after `view ARGS` and solve's --image after `solve ARGS`; the viewer's
 // summary line must contain `summary`.
-std::pair<Image, Image> viewAndSolve(const std::string& viewArgs, const std::string& solveArgs, const std::string& summary,
-                                     const std::string& name) {
+std::pair<Image, Image> viewAndSolve(const std::string& viewArgs, const std::string& solveArgs,
+                                     const std::string& summary, const std::string& name) {
   const std::string shown = test::tempPath(name + "-view.png"), solved = test::tempPath(name + "-solve.png");
   test::Run view = viewUnderXvfb(viewArgs + " --screenshot " + shown);
   INFO(view.output);
@@ -74,7 +76,8 @@ TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-cou
     INFO(algorithm << "\n" << view.output);
     REQUIRE(view.exitCode == 0);
     std::smatch m;
-    REQUIRE(std::regex_search(view.output, m, std::regex("hemirad view: (\\w+), (\\d+) shots, convergence ([0-9.]+), (\\d+) frames")));
+    REQUIRE(std::regex_search(view.output, m,
+                              std::regex("hemirad view: (\\w+), (\\d+) shots, convergence ([0-9.]+), (\\d+) frames")));
     CHECK(m[1] == algorithm);
     CHECK(m[2] == "48");
     CHECK(std::stod(m[3]) > 0);
@@ -83,10 +86,13 @@ TEST_CASE("Each algorithm runs in the viewer for exactly frame-shots x frame-cou
   }
 }
 
-TEST_CASE("The viewer shows instant radiosity as solve --method instant renders it, interleaved", "[heavy][viewer][instant]") {
-  const std::string common = kViewerScene + " --method instant --vpls 64 --shadow-res 32 --interleave 2 --width 64 --height 48";
-  const auto [a, b] = viewAndSolve(common + " --frame-count 3", common,
-                                   "hemirad view: instant, 64 VPLs, deferred shading, interleave 2, 3 frames", "instant");
+TEST_CASE("The viewer shows instant radiosity as solve --method instant renders it, interleaved",
+          "[heavy][viewer][instant]") {
+  const std::string common =
+      kViewerScene + " --method instant --vpls 64 --shadow-res 32 --interleave 2 --width 64 --height 48";
+  const auto [a, b] =
+      viewAndSolve(common + " --frame-count 3", common,
+                   "hemirad view: instant, 64 VPLs, deferred shading, interleave 2, 3 frames", "instant");
   CHECK(test::meanPixel(a) > 0.2);
   CHECK(maxDifference(a, b) <= 1.0f / 255 + 1e-6f);  // as the progressive view: the same render and tone map
   // Refused before any window opens: no display needed.

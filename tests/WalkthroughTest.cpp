@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "src/walk/CameraPath.h"
 #include "src/base/Error.h"
+#include "src/walk/CameraPath.h"
 #include "tests/support/Files.h"
 #include "tests/support/Support.h"
 
@@ -31,7 +31,9 @@ TEST_CASE("Camera path keyframes inherit the keys they leave out and blend linea
   Camera base;
   base.up = {1, 0, 0};
   const CameraPath path = readCameraPath(
-      test::writeTempFile("blend.path", "# a comment\n0 eye=0,0,10 target=0,0,0 fov=40\n\n2 eye=4,0,10  # moves\n4 fov=20\n"), base);
+      test::writeTempFile("blend.path",
+                          "# a comment\n0 eye=0,0,10 target=0,0,0 fov=40\n\n2 eye=4,0,10  # moves\n4 fov=20\n"),
+      base);
   REQUIRE(path.keys.size() == 3);
   CHECK(path.duration() == 4.0);
   CHECK(path.keys[1].camera.target == glm::dvec3(0.0));  // inherited
@@ -58,10 +60,12 @@ TEST_CASE("Malformed camera paths name the file, the line and the problem", "[cp
   CHECK_THROWS_AS(readCameraPath("/no/such.path", base), InputError);
 }
 
-TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly with shots per frame, and shows its progress",
-          "[heavy][cli][walkthrough]") {
+TEST_CASE(
+    "A walkthrough writes a frame and a CSV row per frame, reproducibly with shots per frame, and shows its progress",
+    "[heavy][cli][walkthrough]") {
   const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
-  const std::string path = test::writeTempFile("turn.path", "0 eye=278,273,-800 target=278,273,0 fov=39.3\n0.5 fov=39.3\n1 target=556,0,559.2 fov=20\n");
+  const std::string path = test::writeTempFile(
+      "turn.path", "0 eye=278,273,-800 target=278,273,0 fov=39.3\n0.5 fov=39.3\n1 target=556,0,559.2 fov=20\n");
   for (const std::string algorithm : {"progressive", "importance", "perspective"}) {
     INFO(algorithm);
     // Reproducibility is checked on the perspective-driven run, the one with the most state.
@@ -69,7 +73,8 @@ TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly wi
     const std::string a = test::tempPath("walk_a_" + algorithm), b = test::tempPath("walk_b_" + algorithm);
     const std::string flags = " --elements 600 --algorithm " + algorithm + " --camera-path " + path +
                               " --fps 4 --frame-shots 12 --shooters-per-pass 4 --item-res 128 --width 48 --height 48 "
-                              "--reference-convergence 0.9" + std::string(twice ? " --quiet" : "");
+                              "--reference-convergence 0.9" +
+                              std::string(twice ? " --quiet" : "");
     test::Run run = test::shell("$HEMIRAD solve " + scene + flags + " --frames " + a +
                                 (twice ? " && $HEMIRAD solve " + scene + flags + " --frames " + b : std::string()));
     INFO(run.output);
@@ -97,9 +102,10 @@ TEST_CASE("A walkthrough writes a frame and a CSV row per frame, reproducibly wi
 TEST_CASE("Walkthrough flags come together: a path needs a frames folder and a budget of one kind", "[cli]") {
   const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
   const std::string path = test::sourcePath("scenes/cornell/cornell.path");
-  for (const std::string& args : std::vector<std::string>{"--camera-path " + path, "--frames /tmp/x",
-                                  "--camera-path " + path + " --frames /tmp/x --frame-ms 10 --frame-shots 4",
-                                  "--camera-path " + test::writeTempFile("bad.path", "0 eye=1\n") + " --frames /tmp/x"}) {
+  for (const std::string& args :
+       std::vector<std::string>{"--camera-path " + path, "--frames /tmp/x",
+                                "--camera-path " + path + " --frames /tmp/x --frame-ms 10 --frame-shots 4",
+                                "--camera-path " + test::writeTempFile("bad.path", "0 eye=1\n") + " --frames /tmp/x"}) {
     test::Run run = test::hemirad("solve " + scene + " " + args);
     INFO(args << "\n" << run.output);
     CHECK(run.exitCode == 2);
@@ -107,18 +113,21 @@ TEST_CASE("Walkthrough flags come together: a path needs a frames folder and a b
   }
 }
 
-TEST_CASE("hemirad-bench experiment, the lean binary for GPU machines, walks as hemirad experiment does, without figures",
-          "[heavy][cli][walkthrough]") {
+TEST_CASE(
+    "hemirad-bench experiment, the lean binary for GPU machines, walks as hemirad experiment does, without figures",
+    "[heavy][cli][walkthrough]") {
   // Shots per frame make the runs reproducible: every column but the times must agree.
   const std::string flags = " experiment --scenes " + test::sourcePath("scenes/building/building_4.obj") +
                             " --algorithms perspective --elements 300 --camera-path " +
                             test::sourcePath("scenes/building/building_4.path") +
                             " --fps 0.5 --frame-shots 8 --width 32 --height 32 --reference-convergence 0.8 --out-dir ";
   const std::string full = test::tempPath("experiment_full"), lean = test::tempPath("experiment_lean");
-  test::Run run = test::shell("$HEMIRAD" + flags + full + " && \"$(dirname \"$HEMIRAD\")/hemirad-bench\"" + flags + lean);
+  test::Run run =
+      test::shell("$HEMIRAD" + flags + full + " && \"$(dirname \"$HEMIRAD\")/hemirad-bench\"" + flags + lean);
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
-  const auto a = readFramesCsv(full + "/building_4_perspective.csv"), b = readFramesCsv(lean + "/building_4_perspective.csv");
+  const auto a = readFramesCsv(full + "/building_4_perspective.csv"),
+             b = readFramesCsv(lean + "/building_4_perspective.csv");
   REQUIRE(a.size() > 2);
   REQUIRE(a.size() == b.size());
   for (std::size_t r = 0; r < a.size(); ++r)

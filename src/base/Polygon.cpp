@@ -68,8 +68,11 @@ bool isConvex(const Poly3& p, const glm::dvec3& normal) {
 Poly2 clipToBox(const Poly2& poly, glm::dvec2 lo, glm::dvec2 hi) {
   Poly2 out = poly;
   // Each half-plane: axis (0 = x, 1 = y), bound, keep side (+1 keeps >= bound, -1 keeps <= bound).
-  const struct { int axis; double bound; double side; } planes[4] = {
-      {0, lo.x, 1}, {0, hi.x, -1}, {1, lo.y, 1}, {1, hi.y, -1}};
+  const struct {
+    int axis;
+    double bound;
+    double side;
+  } planes[4] = {{0, lo.x, 1}, {0, hi.x, -1}, {1, lo.y, 1}, {1, hi.y, -1}};
   for (const auto& pl : planes) {
     if (out.empty()) break;
     Poly2 in = std::move(out);

@@ -13,20 +13,20 @@
 #include "src/base/AtomicFile.h"
 #include "src/base/Clock.h"
 #include "src/base/DataDir.h"
+#include "src/base/Error.h"
 #include "src/base/ResidentMemory.h"
-#include "src/scene/Camera.h"
 #include "src/bench/Ceilings.h"
+#include "src/bench/InstantBench.h"
 #include "src/bench/SceneSize.h"
 #include "src/bench/StochasticBench.h"
-#include "src/bench/InstantBench.h"
 #include "src/options/Options.h"
-#include "src/base/Error.h"
-#include "src/solver/Control.h"
 #include "src/output/Progress.h"
 #include "src/output/Provenance.h"
 #include "src/output/Report.h"
+#include "src/scene/Camera.h"
 #include "src/scene/Scene.h"
 #include "src/scene/SceneLoader.h"
+#include "src/solver/Control.h"
 
 namespace hemirad {
 
@@ -34,8 +34,8 @@ namespace {
 
 struct BenchRow {
   std::string scene;
-  SceneSize size;        // polygons and triangles
-  double texelUse = 0;   // elements / atlas texels
+  SceneSize size;       // polygons and triangles
+  double texelUse = 0;  // elements / atlas texels
   std::size_t elements = 0, itemTriangles = 0, itemPixels = 0, shooterBlocks = 0;
   int itemResolution = 0;
   std::optional<double> gpuMemoryMiB;  // what the solve holds on the device, where the driver says
@@ -145,8 +145,10 @@ std::string comparisonTable(const nlohmann::json& rows, const std::string& other
     fail("--compare {}: not a bench JSON: {}", otherPath, e.what());
   }
   std::string out = fmt::format("\nagainst {} ({}): per-object relative difference of mean luminance\n\n", otherPath,
-             other.value("renderer", "?"));
-  out += "| scene | elements | shooters/pass | object | this | other | relative difference |\n|---|---|---|---|---|---|---|\n";
+                                other.value("renderer", "?"));
+  out +=
+      "| scene | elements | shooters/pass | object | this | other | relative difference "
+      "|\n|---|---|---|---|---|---|---|\n";
   auto lum = [](const nlohmann::json& c) { return luminance(glm::dvec3(double(c[0]), double(c[1]), double(c[2]))); };
   for (const auto& a : rows)
     for (const auto& b : other.value("rows", nlohmann::json::array())) {
@@ -158,8 +160,9 @@ std::string comparisonTable(const nlohmann::json& rows, const std::string& other
           if (oa["name"] != ob["name"]) continue;
           double x = lum(oa["mean_radiosity"]), y = lum(ob["mean_radiosity"]);
           out += fmt::format("| {} | {} | {} | {} | {:.6g} | {:.6g} | {:.2e} |\n", a["scene"].get<std::string>(),
-                     a["elements"].get<std::size_t>(), a["shooters_per_pass"].get<int>(), oa["name"].get<std::string>(), x, y,
-                     y != 0 ? std::abs(x - y) / std::abs(y) : std::abs(x - y));
+                             a["elements"].get<std::size_t>(), a["shooters_per_pass"].get<int>(),
+                             oa["name"].get<std::string>(), x, y,
+                             y != 0 ? std::abs(x - y) / std::abs(y) : std::abs(x - y));
         }
     }
   return out;
@@ -206,52 +209,72 @@ std::string printedSetting(int value, int autoValue, const char* suffix = "") {
 // Per-shot throughputs: item-buffer triangles and pixels (the shot's whole buffer; overdraw
 // makes the fragments more) and gather texel updates, per second of their pass.
 std::string tableHeader(const BenchOptions& o) {
-  return fmt::format("| scene | polygons | triangles | elements | texel use | shooter blocks | item res | shooters/pass | shots | "
-                     "time to {:.0f}% (ms) | ms/shot | GPU MiB | GPU alloc MiB (B/element, B/triangle) | resident MiB "
-                     "(B/element, B/triangle) | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s |{}\n"
-                     "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
-                     o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
-                     o.ceiling ? "---|---|---|" : "");
+  return fmt::format(
+      "| scene | polygons | triangles | elements | texel use | shooter blocks | item res | shooters/pass | shots | "
+      "time to {:.0f}% (ms) | ms/shot | GPU MiB | GPU alloc MiB (B/element, B/triangle) | resident MiB "
+      "(B/element, B/triangle) | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s "
+      "|{}\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
+      o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
+      o.ceiling ? "---|---|---|" : "");
 }
 
 // A row of the table, with the fractions of the ceilings when they were measured.
 std::string rowMarkdown(const BenchRow& r, const Ceilings* ceiling) {
-  std::string fractions =
-      ceiling ? fmt::format(" {:.1f} % | {:.1f} % | {:.1f} % |", 100 * r.itemTrianglesPerSecond / ceiling->trianglesPerSecond,
-                            100 * r.itemPixelsPerSecond / ceiling->fragmentsPerSecond,
-                            100 * r.gatherUpdatesPerSecond / ceiling->invocationsPerSecond)
-              : "";
+  std::string fractions = ceiling ? fmt::format(" {:.1f} % | {:.1f} % | {:.1f} % |",
+                                                100 * r.itemTrianglesPerSecond / ceiling->trianglesPerSecond,
+                                                100 * r.itemPixelsPerSecond / ceiling->fragmentsPerSecond,
+                                                100 * r.gatherUpdatesPerSecond / ceiling->invocationsPerSecond)
+                                  : "";
   const std::string memory = r.gpuMemoryMiB ? fmt::format("{:.0f}", *r.gpuMemoryMiB) : "n/a";
   const auto perUnit = [&r](std::size_t bytes) {
-    return fmt::format("{:.1f} ({:.0f}, {:.0f})", bytes / 1048576.0, double(bytes) / double(std::max<std::size_t>(r.elements, 1)),
+    return fmt::format("{:.1f} ({:.0f}, {:.0f})", bytes / 1048576.0,
+                       double(bytes) / double(std::max<std::size_t>(r.elements, 1)),
                        double(bytes) / double(std::max<std::size_t>(r.size.triangles, 1)));
   };
-  return fmt::format("| {} | {} | {} | {} | {:.1f} % | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.3g} |{}\n",
-                     r.scene, r.size.polygons, r.size.triangles, r.elements, 100 * r.texelUse, r.shooterBlocks,
-                     r.itemResolution, r.shootersPerPass, r.shots, r.solveMs, r.msPerShot, memory, perUnit(r.allocatedBytes),
-                     perUnit(r.residentBytes), r.split.itemBuffer,
-                     r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
-                     r.gatherUpdatesPerSecond, fractions);
+  return fmt::format(
+      "| {} | {} | {} | {} | {:.1f} % | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} "
+      "| {:.3g} | {:.3g} | {:.3g} |{}\n",
+      r.scene, r.size.polygons, r.size.triangles, r.elements, 100 * r.texelUse, r.shooterBlocks, r.itemResolution,
+      r.shootersPerPass, r.shots, r.solveMs, r.msPerShot, memory, perUnit(r.allocatedBytes), perUnit(r.residentBytes),
+      r.split.itemBuffer, r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
+      r.gatherUpdatesPerSecond, fractions);
 }
 
 nlohmann::json rowJson(const BenchRow& r) {
-  return {{"scene", r.scene}, {"polygons", r.size.polygons}, {"triangles", r.size.triangles},
-          {"texel_use", r.texelUse}, {"elements", r.elements}, {"shooter_blocks", r.shooterBlocks},
-          {"item_resolution", r.itemResolution}, {"shooters_per_pass", r.shootersPerPass},
-          {"shots", r.shots}, {"convergence", r.convergence}, {"time_to_converge_ms", r.solveMs},
+  return {{"scene", r.scene},
+          {"polygons", r.size.polygons},
+          {"triangles", r.size.triangles},
+          {"texel_use", r.texelUse},
+          {"elements", r.elements},
+          {"shooter_blocks", r.shooterBlocks},
+          {"item_resolution", r.itemResolution},
+          {"shooters_per_pass", r.shootersPerPass},
+          {"shots", r.shots},
+          {"convergence", r.convergence},
+          {"time_to_converge_ms", r.solveMs},
           {"ms_per_shot", r.msPerShot},
           {"gpu_memory_mib", r.gpuMemoryMiB ? nlohmann::json(*r.gpuMemoryMiB) : nlohmann::json()},
-          {"gpu_allocated_bytes", r.allocatedBytes}, {"resident_peak_bytes", r.residentBytes},
+          {"gpu_allocated_bytes", r.allocatedBytes},
+          {"resident_peak_bytes", r.residentBytes},
           {"gpu_allocated_bytes_per_element", double(r.allocatedBytes) / double(std::max<std::size_t>(r.elements, 1))},
-          {"gpu_allocated_bytes_per_triangle", double(r.allocatedBytes) / double(std::max<std::size_t>(r.size.triangles, 1))},
+          {"gpu_allocated_bytes_per_triangle",
+           double(r.allocatedBytes) / double(std::max<std::size_t>(r.size.triangles, 1))},
           {"resident_peak_bytes_per_element", double(r.residentBytes) / double(std::max<std::size_t>(r.elements, 1))},
-          {"resident_peak_bytes_per_triangle", double(r.residentBytes) / double(std::max<std::size_t>(r.size.triangles, 1))},
-          {"split_ms_per_shot", {{"item_buffer", r.split.itemBuffer}, {"gather", r.split.gather},
-                                 {"select", r.split.select}, {"readback", r.split.readback}}},
-          {"item_triangles", r.itemTriangles}, {"item_triangles_per_s", r.itemTrianglesPerSecond},
-          {"item_pixels", r.itemPixels}, {"item_pixels_per_s", r.itemPixelsPerSecond},
+          {"resident_peak_bytes_per_triangle",
+           double(r.residentBytes) / double(std::max<std::size_t>(r.size.triangles, 1))},
+          {"split_ms_per_shot",
+           {{"item_buffer", r.split.itemBuffer},
+            {"gather", r.split.gather},
+            {"select", r.split.select},
+            {"readback", r.split.readback}}},
+          {"item_triangles", r.itemTriangles},
+          {"item_triangles_per_s", r.itemTrianglesPerSecond},
+          {"item_pixels", r.itemPixels},
+          {"item_pixels_per_s", r.itemPixelsPerSecond},
           {"gather_texel_updates_per_s", r.gatherUpdatesPerSecond},
-          {"radiosity_hash", fmt::format("{:016x}", r.hash)}, {"objects", objectsJson(r.objects)}};
+          {"radiosity_hash", fmt::format("{:016x}", r.hash)},
+          {"objects", objectsJson(r.objects)}};
 }
 
 // Prints a piece of the bench's output (and keeps it for --markdown).
@@ -259,8 +282,8 @@ using Say = std::function<void(const std::string&)>;
 
 // The stochastic method's rows and JSON (src/bench/StochasticBench.h).
 void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, const Say& say) {
-  say(fmt::format("hemirad bench, {}, {} ({}), stochastic iteration, preset {}: item mesh L{}, {} item buffer {}\n\n", date,
-                  backend.name(), backend.renderer(), o.progressive.presetLabel(), o.progressive.itemSubdivision,
+  say(fmt::format("hemirad bench, {}, {} ({}), stochastic iteration, preset {}: item mesh L{}, {} item buffer {}\n\n",
+                  date, backend.name(), backend.renderer(), o.progressive.presetLabel(), o.progressive.itemSubdivision,
                   projectionName(o.progressive.projection),
                   printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
   const nlohmann::json rows = benchStochastic(backend, o, say);
@@ -276,7 +299,8 @@ void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const
                                          {"item_resolution", o.progressive.itemResolution},
                                          {"rows", rows},
                                          {"provenance", provenanceJson(provenance(backend.name(), backend.renderer()))}}
-                                  .dump(2) + "\n");
+                                  .dump(2) +
+                              "\n");
 }
 
 }  // namespace
@@ -287,28 +311,36 @@ void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const ch
                   backend.renderer()));
   const nlohmann::json rows = benchInstant(backend, o, say);
   if (!o.json.empty())
-    writeTextFile(o.json, nlohmann::json{{"date", date}, {"backend", backend.name()}, {"renderer", backend.renderer()},
-                                         {"method", "instant"}, {"width", o.width}, {"height", o.height},
-                                         {"frames_per_row", o.iterations}, {"shadow_resolution", o.instant.shadowResolution},
+    writeTextFile(o.json, nlohmann::json{{"date", date},
+                                         {"backend", backend.name()},
+                                         {"renderer", backend.renderer()},
+                                         {"method", "instant"},
+                                         {"width", o.width},
+                                         {"height", o.height},
+                                         {"frames_per_row", o.iterations},
+                                         {"shadow_resolution", o.instant.shadowResolution},
                                          {"rows", rows},
                                          {"provenance", provenanceJson(provenance(backend.name(), backend.renderer()))}}
-                                 .dump(2) + "\n");
+                                  .dump(2) +
+                              "\n");
 }
 
 // Time to convergence per scene, element count and shooters a pass, against the measured ceilings.
 void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, const Say& say) {
-  say(fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, chart angle {}, preset {}: shoot level {}, item mesh L{}, {} item buffer {}\n\n",
+  say(
+      fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, chart angle {}, preset {}: shoot level {}, item mesh "
+                  "L{}, {} item buffer {}\n\n",
                   date, backend.name(), backend.renderer(), algorithmName(o.progressive.algorithm), o.converge,
-                  o.chartAngle, o.progressive.presetLabel(),
-                  printedSetting(o.progressive.shootLevel, kAutoShootLevel), o.progressive.itemSubdivision, projectionName(o.progressive.projection),
+                  o.chartAngle, o.progressive.presetLabel(), printedSetting(o.progressive.shootLevel, kAutoShootLevel),
+                  o.progressive.itemSubdivision, projectionName(o.progressive.projection),
                   printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
   Ceilings ceiling;
   if (o.ceiling) {
     ceiling = measureCeilings(backend, o.scenes.front());
-    say(fmt::format("ceilings: {:.3g} load-store invocations/s, {:.3g} item-buffer triangles/s (first scene, item "
-                    "mesh L{}), {:.3g} item-buffer fragments/s (fill)\n\n",
-                    ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.triangleLevel,
-                    ceiling.fragmentsPerSecond));
+    say(fmt::format(
+        "ceilings: {:.3g} load-store invocations/s, {:.3g} item-buffer triangles/s (first scene, item "
+        "mesh L{}), {:.3g} item-buffer fragments/s (fill)\n\n",
+        ceiling.invocationsPerSecond, ceiling.trianglesPerSecond, ceiling.triangleLevel, ceiling.fragmentsPerSecond));
   }
   say(tableHeader(o));
   nlohmann::json rows = nlohmann::json::array();
@@ -316,7 +348,8 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
     Scene scene = loadScene(path);
     validateSolvable(scene);
     for (std::size_t n : o.elements) {
-      Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, n, o.chartAngle), backend.maxTextureSize(), 0, o.chartAngle);
+      Atlas atlas =
+          buildAtlas(scene, texelSizeForElements(scene, n, o.chartAngle), backend.maxTextureSize(), 0, o.chartAngle);
       for (int k : o.shootersPerPass) {
         BenchRow r = benchOne(backend, scene, atlas, k, o);
         r.scene = path;

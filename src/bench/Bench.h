@@ -20,17 +20,17 @@ struct BenchOptions {
   std::vector<std::size_t> elements{10000, 100000};
   double chartAngle = kDefaultChartAngle;  // --chart-angle (src/scene/Charts.h), as for solve
   double converge = 0.9;
-  ProgressiveSettings progressive;  // shoot level, item mesh and buffer as for solve
-  std::string method = "progressive";  // which of the bench's runs below
+  ProgressiveSettings progressive;         // shoot level, item mesh and buffer as for solve
+  std::string method = "progressive";      // which of the bench's runs below
   std::vector<int> atlasSides{512, 1024};  // stochastic: one row per atlas side (texel size fills it)
-  unsigned iterations = 8;          // stochastic: iterations timed per row
+  unsigned iterations = 8;                 // stochastic: iterations timed per row
   std::vector<int> shootersPerPass{ProgressiveSettings{}.shootersPerPass};  // a row each
-  unsigned splitShots = 64;         // shots timed pass by pass (synchronised) for the split
+  unsigned splitShots = 64;  // shots timed pass by pass (synchronised) for the split
   gl::BackendOptions backend;
   std::string json;
-  std::string markdown;  // the printed tables, as a markdown file
-  bool ceiling = false;  // also measure the device's compute and raster ceilings
-  std::string compare;   // another bench JSON to compare per-object radiosity with
+  std::string markdown;                       // the printed tables, as a markdown file
+  bool ceiling = false;                       // also measure the device's compute and raster ceilings
+  std::string compare;                        // another bench JSON to compare per-object radiosity with
   std::vector<unsigned> vpls{128, 256, 512};  // instant: a row per VPL count
   InstantSettings instant;                    // instant: seed, bounces, clamp, shadow maps
   int width = 1024, height = 1024;            // instant: the frame's size

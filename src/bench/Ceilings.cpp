@@ -6,10 +6,10 @@
 
 #include "gl/Objects.h"
 #include "gl/State.h"
-#include "src/solver/Control.h"
-#include "src/solver/ItemBuffer.h"
 #include "src/scene/ItemMesh.h"
 #include "src/scene/SceneLoader.h"
+#include "src/solver/Control.h"
+#include "src/solver/ItemBuffer.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
@@ -48,11 +48,11 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
     kernel.use();
     values.bindImage(slot::IMAGE_CEILING_VALUES, GL_READ_WRITE);
     c.invocationsPerSecond = 10.0 * side * side / bestSeconds(backend, [&] {
-      for (int k = 0; k < 10; ++k) {
-        gl::Program::dispatch(side / 16, side / 16);
-        gl::barrier(gl::Barrier::Image);
-      }
-    });
+                               for (int k = 0; k < 10; ++k) {
+                                 gl::Program::dispatch(side / 16, side / 16);
+                                 gl::barrier(gl::Barrier::Image);
+                               }
+                             });
   }
   // Fill: 8 full-target triangles, each nearer than the last, into a 2048^2 id + depth target.
   {
@@ -66,13 +66,13 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
     fill.set("instances", layers);
     gl::VertexArray empty;
     c.fragmentsPerSecond = double(layers) * fillSide * fillSide / bestSeconds(backend, [&] {
-      target.clearDepth(1.0f);
-      target.bind();
-      gl::RasterState{.width = fillSide, .height = fillSide}.apply();
-      fill.use();
-      empty.bind();
-      gl::drawTriangles(3, layers);
-    });
+                             target.clearDepth(1.0f);
+                             target.bind();
+                             gl::RasterState{.width = fillSide, .height = fillSide}.apply();
+                             fill.use();
+                             empty.bind();
+                             gl::drawTriangles(3, layers);
+                           });
   }
   // Triangles: the item mesh at L6 (or lower, see ceilingLevel) from the scene's top, 10 times.
   Scene scene = loadScene(scenePath);
@@ -88,8 +88,8 @@ Ceilings measureCeilings(gl::RenderBackend& backend, const std::string& scenePat
   shooter.normal[1] = -1.0f;
   gl::Buffer controlBuffer(sizeof control, &control);
   c.trianglesPerSecond = 10.0 * double(items.triangles()) / bestSeconds(backend, [&] {
-    for (int k = 0; k < 10; ++k) items.render(controlBuffer);
-  });
+                           for (int k = 0; k < 10; ++k) items.render(controlBuffer);
+                         });
   return c;
 }
 

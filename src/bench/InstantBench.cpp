@@ -50,7 +50,8 @@ std::string seedCell(unsigned vpls, bool deferred) {
 
 nlohmann::json benchInstant(gl::RenderBackend& backend, const BenchOptions& o,
                             const std::function<void(const std::string&)>& say) {
-  say(fmt::format("{} frames timed per row at {} x {}, {}^2 shadow maps. Full frame: trace + every VPL's shadow map "
+  say(
+      fmt::format("{} frames timed per row at {} x {}, {}^2 shadow maps. Full frame: trace + every VPL's shadow map "
                   "+ shading; shading only: a camera move (G-buffer, shading, interleaving filter), the shadow maps "
                   "kept. Seed 002 traced once after loading and timed shading frames: compare its columns with "
                   "shading only.\n\n",
@@ -78,13 +79,17 @@ nlohmann::json benchInstant(gl::RenderBackend& backend, const BenchOptions& o,
         double f[2][2];  // [full][deferred]
         for (int full = 1; full >= 0; --full)
           for (int deferred = 0; deferred < 2; ++deferred)
-            f[full][deferred] = fps(backend, tracer, renderer, camera, o,
-                                    deferred ? Shading::Deferred : Shading::Forward, full);
+            f[full][deferred] =
+                fps(backend, tracer, renderer, camera, o, deferred ? Shading::Deferred : Shading::Forward, full);
         say(fmt::format("| {} | {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {} | {} |\n", path, vpls,
                         interleave, stats.paths, traceMs, f[1][0], f[1][1], f[0][0], f[0][1], seedCell(vpls, false),
                         seedCell(vpls, true)));
-        nlohmann::json row = {{"scene", path}, {"vpls", vpls}, {"interleave", interleave}, {"paths", stats.paths},
-                              {"trace_ms", traceMs}, {"full_frame_fps", {{"forward", f[1][0]}, {"deferred", f[1][1]}}},
+        nlohmann::json row = {{"scene", path},
+                              {"vpls", vpls},
+                              {"interleave", interleave},
+                              {"paths", stats.paths},
+                              {"trace_ms", traceMs},
+                              {"full_frame_fps", {{"forward", f[1][0]}, {"deferred", f[1][1]}}},
                               {"shading_only_fps", {{"forward", f[0][0]}, {"deferred", f[0][1]}}}};
         if (auto it = kSeedFigure5.find(vpls); it != kSeedFigure5.end())
           row["seed_002_gtx_titan_fps"] = {{"forward", it->second.first}, {"deferred", it->second.second}};

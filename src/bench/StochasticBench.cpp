@@ -77,14 +77,21 @@ StochasticRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atl
   StochasticSolver timed(fresh, settings);
   run(backend, timed);
   const PassTimings& t = timed.timings();
-  row.split = {t.itemBuffer / o.iterations, t.gather / o.iterations, t.select / o.iterations, t.readback / o.iterations};
+  row.split = {t.itemBuffer / o.iterations, t.gather / o.iterations, t.select / o.iterations,
+               t.readback / o.iterations};
   return row;
 }
 
 nlohmann::json rowJson(const StochasticRow& r) {
-  return {{"scene", r.scene}, {"atlas_side", r.side}, {"atlas", {r.width, r.height}}, {"elements", r.elements},
-          {"shooters_per_iteration", r.shooters}, {"item_resolution", r.itemResolution},
-          {"item_triangles", r.itemTriangles}, {"iterations", r.iterations}, {"ms_per_iteration", r.msPerIteration},
+  return {{"scene", r.scene},
+          {"atlas_side", r.side},
+          {"atlas", {r.width, r.height}},
+          {"elements", r.elements},
+          {"shooters_per_iteration", r.shooters},
+          {"item_resolution", r.itemResolution},
+          {"item_triangles", r.itemTriangles},
+          {"iterations", r.iterations},
+          {"ms_per_iteration", r.msPerIteration},
           {"split_ms_per_iteration",
            {{"pyramid_select", r.split.select}, {"item_buffer", r.split.itemBuffer}, {"update", r.split.gather}}},
           {"radiosity_hash", fmt::format("{:016x}", r.hash)}};
@@ -105,9 +112,9 @@ nlohmann::json benchStochastic(gl::RenderBackend& backend, const BenchOptions& o
       for (int k : o.shootersPerPass) {
         StochasticRow r = benchOne(backend, scene, atlas, k, o);
         r.scene = path, r.side = side;
-        say(fmt::format("| {} | {} | {} x {} | {} | {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n", r.scene, r.side,
-                        r.width, r.height, r.elements, r.shooters, r.itemResolution, r.iterations, r.msPerIteration,
-                        r.split.select, r.split.itemBuffer, r.split.gather));
+        say(fmt::format("| {} | {} | {} x {} | {} | {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n", r.scene,
+                        r.side, r.width, r.height, r.elements, r.shooters, r.itemResolution, r.iterations,
+                        r.msPerIteration, r.split.select, r.split.itemBuffer, r.split.gather));
         rows.push_back(rowJson(r));
       }
     }

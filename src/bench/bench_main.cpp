@@ -5,8 +5,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
-#include "src/bench/Bench.h"
 #include "src/base/Error.h"
+#include "src/bench/Bench.h"
 #include "src/options/Suggest.h"
 #include "src/output/Provenance.h"
 #include "src/walk/ExperimentFlags.h"
@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
   hemirad::addBenchFlags(&app, options);
   hemirad::ExperimentOptions experiment;
   experiment.figures = false;  // matplotlib is not carried to GPU machines
-  CLI::App* x = app.add_subcommand("experiment", "Seed 004's experiments (as hemirad experiment): CSVs and summary, no figures");
+  CLI::App* x =
+      app.add_subcommand("experiment", "Seed 004's experiments (as hemirad experiment): CSVs and summary, no figures");
   hemirad::addExperimentFlags(x, experiment);
   if (std::optional<int> exit = hemirad::options::parse(app, argc, argv)) return *exit;
   try {

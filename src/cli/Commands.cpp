@@ -24,7 +24,8 @@ void addScene(CLI::App* cmd, std::string& scene, LoadOptions& load, Discretisati
       ->required()
       ->type_name("SCENE")
       // The README's scenes/cornell/cornell.obj from any folder: the shipped one (base/DataDir.h).
-      ->transform(CLI::Validator([](std::string& path) { return path = findScene(path), std::string(); }, "", "shipped"))
+      ->transform(
+          CLI::Validator([](std::string& path) { return path = findScene(path), std::string(); }, "", "shipped"))
       ->check(CLI::ExistingFile);
   add(cmd, "--emission", load.emission);
   CLI::Option* texelSize = add(cmd, "--texel-size", d.texelSize, "from --elements");
@@ -39,7 +40,8 @@ Commands::Commands() {
   app.set_version_flag("--version", versionString());
   addSolve();
 
-  infoCmd = app.add_subcommand("info", "Describe a scene: objects, polygons, area, emitters, elements, GPU and resident memory");
+  infoCmd = app.add_subcommand(
+      "info", "Describe a scene: objects, polygons, area, emitters, elements, GPU and resident memory");
   addScene(infoCmd, info.scene, info.load, info.discretisation);
   add(infoCmd, "--item-subdiv", info.itemSubdivision, options::defaultText("--item-subdiv"));
 
@@ -77,8 +79,12 @@ void Commands::addSolve() {
 }
 
 void Commands::addSolveOutputs(CLI::App* s) {
-  for (auto [flag, path] : {std::pair{"--out", &solve.out}, {"--image", &solve.image}, {"--atlas", &solve.atlas},
-                            {"--ply", &solve.ply}, {"--gltf", &solve.gltf}, {"--report", &solve.report}})
+  for (auto [flag, path] : {std::pair{"--out", &solve.out},
+                            {"--image", &solve.image},
+                            {"--atlas", &solve.atlas},
+                            {"--ply", &solve.ply},
+                            {"--gltf", &solve.gltf},
+                            {"--report", &solve.report}})
     add(s, flag, *path);
   CLI::Option* checkpoint = add(s, "--checkpoint", solve.checkpoint);
   add(s, "--checkpoint-every", solve.checkpointEvery)->needs(checkpoint);
@@ -136,11 +142,12 @@ void Commands::addView() {
   add(w, "--shots", p.stop.maxShots);
   add(w, "--method", view.method)->transform(options::oneOfNames(viewerMethods()));
   InstantSettings& i = view.instant;
-  i.seed = 1;              // as solve's
-  i.itemSubdivision = 3;   // as solve's (src/method/instant): hemispherical shadow maps, curved edges
-  viewInstantOnly = {add(w, "--vpls", i.vpls), add(w, "--vpl-bounces", i.bounces), add(w, "--vpl-clamp", i.clamp),
-                     add(w, "--shadow-res", i.shadowResolution), add(w, "--shading", viewShading),
-                     add(w, "--interleave", i.interleave), add(w, "--seed", i.seed)};
+  i.seed = 1;             // as solve's
+  i.itemSubdivision = 3;  // as solve's (src/method/instant): hemispherical shadow maps, curved edges
+  viewInstantOnly = {add(w, "--vpls", i.vpls),         add(w, "--vpl-bounces", i.bounces),
+                     add(w, "--vpl-clamp", i.clamp),   add(w, "--shadow-res", i.shadowResolution),
+                     add(w, "--shading", viewShading), add(w, "--interleave", i.interleave),
+                     add(w, "--seed", i.seed)};
 }
 
 // view runs progressive refinement (and its algorithms) or instant radiosity, whose flags it
@@ -158,9 +165,10 @@ int Commands::runView() {
 }
 
 void Commands::addExperiment() {
-  CLI::App* x = experimentCmd = app.add_subcommand(
-      "experiment", "Seed 004's experiments: progressive vs importance vs perspective along camera paths; or, "
-                    "with SPEC, a parameter sweep run here or on Slurm (docs/sweeps.md)");
+  CLI::App* x = experimentCmd =
+      app.add_subcommand("experiment",
+                         "Seed 004's experiments: progressive vs importance vs perspective along camera paths; or, "
+                         "with SPEC, a parameter sweep run here or on Slurm (docs/sweeps.md)");
   seed004Only = addExperimentFlags(x, experiment);
   seed004Only.push_back(addSwitch(x, "--keep-frames", experiment.frames));
   addSweep(x);
@@ -172,12 +180,20 @@ void Commands::addSweep(CLI::App* x) {
       ->check(CLI::ExistingFile);
   add(x, "--slurm", sweep.slurm);
   add(x, "--jobs", sweep.jobs);
-  mergeCmd = x->add_subcommand("merge", "Collect a sweep's task reports into DIR/results.csv and results.md; "
-                                        "lists missing and failed configurations");
-  mergeCmd->add_option("dir", sweep.dir, "The sweep's folder")->required()->type_name("DIR")->check(CLI::ExistingDirectory);
-  runTaskCmd = x->add_subcommand("run-task", "Run one configuration of a sweep (what each Slurm array task runs); "
-                                             "resumes from its checkpoint");
-  runTaskCmd->add_option("dir", sweep.dir, "The sweep's folder")->required()->type_name("DIR")->check(CLI::ExistingDirectory);
+  mergeCmd = x->add_subcommand("merge",
+                               "Collect a sweep's task reports into DIR/results.csv and results.md; "
+                               "lists missing and failed configurations");
+  mergeCmd->add_option("dir", sweep.dir, "The sweep's folder")
+      ->required()
+      ->type_name("DIR")
+      ->check(CLI::ExistingDirectory);
+  runTaskCmd = x->add_subcommand("run-task",
+                                 "Run one configuration of a sweep (what each Slurm array task runs); "
+                                 "resumes from its checkpoint");
+  runTaskCmd->add_option("dir", sweep.dir, "The sweep's folder")
+      ->required()
+      ->type_name("DIR")
+      ->check(CLI::ExistingDirectory);
   runTaskCmd->add_option("index", sweep.index, "The configuration, 0 to N - 1 ($SLURM_ARRAY_TASK_ID)")
       ->required()
       ->type_name("INDEX");
@@ -201,9 +217,10 @@ void Commands::addComparison() {
 }
 
 void Commands::addAnimation() {
-  CLI::App* a = animateCmd = app.add_subcommand(
-      "animate", "Stochastic iteration under moving lights: frames along a light path, each compared with a "
-                 "converged progressive solve");
+  CLI::App* a = animateCmd =
+      app.add_subcommand("animate",
+                         "Stochastic iteration under moving lights: frames along a light path, each compared with a "
+                         "converged progressive solve");
   AnimationOptions& m = animation;
   m.stochastic.window = 64;
   addScene(a, m.scene, m.load, m.discretisation);
@@ -226,7 +243,8 @@ void Commands::addAnimation() {
 
 void Commands::addVplError() {
   CLI::App* c = vplErrorCmd = app.add_subcommand(
-      "compare-vpls", "Instant radiosity's image error per region against a converged progressive solve, per VPL count");
+      "compare-vpls",
+      "Instant radiosity's image error per region against a converged progressive solve, per VPL count");
   VplErrorOptions& v = vplError;
   addScene(c, v.scene, v.load, v.discretisation);
   add(c, "--vpls", v.vpls, "64,128,...,4096 (a row each)");
@@ -248,13 +266,15 @@ void Commands::addVplError() {
 
 void Commands::addReference() {
   CLI::App* r = referenceCmd = app.add_subcommand(
-      "reference", "Path-trace the camera view unbiased, in B units as solve's --out, with per-pixel standard errors "
-                   "from independent batches (docs/reference.md)");
+      "reference",
+      "Path-trace the camera view unbiased, in B units as solve's --out, with per-pixel standard errors "
+      "from independent batches (docs/reference.md)");
   ReferenceOptions& o = reference;
   r->add_option("scene", o.scene, "Wavefront OBJ (materials from its MTL) or glTF 2.0 (.gltf, .glb)")
       ->required()
       ->type_name("SCENE")
-      ->transform(CLI::Validator([](std::string& path) { return path = findScene(path), std::string(); }, "", "shipped"))
+      ->transform(
+          CLI::Validator([](std::string& path) { return path = findScene(path), std::string(); }, "", "shipped"))
       ->check(CLI::ExistingFile);
   add(r, "--emission", o.load.emission);
   add(r, "--spp", o.settings.samples);
@@ -273,8 +293,9 @@ void Commands::addReference() {
 
 void Commands::addCompare() {
   CLI::App* c = compareCmd = app.add_subcommand(
-      "compare", "Relative luminance error of image A against image B (the reference) over surface interiors, edge "
-                 "and corner bands and each object, and an error map (docs/reference.md)");
+      "compare",
+      "Relative luminance error of image A against image B (the reference) over surface interiors, edge "
+      "and corner bands and each object, and an error map (docs/reference.md)");
   CompareOptions& o = compare;
   c->add_option("a", o.a, "The image judged (.exr)")->required()->type_name("A")->check(CLI::ExistingFile);
   c->add_option("b", o.b, "The reference (.exr)")->required()->type_name("B")->check(CLI::ExistingFile);
@@ -308,12 +329,14 @@ int Commands::runExperiment() {
   const CLI::Option* jobs = experimentCmd->get_option("--jobs");
   if (sweep.spec.empty()) {
     for (const CLI::Option* o : {slurm, jobs})
-      if (*o) throw InputError(o->get_name() + " needs a sweep SPEC: hemirad experiment SPEC " + o->get_name() + " ...");
+      if (*o)
+        throw InputError(o->get_name() + " needs a sweep SPEC: hemirad experiment SPEC " + o->get_name() + " ...");
     experiment.walkthrough.writeFrame = writePng;
     return hemirad::runExperiment(experiment);
   }
   for (const CLI::Option* o : seed004Only)
-    if (*o) throw InputError(o->get_name() + " is for seed 004's experiments, not a SPEC sweep (the spec sets the flags)");
+    if (*o)
+      throw InputError(o->get_name() + " is for seed 004's experiments, not a SPEC sweep (the spec sets the flags)");
   if (*experimentCmd->get_option("--out-dir")) sweep.outDir = experiment.out;
   if (*jobs && *slurm) throw InputError("--jobs is for a local run (--out-dir), not --slurm");
   return runSweepCommand(sweep);
@@ -342,8 +365,10 @@ int Commands::run() {
   }
   validate.projections.clear();
   for (int p : validateProjections) {
-    if (p != options::kAllProjections) validate.projections.push_back(Projection(p));
-    else for (Projection each : allProjections()) validate.projections.push_back(each);
+    if (p != options::kAllProjections)
+      validate.projections.push_back(Projection(p));
+    else
+      for (Projection each : allProjections()) validate.projections.push_back(each);
   }
   validate.shooters = shooters == "all" ? std::nullopt : std::optional<std::size_t>(std::stoul(shooters));
   return runValidate(validate);

@@ -65,9 +65,9 @@ struct Commands {
   bool quiet = false;
   std::string docs;
   CLI::App *solveCmd = nullptr, *infoCmd = nullptr, *validateCmd = nullptr, *benchCmd = nullptr, *viewCmd = nullptr,
-           *experimentCmd = nullptr, *docsCmd = nullptr,
-           *comparisonCmd = nullptr, *animateCmd = nullptr, *vplErrorCmd = nullptr, *mergeCmd = nullptr,
-           *runTaskCmd = nullptr, *referenceCmd = nullptr, *compareCmd = nullptr;
+           *experimentCmd = nullptr, *docsCmd = nullptr, *comparisonCmd = nullptr, *animateCmd = nullptr,
+           *vplErrorCmd = nullptr, *mergeCmd = nullptr, *runTaskCmd = nullptr, *referenceCmd = nullptr,
+           *compareCmd = nullptr;
   MethodChoice methods;                       // solve's --method, each with its own flags
   std::vector<CLI::Option*> viewInstantOnly;  // flags view takes for --method instant only
   std::vector<CLI::Option*> seed004Only;      // experiment's flags that mean nothing to a SPEC sweep

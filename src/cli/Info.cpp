@@ -6,12 +6,12 @@
 #include "gl/Backend.h"
 #include "src/base/Error.h"
 #include "src/base/ResidentMemory.h"
+#include "src/cli/Solve.h"
 #include "src/output/Lightmap.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/AtlasPacker.h"
 #include "src/scene/AtlasUse.h"
 #include "src/scene/ItemMesh.h"
-#include "src/cli/Solve.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/solver/SolverState.h"
 
@@ -37,7 +37,8 @@ void printFootprint(const Scene& scene, const Atlas& atlas, const InfoOptions& o
     ProgressiveSettings settings;
     settings.itemSubdivision = o.itemSubdivision;
     ProgressiveSolver solver(state, settings);
-    fmt::print("gpu memory   {} at solve's defaults\n", bytesPerUnit(gl::allocatedBytes() - before, atlas.elements, triangles));
+    fmt::print("gpu memory   {} at solve's defaults\n",
+               bytesPerUnit(gl::allocatedBytes() - before, atlas.elements, triangles));
   } catch (const std::exception& e) {  // InputError or gl::Error: the solve would fail the same way
     fmt::print("gpu memory   not measured: {}\n", e.what());
   }
@@ -56,13 +57,14 @@ void printTexelUse(const Atlas& atlas, double atlasSeconds) {
   for (const Chart& c : atlas.charts) sizes.push_back(c.size);
   auto start = std::chrono::steady_clock::now();
   packAtlasCharts(sizes, 16384);  // again, timed alone
-  fmt::print("atlas use    {:.1f} % elements: {:.1f} % of chart cells, charts {:.1f} % of the atlas (built in {:.3f} s, "
-             "packed in {:.3f} s)\n",
-             100 * u.texelUse(), 100 * u.cellUse(), 100 * u.packing(), atlasSeconds, secondsSince(start));
+  fmt::print(
+      "atlas use    {:.1f} % elements: {:.1f} % of chart cells, charts {:.1f} % of the atlas (built in {:.3f} s, "
+      "packed in {:.3f} s)\n",
+      100 * u.texelUse(), 100 * u.cellUse(), 100 * u.packing(), atlasSeconds, secondsSince(start));
   start = std::chrono::steady_clock::now();
   const Lightmap map = buildLightmap(atlas, std::vector<glm::vec4>(atlas.polygonOf.size(), glm::vec4(0.0f)));
-  fmt::print("lightmap     {} x {}, texel use {:.1f} %, charts with {}-texel gutters {:.1f} % (in {:.3f} s)\n", map.width,
-             map.height, 100 * map.texelUse(), map.gutter, 100 * map.packing(), secondsSince(start));
+  fmt::print("lightmap     {} x {}, texel use {:.1f} %, charts with {}-texel gutters {:.1f} % (in {:.3f} s)\n",
+             map.width, map.height, 100 * map.texelUse(), map.gutter, 100 * map.packing(), secondsSince(start));
 }
 
 }  // namespace
@@ -99,9 +101,12 @@ int runInfo(const InfoOptions& o) {
   fmt::print("objects      {}\npolygons     {}\nmaterials    {}\n", scene.objects.size(), scene.polygons().size(),
              scene.materials.size());
   fmt::print("area         {:.6g}\n", scene.totalArea() / (u * u));
-  fmt::print("emitters     {} polygons, emitted power {:.6g} (luminance E*A)\n", emitters, scene.emittedPower() / (u * u));
-  fmt::print("texel size   {:.6g}\nelements     {}\natlas        {} x {}\n", ts / u, atlas.elements, atlas.width, atlas.height);
-  fmt::print("charts       {} at --chart-angle {:g} (texel use {:.1f} %)\n", atlas.charts.size(), o.discretisation.chartAngle,
+  fmt::print("emitters     {} polygons, emitted power {:.6g} (luminance E*A)\n", emitters,
+             scene.emittedPower() / (u * u));
+  fmt::print("texel size   {:.6g}\nelements     {}\natlas        {} x {}\n", ts / u, atlas.elements, atlas.width,
+             atlas.height);
+  fmt::print("charts       {} at --chart-angle {:g} (texel use {:.1f} %)\n", atlas.charts.size(),
+             o.discretisation.chartAngle,
              100.0 * double(atlas.elements) / std::max(1.0, double(atlas.width) * atlas.height));
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);

@@ -9,21 +9,21 @@
 #include <tuple>
 
 #include "src/base/AtomicFile.h"
-#include "src/base/OutputPaths.h"
-#include "src/scene/Atlas.h"
-#include "src/scene/Camera.h"
-#include "src/solver/Checkpoint.h"
-#include "src/solver/DirectSplit.h"
-#include "src/base/Interrupt.h"
 #include "src/base/Error.h"
+#include "src/base/Interrupt.h"
+#include "src/base/OutputPaths.h"
+#include "src/output/DirectLight.h"
 #include "src/output/GltfWriter.h"
 #include "src/output/ImageFile.h"
 #include "src/output/PlyWriter.h"
 #include "src/output/Progress.h"
-#include "src/output/DirectLight.h"
 #include "src/output/Renderer.h"
 #include "src/output/Report.h"
 #include "src/output/SeamStitch.h"
+#include "src/scene/Atlas.h"
+#include "src/scene/Camera.h"
+#include "src/solver/Checkpoint.h"
+#include "src/solver/DirectSplit.h"
 
 namespace hemirad {
 
@@ -92,8 +92,9 @@ void checkSolveInputs(const SolveOptions& o) {
   checkSolveOutputs(o, {{"the scene", o.scene}});
   if (o.out.empty() && o.image.empty() && o.atlas.empty() && o.ply.empty() && o.gltf.empty() && o.report.empty() &&
       o.checkpoint.empty() && o.cameraPath.empty())
-    warn("no output flag (--out, --image, --atlas, --ply, --gltf, --report, --checkpoint): only the summary line will "
-         "show the result");
+    warn(
+        "no output flag (--out, --image, --atlas, --ply, --gltf, --report, --checkpoint): only the summary line will "
+        "show the result");
 }
 
 // Shots run in batches between status readbacks; a signal or a due checkpoint is handled
@@ -141,7 +142,8 @@ Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
   renderer.setAmbient(o.ambient.value_or(false) && method.ambient());
   auto t0 = std::chrono::steady_clock::now();
   const bool image = !o.out.empty() || !o.image.empty();
-  const std::vector<glm::vec4> direct = image ? method.directOnly(camera, double(o.width) / o.height) : std::vector<glm::vec4>{};
+  const std::vector<glm::vec4> direct =
+      image ? method.directOnly(camera, double(o.width) / o.height) : std::vector<glm::vec4>{};
   if (direct.empty()) {
     renderer.show(shown);
     return renderer.render(camera, o.width, o.height, o.supersample);
@@ -177,11 +179,11 @@ std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene
     const GltfFiles gltf = encodeGltf(files, scene, atlas, B, camera, double(o.width) / o.height, scale);
     stageGltf(outputs, files, gltf);
     const Lightmap& map = gltf.map;
-    return fmt::format("hemirad: {}: {} x {} lightmap, {} elements, texel use {:.1f} % (charts with {}-texel gutters "
-                       "{:.1f} %){}\n",
-                       o.gltf, map.width, map.height, map.elements, 100 * map.texelUse(), map.gutter,
-                       100 * map.packing(),
-                       files.exr.empty() ? " (a stream: no .lightmap.exr beside it)" : " and " + files.exr);
+    return fmt::format(
+        "hemirad: {}: {} x {} lightmap, {} elements, texel use {:.1f} % (charts with {}-texel gutters "
+        "{:.1f} %){}\n",
+        o.gltf, map.width, map.height, map.elements, 100 * map.texelUse(), map.gutter, 100 * map.packing(),
+        files.exr.empty() ? " (a stream: no .lightmap.exr beside it)" : " and " + files.exr);
   }
   return "";
 }

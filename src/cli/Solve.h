@@ -28,10 +28,10 @@ struct SolveOptions {
   // so on for --camera-path frames and off for a solve's own images unless given (issue 31).
   std::optional<bool> ambient;
   std::string out, image, atlas, ply, report;
-  std::string gltf;  // OUT.glb, with OUT.lightmap.exr and OUT.lightmap.png beside it
-  std::string checkpoint;           // written every checkpointEvery shots, at the end and on SIGINT/SIGTERM
-  unsigned checkpointEvery = 0;     // 0: only at the end and on a signal
-  std::string resume;               // a checkpoint to continue from
+  std::string gltf;              // OUT.glb, with OUT.lightmap.exr and OUT.lightmap.png beside it
+  std::string checkpoint;        // written every checkpointEvery shots, at the end and on SIGINT/SIGTERM
+  unsigned checkpointEvery = 0;  // 0: only at the end and on a signal
+  std::string resume;            // a checkpoint to continue from
   // A walkthrough instead of one image: frames along the path into walkthrough.framesDir, with
   // frames.csv beside them; the reference is progressive refinement to referenceConvergence.
   std::string cameraPath;

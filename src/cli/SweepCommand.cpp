@@ -55,8 +55,10 @@ int runSweepCommand(const SweepCommandOptions& o) {
     writeSweepDir(dir, sweep);
     writeTextFile(dir + "/sweep.sbatch", script);
     fmt::print("{}", script);
-    fmt::print(stderr, "hemirad sweep {}: {} configurations; submit with: sbatch {}/sweep.sbatch\n"
-               "then, when they are done: hemirad experiment merge {}\n", sweep.name, sweep.configurations.size(), dir, dir);
+    fmt::print(stderr,
+               "hemirad sweep {}: {} configurations; submit with: sbatch {}/sweep.sbatch\n"
+               "then, when they are done: hemirad experiment merge {}\n",
+               sweep.name, sweep.configurations.size(), dir, dir);
     return 0;
   }
   if (!sweep.plotX.empty()) checkPlotting();  // the merge draws results.svg: fail before the solves

@@ -8,10 +8,10 @@
 namespace hemirad {
 
 struct SweepCommandOptions {
-  std::string spec;     // SPEC.json; empty: the seed-004 experiment
-  std::string slurm;    // --slurm DIR
-  std::string outDir;   // --out-dir DIR, for a local run
-  unsigned jobs = 1;    // --jobs
+  std::string spec;        // SPEC.json; empty: the seed-004 experiment
+  std::string slurm;       // --slurm DIR
+  std::string outDir;      // --out-dir DIR, for a local run
+  unsigned jobs = 1;       // --jobs
   std::string dir, index;  // merge DIR, run-task DIR INDEX
 };
 

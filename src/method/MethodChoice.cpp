@@ -1,14 +1,14 @@
 #include "src/method/MethodChoice.h"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 
 #include "src/base/Error.h"
-#include "src/options/Options.h"
 #include "src/method/Registry.h"
+#include "src/options/Options.h"
 
 namespace hemirad {
 
@@ -53,7 +53,8 @@ void MethodChoice::declareFlags(CLI::App* solve) const {
 
 MethodUnit& MethodChoice::choose(const std::string& name, const CLI::App& solve) const {
   auto chosen = std::find_if(methods_.begin(), methods_.end(), [&](const auto& m) { return m->name() == name; });
-  if (chosen == methods_.end()) throw InputError(fmt::format("--method {}: not one of {}", name, fmt::join(names(), ", ")));
+  if (chosen == methods_.end())
+    throw InputError(fmt::format("--method {}: not one of {}", name, fmt::join(names(), ", ")));
   MethodUnit& method = **chosen;
   for (const std::string& flag : flagNames()) {
     const CLI::Option* option = solve.get_option_no_throw(flag);

@@ -4,8 +4,8 @@
 #include <string>
 #include <utility>
 
-#include "src/options/Options.h"
 #include "src/method/MethodUnit.h"
+#include "src/options/Options.h"
 
 namespace hemirad {
 
@@ -20,7 +20,8 @@ MethodFlag bindFlag(const std::string& name, T& field, std::string defaultText =
 // `name` read as text and turned into `field` by `parse` (names of enumerations).
 template <class T, class Parse>
 MethodFlag parseFlag(const std::string& name, T& field, Parse parse, std::string defaultText) {
-  return {name, [&field, parse](const CLI::Option& o) { field = parse(o.as<std::string>()); }, std::move(defaultText), {}};
+  return {
+      name, [&field, parse](const CLI::Option& o) { field = parse(o.as<std::string>()); }, std::move(defaultText), {}};
 }
 
 // A switch: `set` runs when it is given.
@@ -31,8 +32,10 @@ MethodFlag switchFlag(const std::string& name, Set set) {
 
 // --hemisphere, one projection (`all` is validate's).
 inline MethodFlag projectionFlag(Projection& field) {
-  return {"--hemisphere", [&field](const CLI::Option& o) { field = options::oneProjection(o.as<int>()); },
-          options::defaultText("--hemisphere"), {}};
+  return {"--hemisphere",
+          [&field](const CLI::Option& o) { field = options::oneProjection(o.as<int>()); },
+          options::defaultText("--hemisphere"),
+          {}};
 }
 
 // One of solve's own flags (SolveOptions) that this method takes: others refuse it.

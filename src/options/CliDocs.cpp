@@ -41,7 +41,8 @@ std::string command(const CLI::App& app, const CLI::App& cmd) {
       std::vector<std::string> names;
       for (const CLI::Option* other : set) names.push_back(other->get_name());
       std::sort(names.begin(), names.end());
-      if (!names.empty()) relations += fmt::format("{}{} {}", relations.empty() ? "" : "; ", word, fmt::join(names, ", "));
+      if (!names.empty())
+        relations += fmt::format("{}{} {}", relations.empty() ? "" : "; ", word, fmt::join(names, ", "));
     }
     rows += fmt::format("| `{}` | {} | {} | {} | {}{} |\n", name, cell(value), cell(check),
                         o->get_default_str().empty() ? "" : "`" + cell(o->get_default_str()) + "`",
@@ -56,7 +57,8 @@ std::string command(const CLI::App& app, const CLI::App& cmd) {
 // The preset table (src/solver/Presets.h): what each sets, what it is for, how fast and how exact.
 std::string presetSection() {
   std::string md =
-      "## Presets\n\n`--preset NAME` (`solve`, `bench`, `view`, `experiment`, `compare-methods`) starts the item buffer "
+      "## Presets\n\n`--preset NAME` (`solve`, `bench`, `view`, `experiment`, `compare-methods`) starts the item "
+      "buffer "
       "and the shooters from a named plan; `--hemisphere`, `--item-subdiv`, `--item-res` and `--shoot-level` given "
       "beside it override its values, and the report (`solve --report`, `bench --json`) names it (`\"preset\": "
       "\"seed003 with --item-res 256\"`). Without `--preset`, every command uses `fast`. Measured on the Cornell box "

@@ -17,8 +17,8 @@
 #include "src/solver/Presets.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/solver/Projection.h"
-#include "src/solver/Solver.h"
 #include "src/solver/ShootingPlan.h"
+#include "src/solver/Solver.h"
 
 namespace hemirad::options {
 
@@ -125,7 +125,8 @@ CLI::Validator presetChoice() {
       [](std::string& v) {
         for (const Preset& p : presets())
           if (v == p.name) return std::string();
-        return fmt::format("'{}' is not a preset; the presets are {} (the default: {})", v, presetNames(), kDefaultPreset);
+        return fmt::format("'{}' is not a preset; the presets are {} (the default: {})", v, presetNames(),
+                           kDefaultPreset);
       },
       fmt::format("{}", fmt::join(listed, "|")));
 }
@@ -142,11 +143,14 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--texel-size", "SIZE", "Element (texel) side in scene units", positive.description("SIZE > 0")},
       {"--elements", "N", "Choose the texel size for about N elements",
        CLI::Range(std::size_t(1), std::size_t(1) << 28)},
-      {"--chart-angle", "DEG", "Charts join connected polygons of one material and object whose normals lie within DEG degrees "
-       "of the chart's first (0: coplanar ones only; 30: a curved surface's facets join, so its light shows no facets), "
+      {"--chart-angle", "DEG",
+       "Charts join connected polygons of one material and object whose normals lie within DEG degrees "
+       "of the chart's first (0: coplanar ones only; 30: a curved surface's facets join, so its light shows no "
+       "facets), "
        "projected onto one texel grid (docs/design.md#atlas-and-elements)",
        CLI::Range(0.0, 60.0)},
-      {"--scenes", "OBJ", "OBJ scenes; a relative path not found from here is read from the shipped scenes (docs/install.md)", kScene},
+      {"--scenes", "OBJ",
+       "OBJ scenes; a relative path not found from here is read from the shipped scenes (docs/install.md)", kScene},
       // The solver.
       {"--method", "METHOD",
        "Radiosity method: progressive refinement; stochastic iteration (seed 000: --shots iterations of K random "
@@ -156,7 +160,8 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--converge", "C", "Stop at this convergence, 1 - unshot/emitted power", unit},
       {"--shots", "N", "Stop after N shots", kCount, "no limit"},
       {"--item-subdiv", "L", "Item-mesh 1-to-4 subdivision level", kLevel},
-      {"--item-res", "PIXELS|auto", "Item buffer resolution in pixels (the pixel budget's side), or auto: from the element size (the "
+      {"--item-res", "PIXELS|auto",
+       "Item buffer resolution in pixels (the pixel budget's side), or auto: from the element size (the "
        "hemicube, which resolves occluders only, a quarter of that)",
        autoOr(kAutoItemResolution, 16, 16384)},
       {"--hemisphere", "NAME",
@@ -165,8 +170,10 @@ std::vector<Flag> sceneAndSolverFlags() {
        "map r = tan theta/2, = `paraboloid`) or equal-area (Lambert); the disc maps' curved edges need --item-subdiv "
        "3-4; validate: a list, or all",
        projectionChoice()},
-      {"--shoot-level", "K|auto", "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
-       "scene wide (emitters 1/16)", autoOr(kAutoShootLevel, 0, 8)},
+      {"--shoot-level", "K|auto",
+       "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
+       "scene wide (emitters 1/16)",
+       autoOr(kAutoShootLevel, 0, 8)},
       {"--refine-near", "K",
        "A receiver nearer a shooter block than K times the block's side gets the block's quadrants' light one by one, "
        "each from its own origin with exact visibility (hierarchical radiosity's link refinement; 0: off)",
@@ -180,7 +187,8 @@ std::vector<Flag> sceneAndSolverFlags() {
        "Start the item buffer and shooters from a named plan (docs/cli.md#presets): fast (the default: hemicube at "
        "item-mesh level 0, planned shooter blocks and resolution), seed003 (seed 003's orthographic hemisphere, L3, "
        "512^2, level-1 shooting: the default before issue 30, bitwise) or reference (element-by-element shooting, "
-       "hemicube 1024^2); --hemisphere, --item-subdiv, --item-res, --shoot-level and --refine-near given beside it override its "
+       "hemicube 1024^2); --hemisphere, --item-subdiv, --item-res, --shoot-level and --refine-near given beside it "
+       "override its "
        "values",
        presetChoice(), std::string(kDefaultPreset)},
       {"--algorithm", "NAME",
@@ -192,11 +200,13 @@ std::vector<Flag> sceneAndSolverFlags() {
        "Perspective-driven: shots over which the simulated field of view grows from the camera's to the whole "
        "scene after each camera move",
        kCount, "a quarter of the shooter blocks"},
-      {"--shooters-per-pass", "K", fmt::format("Seed 003's batching: the K best blocks shoot in one pass; stochastic "
-                                               "iteration: K random texels an iteration (at most {})",
-                                               kMaxPassShooters),
+      {"--shooters-per-pass", "K",
+       fmt::format("Seed 003's batching: the K best blocks shoot in one pass; stochastic "
+                   "iteration: K random texels an iteration (at most {})",
+                   kMaxPassShooters),
        CLI::Range(1, int(kMaxPassShooters))},
-      {"--seed", "N", "Random seed of stochastic iteration, instant radiosity and the path-traced reference: the "
+      {"--seed", "N",
+       "Random seed of stochastic iteration, instant radiosity and the path-traced reference: the "
        "same seed and backend give bitwise the same result",
        CLI::Range(0u, 0xFFFFFFFFu)},
       {"--transport", "WHAT",
@@ -230,13 +240,14 @@ std::vector<Flag> deviceAndOutputFlags() {
   return {
       // The GL backend.
       {"--backend", "NAME", "GL backend: osmesa, egl or auto",
-       enumeration<gl::BackendKind>({{"osmesa", gl::BackendKind::OSMesa}, {"egl", gl::BackendKind::Egl},
-                                     {"auto", gl::BackendKind::Auto}}),
+       enumeration<gl::BackendKind>(
+           {{"osmesa", gl::BackendKind::OSMesa}, {"egl", gl::BackendKind::Egl}, {"auto", gl::BackendKind::Auto}}),
        "osmesa"},
       {"--gpu", "INDEX", "EGL device index", CLI::Range(0, 1023), "the first hardware device"},
       {"--gl-debug", "", "Report GL errors through KHR_debug", none},
       // Cameras and images.
-      {"--camera", "CAMERA", "eye=x,y,z,target=x,y,z,up=x,y,z,fov=degrees", none, "SCENE.camera, else the framed bounds"},
+      {"--camera", "CAMERA", "eye=x,y,z,target=x,y,z,up=x,y,z,fov=degrees", none,
+       "SCENE.camera, else the framed bounds"},
       {"--width", "PIXELS", "Image (or window) width", kPixels},
       {"--height", "PIXELS", "Image (or window) height", kPixels},
       {"--supersample", "N", "Samples per pixel side", CLI::Range(1, 8)},
@@ -249,7 +260,8 @@ std::vector<Flag> deviceAndOutputFlags() {
        oneOf(std::map<std::string, bool>{{"on", true}, {"off", false}}, "on|off"), "on"},
       // Outputs.
       {"--out", "FILE", "Camera render: linear (.exr), or tone-mapped like --image (.png)", none},
-      {"--out-dir", "DIR", "Folder for the CSVs, summary and plots (default: a new ./hemirad-COMMAND, never an earlier run's)", none},
+      {"--out-dir", "DIR",
+       "Folder for the CSVs, summary and plots (default: a new ./hemirad-COMMAND, never an earlier run's)", none},
       {"--image", "FILE", "Tone-mapped camera render (.png)", none},
       {"--atlas", "FILE", "Radiosity atlas, one texel per element (.exr)", none},
       {"--ply", "FILE", "Mesh with per-vertex radiosity (.ply)", none},
@@ -306,8 +318,8 @@ std::vector<Flag> frameAndCommandFlags() {
       {"--shooters", "N|all", "Shooter elements: a count spread over the scene, or all",
        CLI::Validator(
            [](std::string& s) {
-             return s == "all" || (!s.empty() && s.size() < 10 && s.find_first_not_of("0123456789") == std::string::npos &&
-                                   std::stoul(s) > 0)
+             return s == "all" || (!s.empty() && s.size() < 10 &&
+                                   s.find_first_not_of("0123456789") == std::string::npos && std::stoul(s) > 0)
                         ? std::string()
                         : "must be a count or 'all'";
            },
@@ -317,8 +329,7 @@ std::vector<Flag> frameAndCommandFlags() {
        "Figures for papers: column (3.5 x 2.6 in), page (7 x 4.2 in) or W,H in inches; fonts embedded, titles in "
        "the metadata, not drawn",
        none, "6.4,4.2 (maps 6.4,5.4)"},
-      {"--solution", "", "Also compare a converged GPU solution with the dense exact one (up to 5,000 elements)",
-       none},
+      {"--solution", "", "Also compare a converged GPU solution with the dense exact one (up to 5,000 elements)", none},
       // bench.
       {"--split-shots", "N", "Shots timed pass by pass for the split", CLI::Range(1u, 1u << 20)},
       {"--atlas-sides", "N", "Stochastic iteration: a row per atlas side, the texel size chosen to fill it",
@@ -338,8 +349,7 @@ std::vector<Flag> frameAndCommandFlags() {
        none},
       {"--scene", "SCENE", "The scene both images show: its edges and creases, traced from --camera, give the regions",
        kScene},
-      {"--error-map", "FILE", "The signed relative error per pixel (.png): red where A is brighter, blue darker",
-       none},
+      {"--error-map", "FILE", "The signed relative error per pixel (.png): red where A is brighter, blue darker", none},
       {"--error-range", "F", "The error map's full colour: a relative error of F",
        number([](double x) { return x > 0; }, "> 0", "must be above 0")},
       {"--ceiling", "",
@@ -351,7 +361,8 @@ std::vector<Flag> frameAndCommandFlags() {
 
 std::vector<Flag> makeTable() {
   std::vector<Flag> flags = sceneAndSolverFlags();
-  for (auto part : {deviceAndOutputFlags(), frameAndCommandFlags()}) flags.insert(flags.end(), part.begin(), part.end());
+  for (auto part : {deviceAndOutputFlags(), frameAndCommandFlags()})
+    flags.insert(flags.end(), part.begin(), part.end());
   return flags;
 }
 
@@ -397,13 +408,15 @@ CLI::Option* declare(CLI::App* cmd, const std::string& name, const std::string& 
 namespace {
 
 std::string autoText(int value, int autoValue) {
-  return fmt::format("{} (preset {})", value == autoValue ? std::string("auto") : std::to_string(value), kDefaultPreset);
+  return fmt::format("{} (preset {})", value == autoValue ? std::string("auto") : std::to_string(value),
+                     kDefaultPreset);
 }
 
 }  // namespace
 
 std::string defaultText(const std::string& flag) {
-  if (flag == "--hemisphere") return fmt::format("{} (preset {})", projectionName(kFastPlan.projection), kDefaultPreset);
+  if (flag == "--hemisphere")
+    return fmt::format("{} (preset {})", projectionName(kFastPlan.projection), kDefaultPreset);
   if (flag == "--item-subdiv") return fmt::format("{} (preset {})", kFastPlan.itemSubdivision, kDefaultPreset);
   if (flag == "--item-res") return autoText(kFastPlan.itemResolution, kAutoItemResolution);
   if (flag == "--shoot-level") return autoText(kFastPlan.shootLevel, kAutoShootLevel);
@@ -411,7 +424,8 @@ std::string defaultText(const std::string& flag) {
   throw std::logic_error(flag + " is not set by a preset");
 }
 
-void applyPreset(ProgressiveSettings& p, const std::string& name, const std::function<bool(const std::string&)>& given) {
+void applyPreset(ProgressiveSettings& p, const std::string& name,
+                 const std::function<bool(const std::string&)>& given) {
   const ItemPlan before = p.plan();  // a flag given beside the preset may already be stored
   p.usePreset(name);
   if (given("--hemisphere")) p.projection = before.projection;

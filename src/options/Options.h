@@ -21,10 +21,13 @@ namespace hemirad::options {
 
 struct Flag {
   Flag(std::string name, std::string value, std::string help, CLI::Validator check, std::string defaultText = {})
-      : name(std::move(name)), value(std::move(value)), help(std::move(help)), check(std::move(check)),
+      : name(std::move(name)),
+        value(std::move(value)),
+        help(std::move(help)),
+        check(std::move(check)),
         defaultText(std::move(defaultText)) {}
-  std::string name;         // "--texel-size"
-  std::string value;        // what it takes, "SIZE"; empty for a switch
+  std::string name;   // "--texel-size"
+  std::string value;  // what it takes, "SIZE"; empty for a switch
   std::string help;
   CLI::Validator check;     // the one check of its values (each item of a list)
   std::string defaultText;  // shown instead of the bound field's value (enumerations)
@@ -34,8 +37,10 @@ const std::vector<Flag>& table();
 const Flag& flag(const std::string& name);  // std::logic_error for a name not in the table
 
 namespace detail {
-template <class T> struct IsList : std::false_type {};
-template <class T> struct IsList<std::vector<T>> : std::true_type {};
+template <class T>
+struct IsList : std::false_type {};
+template <class T>
+struct IsList<std::vector<T>> : std::true_type {};
 CLI::Option* finish(CLI::Option* option, const Flag& flag, bool list, const std::string& defaultText);
 }  // namespace detail
 
@@ -50,8 +55,7 @@ CLI::Option* addSwitch(CLI::App* cmd, const std::string& name, bool& target);
 // Adds the table's flag `name` to `cmd` unbound: whoever takes it reads its value after parsing
 // (CLI::Option::results), as the radiosity methods do (src/method/MethodUnit.h). The default
 // shown: `defaultText`, else the table's, else `value` (the taker's initial value).
-CLI::Option* declare(CLI::App* cmd, const std::string& name, const std::string& defaultText,
-                     const std::string& value);
+CLI::Option* declare(CLI::App* cmd, const std::string& name, const std::string& defaultText, const std::string& value);
 // One of `names` (any case), for a flag whose names are known only above this library (--method).
 CLI::Validator oneOfNames(const std::vector<std::string>& names);
 // What --hemisphere all stores (validate: every projection); a name stores its Projection.

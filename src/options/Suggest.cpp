@@ -29,7 +29,9 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 }
 
 std::string closest(const std::string& name, const std::vector<std::string>& candidates) {
-  auto bare = [](const std::string& s) { return std::string_view(s).substr(std::min(s.find_first_not_of('-'), s.size())); };
+  auto bare = [](const std::string& s) {
+    return std::string_view(s).substr(std::min(s.find_first_not_of('-'), s.size()));
+  };
   const std::string_view n = bare(name);
   const std::size_t slack = std::max<std::size_t>(2, n.size() / 3);
   std::string best;

@@ -74,7 +74,8 @@ bool better(const Packed& a, const Packed& b) {
 Packed bestStrip(const std::vector<glm::ivec2>& sizes, int trim, double maxAspect, Candidate& bestCandidate) {
   double area = 0;
   for (glm::ivec2 s : sizes) area += double(s.x) * s.y;
-  const int widths = int(std::clamp(kPlacements / (6.0 * double(sizes.size())), double(kLeastWidths), double(kWidthsPerTurn)));
+  const int widths =
+      int(std::clamp(kPlacements / (6.0 * double(sizes.size())), double(kLeastWidths), double(kWidthsPerTurn)));
   Packed best;
   for (int turn = 0; turn < 3; ++turn) {
     Candidate c;
@@ -122,7 +123,8 @@ ChartLayout packCharts(const std::vector<glm::ivec2>& sizes, int trim, double ma
       if (sizes[i].x == sizes[i].y) continue;
       Candidate c = bestCandidate;
       c.transposed[i] = !c.transposed[i];
-      if (Packed p = packStrip(sizes, c, trim, maxAspect); better(p, best)) best = std::move(p), bestCandidate = std::move(c);
+      if (Packed p = packStrip(sizes, c, trim, maxAspect); better(p, best))
+        best = std::move(p), bestCandidate = std::move(c);
     }
   return best.layout;
 }

@@ -11,9 +11,9 @@
 namespace hemirad {
 
 struct ChartLayout {
-  int width = 0, height = 0;          // the image, trimmed
-  std::vector<glm::ivec2> corners;    // per rectangle: its lower corner in the image (-trim..: partly cut away)
-  std::vector<char> transposed;       // per rectangle: placed with x and y swapped
+  int width = 0, height = 0;        // the image, trimmed
+  std::vector<glm::ivec2> corners;  // per rectangle: its lower corner in the image (-trim..: partly cut away)
+  std::vector<char> transposed;     // per rectangle: placed with x and y swapped
 };
 
 // `sizes` are the charts with their gutters; trimmed sides stay no longer than `maxAspect`

@@ -8,8 +8,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -89,8 +89,12 @@ void Figures::add(const std::string& stem, const LinePlot& plot) {
   nlohmann::json series = nlohmann::json::array();
   for (const PlotSeries& s : plot.series) series.push_back({{"label", s.label}, {"x", s.x}, {"y", s.y}});
   stems_.push_back(stem);
-  specs_.push_back(nlohmann::json{{"kind", "lines"}, {"title", plot.title}, {"x_label", plot.xLabel},
-                                  {"y_label", plot.yLabel}, {"log_x", plot.logX}, {"log_y", plot.logY},
+  specs_.push_back(nlohmann::json{{"kind", "lines"},
+                                  {"title", plot.title},
+                                  {"x_label", plot.xLabel},
+                                  {"y_label", plot.yLabel},
+                                  {"log_x", plot.logX},
+                                  {"log_y", plot.logY},
                                   {"series", series}});
 }
 
@@ -104,8 +108,8 @@ void Figures::add(const std::string& stem, const HeatMap& map) {
     }
     rows.push_back(std::move(row));
   }
-  nlohmann::json spec{{"kind", "heatmap"}, {"title", map.title}, {"values", rows}, {"colour_label", map.colourLabel},
-                      {"log", map.log}, {"vmin", map.vmin}, {"vmax", map.vmax}};
+  nlohmann::json spec{{"kind", "heatmap"}, {"title", map.title}, {"values", rows},  {"colour_label", map.colourLabel},
+                      {"log", map.log},    {"vmin", map.vmin},   {"vmax", map.vmax}};
   if (!map.classes.empty()) {
     spec["classes"] = nlohmann::json::array();
     for (const auto& [label, colour] : map.classes) spec["classes"].push_back({{"label", label}, {"colour", colour}});
@@ -123,8 +127,10 @@ void Figures::write() {
   for (std::size_t i = 0; i < stems_.size(); ++i) {
     nlohmann::json& spec = specs_[i];
     spec["provenance"] = provenance;
-    if (size_.width > 0) spec["size"] = {size_.width, size_.height};
-    else spec["size"] = spec["kind"] == "heatmap" ? nlohmann::json{6.4, 5.4} : nlohmann::json{6.4, 4.2};
+    if (size_.width > 0)
+      spec["size"] = {size_.width, size_.height};
+    else
+      spec["size"] = spec["kind"] == "heatmap" ? nlohmann::json{6.4, 5.4} : nlohmann::json{6.4, 4.2};
     for (const char* ext : {"svg", "pdf"}) {
       const std::string path = stems_[i] + "." + ext;
       renames.emplace_back(tempName(path), path);

@@ -6,11 +6,11 @@
 #include <cctype>
 #include <cstring>
 #include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <numeric>
 #include <sstream>
 #include <utility>
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
@@ -67,7 +67,8 @@ void addPolygon(Streams& s, const Scene& scene, const Atlas& atlas, const Lightm
     s.uv0.insert(s.uv0.end(), {float(plane.x / scene.unitScale), float(plane.y / scene.unitScale)});
     s.uv1.insert(s.uv1.end(), {float(uv.x), float(uv.y)});
   }
-  for (std::uint32_t k = 1; k + 1 < p.vertices.size(); ++k) s.indices.insert(s.indices.end(), {first, first + k, first + k + 1});
+  for (std::uint32_t k = 1; k + 1 < p.vertices.size(); ++k)
+    s.indices.insert(s.indices.end(), {first, first + k, first + k + 1});
 }
 
 tinygltf::Primitive primitive(tinygltf::Model& m, const Streams& s, int material) {
@@ -77,7 +78,8 @@ tinygltf::Primitive primitive(tinygltf::Model& m, const Streams& s, int material
   const int position = addFloats(m, s.position, 3, TINYGLTF_TYPE_VEC3);
   for (int c = 0; c < 3; ++c) {  // POSITION needs its bounds
     double lo = 1e300, hi = -1e300;
-    for (std::size_t i = std::size_t(c); i < s.position.size(); i += 3) lo = std::min(lo, double(s.position[i])), hi = std::max(hi, double(s.position[i]));
+    for (std::size_t i = std::size_t(c); i < s.position.size(); i += 3)
+      lo = std::min(lo, double(s.position[i])), hi = std::max(hi, double(s.position[i]));
     m.accessors[std::size_t(position)].minValues.push_back(lo);
     m.accessors[std::size_t(position)].maxValues.push_back(hi);
   }
@@ -90,7 +92,9 @@ tinygltf::Primitive primitive(tinygltf::Model& m, const Streams& s, int material
   return prim;
 }
 
-tinygltf::Value rgb(const glm::dvec3& c) { return tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(c.x), tinygltf::Value(c.y), tinygltf::Value(c.z)}); }
+tinygltf::Value rgb(const glm::dvec3& c) {
+  return tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(c.x), tinygltf::Value(c.y), tinygltf::Value(c.z)});
+}
 
 // The albedo as base colour, the lightmap as emission through TEXCOORD_1 (what a viewer with no
 // lights shows: the solution as hemirad's camera image has it); rho and E exactly in extras, which
@@ -129,8 +133,9 @@ void addCamera(tinygltf::Model& m, const Scene& scene, const Camera& camera, dou
   double farthest = 0;
   for (int k = 0; k < 8; ++k)
     farthest = std::max(farthest, glm::length(glm::dvec3(k & 1 ? scene.boundsMax().x : scene.boundsMin().x,
-                                                          k & 2 ? scene.boundsMax().y : scene.boundsMin().y,
-                                                          k & 4 ? scene.boundsMax().z : scene.boundsMin().z) - camera.eye));
+                                                         k & 2 ? scene.boundsMax().y : scene.boundsMin().y,
+                                                         k & 4 ? scene.boundsMax().z : scene.boundsMin().z) -
+                                              camera.eye));
   cam.perspective.zfar = std::max(2 * farthest, 2 * cam.perspective.znear) / scene.unitScale;  // the file's units
   cam.perspective.znear /= scene.unitScale;
   m.cameras.push_back(cam);

@@ -27,7 +27,7 @@ InstantRenderer::InstantRenderer(const Scene& scene, const VplTracer& tracer, co
       filter_(computeProgram("instant_filter.comp")) {
   const float far = float(2.0 * tracer.sceneDiagonal() + 1e-6);
   float maxGeometry = float(1.0 / std::pow(settings.clamp * tracer.sceneDiagonal(), 2.0));
-  if (settings.clamp <= 0) maxGeometry = 3.4e38f;  // no clamp
+  if (settings.clamp <= 0) maxGeometry = 3.4e38f;                     // no clamp
   const std::vector<ItemVertex> triangles = buildItemMesh(scene, 0);  // the polygons, fanned
   sceneVertexCount_ = triangles.size();
   sceneVertices_ = gl::Buffer(std::span<const ItemVertex>(triangles));
@@ -69,7 +69,8 @@ void InstantRenderer::resize(int width, int height) {
 void InstantRenderer::gBuffer(const Camera& camera, const glm::mat4& vp) {
   const Camera::PixelRays rays = camera.pixelRays(width_, height_);
   for (const gl::Program* p : {&forward_, &deferred_}) {
-    for (auto [name, v] : {std::pair{"eye", camera.eye}, {"rayCorner", rays.corner}, {"rayDx", rays.dx}, {"rayDy", rays.dy}})
+    for (auto [name, v] :
+         {std::pair{"eye", camera.eye}, {"rayCorner", rays.corner}, {"rayDx", rays.dx}, {"rayDy", rays.dy}})
       p->set(name, float(v.x), float(v.y), float(v.z));
   }
   gTarget_.clearColor(std::uint32_t(0));

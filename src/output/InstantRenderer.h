@@ -60,7 +60,7 @@ class InstantRenderer {
   gl::VertexArray sceneVao_;
   std::size_t sceneVertexCount_ = 0;
   int width_ = 0, height_ = 0;
-  glm::ivec2 sub_{0};  // a de-interleaved block: ceil(size / n)
+  glm::ivec2 sub_{0};                                        // a de-interleaved block: ceil(size / n)
   gl::Texture color_, shaded_, filtered_, polygon_, depth_;  // polygon_: the G-buffer (id + 1)
   gl::Framebuffer colorTarget_, gTarget_;
 };

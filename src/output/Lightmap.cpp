@@ -46,7 +46,8 @@ void dilate(glm::ivec2 size, std::vector<glm::vec3>& value, std::vector<char>& f
           break;
         }
       }
-    for (std::size_t i = 0; i < next.size(); ++i) value[at(next[i].x, next[i].y)] = values[i], filled[at(next[i].x, next[i].y)] = 1;
+    for (std::size_t i = 0; i < next.size(); ++i)
+      value[at(next[i].x, next[i].y)] = values[i], filled[at(next[i].x, next[i].y)] = 1;
     std::swap(frontier, next);
   }
 }
@@ -94,7 +95,8 @@ glm::dvec2 Lightmap::uv(const Atlas& atlas, int polygon, glm::dvec2 atlasCoord) 
 }
 
 Lightmap buildLightmap(const Atlas& atlas, const std::vector<glm::vec4>& B, const LightmapOptions& options) {
-  if (B.size() != atlas.polygonOf.size()) fail("lightmap: {} radiosity texels for a {} texel atlas", B.size(), atlas.polygonOf.size());
+  if (B.size() != atlas.polygonOf.size())
+    fail("lightmap: {} radiosity texels for a {} texel atlas", B.size(), atlas.polygonOf.size());
   const int g = std::max(0, options.gutter);
   std::vector<glm::ivec2> padded;
   for (const Chart& c : atlas.charts) padded.push_back(c.size + 2 * g);

@@ -12,13 +12,13 @@ namespace hemirad {
 
 struct LightmapVertex {
   float position[3];
-  float uv[2];             // lightmap coordinates (glTF's TEXCOORD_1: v runs down the image)
-  std::uint32_t surface;   // which planar surface the triangle lies on
+  float uv[2];            // lightmap coordinates (glTF's TEXCOORD_1: v runs down the image)
+  std::uint32_t surface;  // which planar surface the triangle lies on
 };
 
 struct LightmapRender {
-  Image image;                // linear RGB, rows top to bottom
-  std::vector<int> surface;   // per pixel: the surface all its samples show; -1 where they differ (edges), -2 none
+  Image image;               // linear RGB, rows top to bottom
+  std::vector<int> surface;  // per pixel: the surface all its samples show; -1 where they differ (edges), -2 none
 };
 
 // Draws `triangles` (3 vertices each) from `camera` at width x height, `supersample` x that

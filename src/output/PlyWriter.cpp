@@ -3,8 +3,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <map>
+#include <sstream>
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
@@ -34,8 +34,9 @@ std::string encodePly(const Scene& scene, const Atlas& atlas, const std::vector<
       for (const Poly3& piece : atlas.elementShape(scene, x, y)) {  // a face per piece
         std::vector<std::uint32_t> face;
         for (const glm::dvec3& p : piece) {
-          auto key = std::make_pair(chart, std::array<long long, 3>{std::llround(p.x / quantum), std::llround(p.y / quantum),
-                                                                    std::llround(p.z / quantum)});
+          auto key =
+              std::make_pair(chart, std::array<long long, 3>{std::llround(p.x / quantum), std::llround(p.y / quantum),
+                                                             std::llround(p.z / quantum)});
           auto [it, added] = welded.try_emplace(key, std::uint32_t(vertices.size()));
           if (added) {
             glm::vec3 b = atlas.sample(B, int(polygon), atlas.atlasCoord(int(polygon), p));

@@ -34,7 +34,10 @@ int terminalColumns() {
 }
 
 Progress::Progress(const StopRule& stop, bool enabled)
-    : stop_(stop), enabled_(enabled), tty_(enabled && isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()),
+    : stop_(stop),
+      enabled_(enabled),
+      tty_(enabled && isatty(STDERR_FILENO)),
+      start_(std::chrono::steady_clock::now()),
       lastDraw_(start_) {}
 
 double Progress::elapsedSeconds() const {

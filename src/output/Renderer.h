@@ -6,9 +6,9 @@
 
 #include "gl/Objects.h"
 #include "src/output/DirectLight.h"
+#include "src/output/Image.h"
 #include "src/scene/Camera.h"
 #include "src/solver/CameraMesh.h"
-#include "src/output/Image.h"
 #include "src/solver/SolverState.h"
 
 namespace hemirad {

@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "src/base/AtomicFile.h"
-#include "src/output/Provenance.h"
 #include "src/base/Error.h"
+#include "src/output/Provenance.h"
 
 namespace hemirad {
 
@@ -65,12 +65,11 @@ nlohmann::json reportJson(const RunInfo& r) {
   if (!r.projection.empty()) report["projection"] = r.projection;
   if (!r.direct.empty()) report["direct"] = r.direct;
   if (r.direct == "per-pixel")
-    report["direct_ms"] = {{"total", r.directSplitMs + r.directPixelsMs}, {"split", r.directSplitMs}, {"pixels", r.directPixelsMs}};
+    report["direct_ms"] = {
+        {"total", r.directSplitMs + r.directPixelsMs}, {"split", r.directSplitMs}, {"pixels", r.directPixelsMs}};
   return report;
 }
 
-void writeReport(const std::string& path, const RunInfo& run) {
-  writeTextFile(path, reportJson(run).dump(2) + "\n");
-}
+void writeReport(const std::string& path, const RunInfo& run) { writeTextFile(path, reportJson(run).dump(2) + "\n"); }
 
 }  // namespace hemirad

@@ -21,7 +21,7 @@ struct RunInfo {
   // per-pixel's cost: the emitters-only solve (src/solver/DirectSplit.h) and the camera render.
   std::string direct;
   double directSplitMs = 0, directPixelsMs = 0;
-  double refineNear = 0;  // progressive: receivers nearer than this many shooter sides see its parts
+  double refineNear = 0;         // progressive: receivers nearer than this many shooter sides see its parts
   unsigned importanceShots = 0;  // importance-driven solves
   unsigned deliveryShots = 0;    // perspective-driven solves: item buffers that delivered stored entries
   unsigned fovDecayShots = 0;    // ... and their decay interval

@@ -38,7 +38,8 @@ Taps tapsAt(const Atlas& atlas, int polygon, glm::dvec3 p) {
     if (atlas.chartAt(index) != chart) continue;
     t.texel[std::size_t(t.count)] = index, t.weight[std::size_t(t.count)] = w, ++t.count, sum += w;
   }
-  for (int k = 0; k < t.count; ++k) t.weight[std::size_t(k)] /= sum, t.norm2 += t.weight[std::size_t(k)] * t.weight[std::size_t(k)];
+  for (int k = 0; k < t.count; ++k)
+    t.weight[std::size_t(k)] /= sum, t.norm2 += t.weight[std::size_t(k)] * t.weight[std::size_t(k)];
   return t;
 }
 
@@ -66,8 +67,10 @@ std::vector<SharedEdge> sharedEdges(const Scene& scene) {
       const Poly3& v = scene.polygons()[p].vertices;
       glm::dvec3 a(0.0), b(0.0);
       for (std::size_t i = 0; i < v.size(); ++i)
-        if (w.ids[p][i] == edge.first) a = v[i];
-        else if (w.ids[p][i] == edge.second) b = v[i];
+        if (w.ids[p][i] == edge.first)
+          a = v[i];
+        else if (w.ids[p][i] == edge.second)
+          b = v[i];
       out.push_back({ps[0], ps[1], a, b});
     }
   return out;
@@ -99,7 +102,8 @@ glm::dvec3 sampleOf(const Taps& t, const std::vector<glm::vec4>& values) {
 void shift(const Taps& t, glm::dvec3 delta, std::vector<glm::vec4>& values) {
   for (int k = 0; k < t.count; ++k) {
     glm::vec4& v = values[t.texel[std::size_t(k)]];
-    v = glm::vec4(glm::max(glm::vec3(glm::dvec3(v) + delta * (t.weight[std::size_t(k)] / t.norm2)), glm::vec3(0.0f)), v.a);
+    v = glm::vec4(glm::max(glm::vec3(glm::dvec3(v) + delta * (t.weight[std::size_t(k)] / t.norm2)), glm::vec3(0.0f)),
+                  v.a);
   }
 }
 

@@ -31,8 +31,8 @@ class VplShadowMaps {
   gl::Buffer vertices_, indices_;
   gl::VertexArray vao_;
   std::size_t indexCount_ = 0;
-  gl::Texture depth_;               // shared: only the draw needs it
-  std::vector<gl::Texture> ids_;    // per batch
+  gl::Texture depth_;             // shared: only the draw needs it
+  std::vector<gl::Texture> ids_;  // per batch
   std::vector<gl::Framebuffer> targets_;
   bool rendered_ = false;
 };

@@ -7,8 +7,11 @@
 namespace hemirad {
 
 BatchStatistics::BatchStatistics(int width, int height, unsigned samplesPerBatch)
-    : width_(width), height_(height), samplesPerBatch_(samplesPerBatch),
-      sum_(std::size_t(width) * height, glm::dvec4(0.0)), squares_(sum_) {}
+    : width_(width),
+      height_(height),
+      samplesPerBatch_(samplesPerBatch),
+      sum_(std::size_t(width) * height, glm::dvec4(0.0)),
+      squares_(sum_) {}
 
 void BatchStatistics::add(const std::vector<glm::vec4>& sums) {
   for (std::size_t p = 0; p < sum_.size(); ++p) {

@@ -23,7 +23,7 @@ class BatchStatistics {
  public:
   BatchStatistics(int width, int height, unsigned samplesPerBatch);
   void add(const std::vector<glm::vec4>& sums);  // one batch's per-pixel sums of its paths
-  ReferenceEstimate estimate() const;             // needs two batches
+  ReferenceEstimate estimate() const;            // needs two batches
   unsigned batches() const { return batches_; }
 
  private:

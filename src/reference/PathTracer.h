@@ -17,8 +17,8 @@
 namespace hemirad {
 
 struct ReferenceSettings {
-  unsigned samples = 64;   // paths per pixel, over all batches (--spp): seconds on llvmpipe at 128^2
-  unsigned batches = 16;   // independent batches: the standard error's degrees of freedom + 1
+  unsigned samples = 64;  // paths per pixel, over all batches (--spp): seconds on llvmpipe at 128^2
+  unsigned batches = 16;  // independent batches: the standard error's degrees of freedom + 1
   unsigned seed = 0;
   int width = 128, height = 128;
 };

@@ -51,8 +51,8 @@ std::vector<PixelHit> traceCentres(const Scene& scene, const Camera& camera, int
       const ScenePolygon& poly = scene.polygons()[hit->polygon];
       polygon[p] = hit->polygon;
       // A pixel spans |dy| / |ray| radians; on a surface seen at a grazing angle, more.
-      const double footprint = hit->t * glm::length(rays.dy) / glm::length(ray) /
-                               std::max(std::abs(glm::dot(poly.normal, d)), 0.2);
+      const double footprint =
+          hit->t * glm::length(rays.dy) / glm::length(ray) / std::max(std::abs(glm::dot(poly.normal, d)), 0.2);
       hits[p] = {surface[hit->polygon], camera.eye + double(hit->t) * d, poly.normal,
                  glm::dot(poly.normal, poly.vertices[0]), footprint};
     }

@@ -52,8 +52,7 @@ int runReference(const ReferenceOptions& o) {
   const bool terminal = isatty(STDERR_FILENO);  // a batch counter for long runs, never in logs
   tracer.render(camera, s, [&](const std::vector<glm::vec4>& sums) {
     statistics.add(sums);
-    if (terminal)
-      fmt::print(stderr, "\rhemirad: reference: batch {} of {}", statistics.batches(), s.batches);
+    if (terminal) fmt::print(stderr, "\rhemirad: reference: batch {} of {}", statistics.batches(), s.batches);
   });
   if (terminal) fmt::print(stderr, "\n");
   const ReferenceEstimate e = statistics.estimate();

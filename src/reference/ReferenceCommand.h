@@ -22,7 +22,7 @@ struct ReferenceOptions {
 };
 
 struct CompareOptions {
-  std::string a, b;  // A is judged against B (the reference)
+  std::string a, b;   // A is judged against B (the reference)
   std::string scene;  // the scene and camera both images show: their regions
   LoadOptions load;
   std::optional<std::string> camera;

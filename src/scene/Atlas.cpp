@@ -31,7 +31,7 @@ struct ChartShape {
   ChartGroup group;
   PlaneFrame frame;
   std::vector<Poly2> parts;  // the group's parts in plane coordinates
-  glm::dvec2 corner;          // lower-left of the texel grid
+  glm::dvec2 corner;         // lower-left of the texel grid
   glm::ivec2 size;
 };
 
@@ -128,8 +128,10 @@ std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, d
     const double a = signedArea(cut) / (c.group.planar ? 1.0 : glm::dot(c.frame.n, on.normal));
     const glm::dvec3 centre = liftOnto(c.frame, c.group.planar, on, centroid(cut));
     ElementSum& e = cells[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
-    if (e.pieces++ == 0) e.firstCentre = centre, e.area = a;
-    else e.area += a;
+    if (e.pieces++ == 0)
+      e.firstCentre = centre, e.area = a;
+    else
+      e.area += a;
     e.centre += a * centre;
     e.normal += a * (c.group.planar ? on.normal : smoothNormalAt(on, smooth[std::size_t(poly)], centre));
     if (a > e.largest) e.largest = a, e.polygon = poly;
@@ -161,7 +163,7 @@ struct Layout {
   bool packed = false;           // within maxSize on both sides
   double width = 0, height = 0;  // texels (if not packed: as far as packing got)
   std::vector<glm::ivec2> origins;
-  std::vector<char> turned;      // per chart: placed a quarter turned (turnQuarter)
+  std::vector<char> turned;  // per chart: placed a quarter turned (turnQuarter)
 };
 
 // src/scene/AtlasPacker.h, after a cheap bound: charts over maxSize^2 texels are not packed.
@@ -195,17 +197,20 @@ double hostMemoryBytes() {
   std::string limit = !l.packed ? fmt::format("over the GPU's limit of {} texels a side (GL_MAX_TEXTURE_SIZE)", maxSize)
                                 : fmt::format("{} of memory, over the memory limit of {}",
                                               bytesText(texels * kBytesPerTexel), bytesText(maxBytes));
-  double fit = ts * std::sqrt(std::max({1.0, texels / (double(maxSize) * maxSize), texels * kBytesPerTexel / maxBytes}));
+  double fit =
+      ts * std::sqrt(std::max({1.0, texels / (double(maxSize) * maxSize), texels * kBytesPerTexel / maxBytes}));
   for (int i = 0; i < 200 && !fits(pack(chartShapes(groups, fit), maxSize), maxBytes); ++i) fit *= 1.05;
   // Shown to four digits, rounded up: rounded down it may not fit (a unit square at 64 texels).
   const double shown = fit / scene.unitScale, unit = std::pow(10.0, std::floor(std::log10(shown)) - 3);
   fit = std::ceil(shown / unit) * unit * scene.unitScale;
   double elements = scene.totalArea() / (fit * fit);
   double digits = std::pow(10.0, std::floor(std::log10(std::max(elements, 1.0))) - 1);  // two significant
-  fail("texel size {:.4g} needs a {:.0f} x {:.0f} texel atlas, {}; use --texel-size {:.4g} or larger (or --elements {:.0f} "
-       "or fewer)",
-       ts / scene.unitScale, l.width, l.height, limit, std::ceil(shown / unit) * unit,
-       std::max(1.0, std::floor(elements / digits) * digits));
+  fail(
+      "texel size {:.4g} needs a {:.0f} x {:.0f} texel atlas, {}; use --texel-size {:.4g} or larger (or --elements "
+      "{:.0f} "
+      "or fewer)",
+      ts / scene.unitScale, l.width, l.height, limit, std::ceil(shown / unit) * unit,
+      std::max(1.0, std::floor(elements / digits) * digits));
 }
 
 // Writes chart c's elements into the atlas.
@@ -288,7 +293,8 @@ double texelSizeForElements(const Scene& scene, std::size_t elements, double cha
   for (auto& p : scene.polygons())
     for (auto& v : p.vertices) ts = std::max(ts, glm::length(v - p.vertices.front()) / double(elements));
   // Partial texels add elements; a few fixed-point steps on the real count settle it.
-  const std::vector<ChartGroup> groups = elements <= kMaxCountedElements ? groupCharts(scene, chartAngle) : std::vector<ChartGroup>{};
+  const std::vector<ChartGroup> groups =
+      elements <= kMaxCountedElements ? groupCharts(scene, chartAngle) : std::vector<ChartGroup>{};
   for (int iter = 0; iter < 4 && elements <= kMaxCountedElements; ++iter) {
     size_t count = 0;
     for (auto& g : groups) count += countElements(chartShape(g, ts), ts);

@@ -41,9 +41,9 @@ class Atlas {
  public:
   double texelSize = 0;
   int width = 0, height = 0;
-  std::vector<Chart> charts;                // index = chart id
-  std::vector<std::uint32_t> chartOf;       // per polygon: its chart
-  std::vector<glm::vec4> positionArea;      // per atlas texel: centre xyz, area (0: no element)
+  std::vector<Chart> charts;            // index = chart id
+  std::vector<std::uint32_t> chartOf;   // per polygon: its chart
+  std::vector<glm::vec4> positionArea;  // per atlas texel: centre xyz, area (0: no element)
   // Per atlas texel: the polygon with the element's largest piece, or kNoPolygon (material and
   // object are per chart, so lookups through it are the element's).
   std::vector<std::uint32_t> polygonOf;

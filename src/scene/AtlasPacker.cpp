@@ -22,8 +22,14 @@ class Skyline {
     return {x, y, byX_.at(x).w};
   }
   // Neighbours' heights of the segment at x (INT_MAX: the strip's edge).
-  int leftY(int x) const { auto it = byX_.find(x); return it == byX_.begin() ? INT_MAX : std::prev(it)->second.y; }
-  int rightY(int x) const { auto it = std::next(byX_.find(x)); return it == byX_.end() ? INT_MAX : it->second.y; }
+  int leftY(int x) const {
+    auto it = byX_.find(x);
+    return it == byX_.begin() ? INT_MAX : std::prev(it)->second.y;
+  }
+  int rightY(int x) const {
+    auto it = std::next(byX_.find(x));
+    return it == byX_.end() ? INT_MAX : it->second.y;
+  }
   // Raises the segment at x by h over [x + offset, x + offset + w), merging equal neighbours.
   void place(int x, int offset, int w, int h) {
     const Segment s = byX_.at(x);
@@ -82,7 +88,9 @@ void addFits(std::set<Fit>& fits, glm::ivec2 s, int id) {
   fits.insert({s.x, s.y, -id, 0});
   if (s.x != s.y) fits.insert({s.y, s.x, -id, 1});
 }
-void removeFits(std::set<Fit>& fits, glm::ivec2 s, int id) { fits.erase({s.x, s.y, -id, 0}), fits.erase({s.y, s.x, -id, 1}); }
+void removeFits(std::set<Fit>& fits, glm::ivec2 s, int id) {
+  fits.erase({s.x, s.y, -id, 0}), fits.erase({s.y, s.x, -id, 1});
+}
 }  // namespace
 
 RectLayout packBestFit(const std::vector<glm::ivec2>& sizes, int width) {
@@ -138,7 +146,8 @@ RectLayout packAtlasCharts(const std::vector<glm::ivec2>& sizes, int maxSize) {
   double area = 0;
   int narrowest = 1, longest = 1;  // every rectangle fits a strip `narrowest` wide, one way or the other
   for (glm::ivec2 s : sizes)
-    area += double(s.x) * s.y, narrowest = std::max(narrowest, std::min(s.x, s.y)), longest = std::max({longest, s.x, s.y});
+    area += double(s.x) * s.y, narrowest = std::max(narrowest, std::min(s.x, s.y)),
+                               longest = std::max({longest, s.x, s.y});
   const int square = std::max(narrowest, int(std::ceil(std::sqrt(area))));
   RectLayout best;
   Rank bestRank;

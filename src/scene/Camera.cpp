@@ -61,13 +61,18 @@ Camera parseCamera(const std::string& text, const Camera& base, const std::strin
       if (values.size() != 3) fail("{}: '{}' needs three numbers", what, key);
       out = {values[0], values[1], values[2]};
     };
-    if (key == "eye") vec(cam.eye);
-    else if (key == "target") vec(cam.target);
-    else if (key == "up") vec(cam.up);
+    if (key == "eye")
+      vec(cam.eye);
+    else if (key == "target")
+      vec(cam.target);
+    else if (key == "up")
+      vec(cam.up);
     else if (key == "fov") {
-      if (values.size() != 1 || !(values[0] > 0 && values[0] < 180)) fail("{}: 'fov' needs one angle in (0, 180) degrees", what);
+      if (values.size() != 1 || !(values[0] > 0 && values[0] < 180))
+        fail("{}: 'fov' needs one angle in (0, 180) degrees", what);
       cam.fovY = values[0];
-    } else fail("{}: unknown camera key '{}' (eye, target, up, fov)", what, key);
+    } else
+      fail("{}: unknown camera key '{}' (eye, target, up, fov)", what, key);
     key.clear();
     values.clear();
   };
@@ -87,7 +92,8 @@ Camera parseCamera(const std::string& text, const Camera& base, const std::strin
   }
   flush();
   if (glm::length(cam.target - cam.eye) <= 0) fail("{}: eye and target coincide", what);
-  if (glm::length(glm::cross(cam.target - cam.eye, cam.up)) <= 0) fail("{}: 'up' is parallel to the view direction", what);
+  if (glm::length(glm::cross(cam.target - cam.eye, cam.up)) <= 0)
+    fail("{}: 'up' is parallel to the view direction", what);
   return cam;
 }
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <deque>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <unordered_map>
 
@@ -147,8 +147,8 @@ Poly3 mergedOutline(const Scene& scene, const Welding& w, const std::vector<int>
   if (loop.size() != next.size()) return {};
   Poly3 out;
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    glm::dvec3 a = w.position[std::size_t(loop[(i + loop.size() - 1) % loop.size()])], b = w.position[std::size_t(loop[i])],
-               c = w.position[std::size_t(loop[(i + 1) % loop.size()])];
+    glm::dvec3 a = w.position[std::size_t(loop[(i + loop.size() - 1) % loop.size()])],
+               b = w.position[std::size_t(loop[i])], c = w.position[std::size_t(loop[(i + 1) % loop.size()])];
     if (glm::length(glm::cross(b - a, c - b)) > 1e-9 * glm::length(b - a) * glm::length(c - b)) out.push_back(b);
   }
   if (out.size() < 3 || !isConvex(out, n) || std::abs(area(out) - total) > 1e-9 * total) return {};
@@ -208,7 +208,8 @@ std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees) {
     if (taken[p]) continue;
     ChartGroup g = growChart(scene, neighbours, int(p), angle, taken);
     Poly3 outline = g.planar && g.polygons.size() > 1 ? mergedOutline(scene, w, g.polygons, g.axis) : Poly3{};
-    if (!outline.empty()) g.parts = {outline}, g.partPolygon = {g.polygons[0]};
+    if (!outline.empty())
+      g.parts = {outline}, g.partPolygon = {g.polygons[0]};
     else
       for (int m : g.polygons) g.parts.push_back(polys[std::size_t(m)].vertices), g.partPolygon.push_back(m);
     out.push_back(std::move(g));

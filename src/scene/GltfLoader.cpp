@@ -57,12 +57,15 @@ struct View {
 };
 
 View accessorView(const tinygltf::Model& m, int index, const std::string& path, const std::string& what) {
-  if (index < 0 || std::size_t(index) >= m.accessors.size()) fail("{}: {} refers to accessor {} of {}", path, what, index, m.accessors.size());
+  if (index < 0 || std::size_t(index) >= m.accessors.size())
+    fail("{}: {} refers to accessor {} of {}", path, what, index, m.accessors.size());
   const tinygltf::Accessor& a = m.accessors[std::size_t(index)];
   if (a.sparse.isSparse) fail("{}: {}: sparse accessors are not supported", path, what);
-  if (a.bufferView < 0 || std::size_t(a.bufferView) >= m.bufferViews.size()) fail("{}: {}: accessor {} has no buffer view", path, what, index);
+  if (a.bufferView < 0 || std::size_t(a.bufferView) >= m.bufferViews.size())
+    fail("{}: {}: accessor {} has no buffer view", path, what, index);
   const tinygltf::BufferView& v = m.bufferViews[std::size_t(a.bufferView)];
-  if (v.buffer < 0 || std::size_t(v.buffer) >= m.buffers.size()) fail("{}: {}: buffer view {} has no buffer", path, what, a.bufferView);
+  if (v.buffer < 0 || std::size_t(v.buffer) >= m.buffers.size())
+    fail("{}: {}: buffer view {} has no buffer", path, what, a.bufferView);
   const int componentSize = tinygltf::GetComponentSizeInBytes(std::uint32_t(a.componentType));
   const int components = tinygltf::GetNumComponentsInType(std::uint32_t(a.type));
   if (componentSize <= 0 || components <= 0) fail("{}: {}: accessor {} has an unknown type", path, what, index);
@@ -124,9 +127,11 @@ Material toMaterial(const tinygltf::Material& g, std::size_t index, const std::s
   const std::string where = fmt::format("{}: material '{}'", path, name);
   Material out{name, glm::dvec3(1.0), glm::dvec3(0.0)};
   const auto& base = g.pbrMetallicRoughness.baseColorFactor;
-  for (int c = 0; c < 3 && std::size_t(c) < base.size(); ++c) out.reflectance[c] = finiteFactor(base[std::size_t(c)], where, "baseColorFactor");
+  for (int c = 0; c < 3 && std::size_t(c) < base.size(); ++c)
+    out.reflectance[c] = finiteFactor(base[std::size_t(c)], where, "baseColorFactor");
   double strength = 1;
-  if (auto e = g.extensions.find("KHR_materials_emissive_strength"); e != g.extensions.end() && e->second.Has("emissiveStrength"))
+  if (auto e = g.extensions.find("KHR_materials_emissive_strength");
+      e != g.extensions.end() && e->second.Has("emissiveStrength"))
     strength = finiteFactor(e->second.Get("emissiveStrength").GetNumberAsDouble(), where, "emissiveStrength");
   for (int c = 0; c < 3 && std::size_t(c) < g.emissiveFactor.size(); ++c)
     out.emission[c] = finiteFactor(g.emissiveFactor[std::size_t(c)], where, "emissiveFactor") * strength;
@@ -142,8 +147,10 @@ Material toMaterial(const tinygltf::Material& g, std::size_t index, const std::s
     scene.warnings.push_back({where, std::string(kReflectanceOne), "materials"});
   const bool hemiradLightmap = g.extras.Has("hemirad");  // its emissiveTexture is the baked solution
   if ((g.pbrMetallicRoughness.baseColorTexture.index >= 0 || g.emissiveTexture.index >= 0) && !hemiradLightmap)
-    scene.warnings.push_back({where, "texture ignored: hemirad uses the constant baseColorFactor and emissiveFactor of "
-                                     "each material, never textures", "materials"});
+    scene.warnings.push_back({where,
+                              "texture ignored: hemirad uses the constant baseColorFactor and emissiveFactor of "
+                              "each material, never textures",
+                              "materials"});
   return out;
 }
 
@@ -173,7 +180,8 @@ glm::dmat4 localTransform(const tinygltf::Node& n, const std::string& path) {
     return t;
   }
   if (n.translation.size() == 3) t = glm::translate(t, {n.translation[0], n.translation[1], n.translation[2]});
-  if (n.rotation.size() == 4) t *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+  if (n.rotation.size() == 4)
+    t *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
   if (n.scale.size() == 3) t = glm::scale(t, {n.scale[0], n.scale[1], n.scale[2]});
   for (int k = 0; k < 16; ++k) finiteFactor(t[k / 4][k % 4], path, "a node transform");
   return t;
@@ -219,11 +227,16 @@ std::vector<std::uint32_t> triangleList(int mode, const std::vector<std::uint32_
 
 const char* modeName(int mode) {
   switch (mode) {
-    case TINYGLTF_MODE_POINTS: return "points";
-    case TINYGLTF_MODE_LINE: return "lines";
-    case TINYGLTF_MODE_LINE_LOOP: return "a line loop";
-    case TINYGLTF_MODE_LINE_STRIP: return "a line strip";
-    default: return "an unknown mode";
+    case TINYGLTF_MODE_POINTS:
+      return "points";
+    case TINYGLTF_MODE_LINE:
+      return "lines";
+    case TINYGLTF_MODE_LINE_LOOP:
+      return "a line loop";
+    case TINYGLTF_MODE_LINE_STRIP:
+      return "a line strip";
+    default:
+      return "an unknown mode";
   }
 }
 
@@ -247,8 +260,11 @@ struct Loader {
 
   void primitive(const tinygltf::Primitive& p, const glm::dmat4& world, int object, const std::string& where) {
     if (p.mode != -1 && (p.mode < TINYGLTF_MODE_TRIANGLES || p.mode > TINYGLTF_MODE_TRIANGLE_FAN)) {
-      scene.warnings.push_back({where, fmt::format("{} (mode {}) skipped: hemirad reads only surfaces (triangles, "
-                                                   "strips and fans)", modeName(p.mode), p.mode), "primitives"});
+      scene.warnings.push_back({where,
+                                fmt::format("{} (mode {}) skipped: hemirad reads only surfaces (triangles, "
+                                            "strips and fans)",
+                                            modeName(p.mode), p.mode),
+                                "primitives"});
       return;
     }
     auto pos = p.attributes.find("POSITION");
@@ -273,21 +289,25 @@ struct Loader {
     const glm::dvec3 eye(world * glm::dvec4(0, 0, 0, 1)), ahead(world * glm::dvec4(0, 0, -1, 0)),
         up(world * glm::dvec4(0, 1, 0, 0));
     const glm::dvec3 target = eye + ahead;
-    scene.camera = fmt::format("eye={:.17g},{:.17g},{:.17g} target={:.17g},{:.17g},{:.17g} up={:.17g},{:.17g},{:.17g} fov={:.17g}",
-                               eye.x, eye.y, eye.z, target.x, target.y, target.z, up.x, up.y, up.z,
-                               glm::degrees(c.perspective.yfov));
+    scene.camera = fmt::format(
+        "eye={:.17g},{:.17g},{:.17g} target={:.17g},{:.17g},{:.17g} up={:.17g},{:.17g},{:.17g} fov={:.17g}", eye.x,
+        eye.y, eye.z, target.x, target.y, target.z, up.x, up.y, up.z, glm::degrees(c.perspective.yfov));
   }
 
   void node(int index, const glm::dmat4& parent, int depth) {
-    if (index < 0 || std::size_t(index) >= m.nodes.size()) fail("{}: node {} does not exist ({} nodes)", path, index, m.nodes.size());
+    if (index < 0 || std::size_t(index) >= m.nodes.size())
+      fail("{}: node {} does not exist ({} nodes)", path, index, m.nodes.size());
     if (depth > 64 || ++visited > 100000) fail("{}: the node hierarchy is cyclic or too deep", path);
     const tinygltf::Node& n = m.nodes[std::size_t(index)];
     const glm::dmat4 world = parent * localTransform(n, path);
     camera(n, world);
     if (n.mesh >= 0) {
-      if (std::size_t(n.mesh) >= m.meshes.size()) fail("{}: node {} refers to mesh {} of {}", path, index, n.mesh, m.meshes.size());
+      if (std::size_t(n.mesh) >= m.meshes.size())
+        fail("{}: node {} refers to mesh {} of {}", path, index, n.mesh, m.meshes.size());
       const tinygltf::Mesh& mesh = m.meshes[std::size_t(n.mesh)];
-      const int object = scene.addObject(!n.name.empty() ? n.name : !mesh.name.empty() ? mesh.name : fmt::format("node {}", index));
+      const int object = scene.addObject(!n.name.empty()      ? n.name
+                                         : !mesh.name.empty() ? mesh.name
+                                                              : fmt::format("node {}", index));
       for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
         primitive(mesh.primitives[p], world, object, fmt::format("{}: mesh {} primitive {}", path, n.mesh, p));
     }
@@ -323,7 +343,8 @@ Scene loadGltf(const std::string& path) {
   std::vector<int> roots;
   if (!model.scenes.empty()) {
     const std::size_t s = model.defaultScene >= 0 && std::size_t(model.defaultScene) < model.scenes.size()
-                              ? std::size_t(model.defaultScene) : 0;
+                              ? std::size_t(model.defaultScene)
+                              : 0;
     roots = model.scenes[s].nodes;
   } else {
     // No scene: every node that is no other node's child is a root.

@@ -36,8 +36,8 @@ struct SceneObject {
 
 // One planar convex polygon: one chart in the atlas, one id in the item buffer.
 struct ScenePolygon {
-  Poly3 vertices;       // counter-clockwise seen from the front (emitting, receiving) side
-  glm::dvec3 normal;    // unit front normal
+  Poly3 vertices;     // counter-clockwise seen from the front (emitting, receiving) side
+  glm::dvec3 normal;  // unit front normal
   double area = 0;
   int material = 0;
   int object = 0;
@@ -49,7 +49,7 @@ class Scene {
   std::vector<Material> materials;
   std::vector<SceneObject> objects;
   std::vector<SceneWarning> warnings;  // what loading repaired or skipped (printWarnings groups them)
-  std::string emissionKey = "Ke";       // what E was read from: Ke, Ka (--emission ka), emissiveFactor (glTF)
+  std::string emissionKey = "Ke";      // what E was read from: Ke, Ka (--emission ka), emissiveFactor (glTF)
   // Every file the scene names (the scene, MTLs and their texture maps, glTF buffers and
   // images), with what it is: outputs may never be written over them.
   std::vector<InputPath> sources;
@@ -61,7 +61,7 @@ class Scene {
   bool addPolygon(const Poly3& vertices, int material, int object);
   int addMaterial(Material m);
   int addObject(std::string name);  // existing id if the name is known
-  void rescale(double factor);       // every vertex times `factor` (areas times its square)
+  void rescale(double factor);      // every vertex times `factor` (areas times its square)
 
   const std::vector<ScenePolygon>& polygons() const { return polygons_; }
   const Mesh& mesh() const { return mesh_; }

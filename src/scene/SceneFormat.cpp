@@ -16,9 +16,9 @@ namespace {
 
 // Mesh and scene formats people hand a renderer; anything else is tried as OBJ text.
 const std::set<std::string> kOtherFormats = {
-    ".3ds", ".3mf", ".abc",  ".ac",   ".amf", ".ase",  ".blend", ".c4d",  ".dae", ".dxf",  ".fbx",  ".ifc",
-    ".iges", ".igs", ".lwo", ".ma",   ".max", ".mb",   ".md2",   ".md3",  ".ms3d", ".off", ".ply",  ".skp",
-    ".step", ".stl", ".stp", ".usd",  ".usda", ".usdc", ".usdz", ".vrml", ".wrl", ".x3d",  ".x3db", ".xaml"};
+    ".3ds",  ".3mf", ".abc", ".ac",  ".amf",  ".ase",  ".blend", ".c4d",  ".dae",  ".dxf", ".fbx",  ".ifc",
+    ".iges", ".igs", ".lwo", ".ma",  ".max",  ".mb",   ".md2",   ".md3",  ".ms3d", ".off", ".ply",  ".skp",
+    ".step", ".stl", ".stp", ".usd", ".usda", ".usdc", ".usdz",  ".vrml", ".wrl",  ".x3d", ".x3db", ".xaml"};
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();

@@ -1,6 +1,5 @@
 #include "src/scene/SceneLoader.h"
 
-
 #include <tiny_obj_loader.h>
 
 #include <cerrno>
@@ -17,9 +16,9 @@
 
 #include "src/base/Error.h"
 #include "src/scene/FaceRepair.h"
-#include "src/scene/Units.h"
 #include "src/scene/GltfLoader.h"
 #include "src/scene/SceneFormat.h"
+#include "src/scene/Units.h"
 
 namespace hemirad {
 
@@ -54,7 +53,8 @@ void checkFaceIndices(std::istringstream& ss, const std::string& path, int no, l
       long long i = std::strtoll(index.c_str(), &end, 10);
       if (index.empty() || end == index.c_str() || *end != '\0')
         fail("{}:{}: face index '{}' is not a number", path, no, index.empty() ? word : index);
-      if (errno == ERANGE || i > INT32_MAX || i < INT32_MIN) fail("{}:{}: face index {} is out of range", path, no, index);
+      if (errno == ERANGE || i > INT32_MAX || i < INT32_MIN)
+        fail("{}:{}: face index {} is out of range", path, no, index);
       if (i == 0) fail("{}:{}: face index 0 (OBJ indices start at 1)", path, no);
       if (part == 0 && i < 0 && -i > vertices)
         fail("{}:{}: relative vertex index {} reaches before the first vertex ({} so far)", path, no, i, vertices);
@@ -95,7 +95,8 @@ ObjLines scanLines(const std::string& path) {
     }
   }
   for (auto [no, index] : ahead)
-    if (index > vertices) fail("{}:{}: face refers to vertex {} but the file has {} vertices", path, no, index, vertices);
+    if (index > vertices)
+      fail("{}:{}: face refers to vertex {} but the file has {} vertices", path, no, index, vertices);
   return lines;
 }
 
@@ -116,7 +117,8 @@ void scanMaterialNumbers(const std::string& objPath, const ObjLines& lines) {
         for (int i = 0; i < 3 && ss >> word; ++i) {
           char* end = nullptr;
           double x = std::strtod(word.c_str(), &end);
-          if (*end != '\0' || !std::isfinite(x)) fail("{}:{}: {} value '{}' is not a finite number", name, no, key, word);
+          if (*end != '\0' || !std::isfinite(x))
+            fail("{}:{}: {} value '{}' is not a finite number", name, no, key, word);
         }
       }
     }
@@ -126,11 +128,11 @@ void scanMaterialNumbers(const std::string& objPath, const ObjLines& lines) {
 // Where each material's newmtl, Kd, Ka and Ke are ("FILE:LINE"), which tinyobjloader does not
 // keep. Also refuses a material library that is there but is no readable file (a folder).
 struct MtlLines {
-  std::vector<InputPath> files;  // the MTLs and the texture maps they name
-  std::map<std::string, std::vector<std::string>> newmtl;              // every definition of a name
+  std::vector<InputPath> files;                                       // the MTLs and the texture maps they name
+  std::map<std::string, std::vector<std::string>> newmtl;             // every definition of a name
   std::map<std::pair<std::string, std::string>, std::string> values;  // (name, key): its line
-  std::set<std::pair<std::string, std::string>> grey;  // (name, key) given one value: r = g = b
-  std::vector<SceneWarning> warnings;                  // texture maps, which are not used
+  std::set<std::pair<std::string, std::string>> grey;                 // (name, key) given one value: r = g = b
+  std::vector<SceneWarning> warnings;                                 // texture maps, which are not used
   std::string fallback;
   std::string at(const std::string& name, const std::string& key) const {
     if (auto v = values.find({name, key}); v != values.end()) return v->second;
@@ -172,10 +174,12 @@ MtlLines scanMaterialLines(const std::string& objPath, const ObjLines& lines) {
         if (key.rfind("map_", 0) == 0 || key == "bump" || key == "disp" || key == "decal") {
           std::string file, word;
           while (ss >> word) file = word;  // the map's options come first, its file last
-          if (!file.empty()) out.files.push_back({"a texture the scene names", (mtlPath.parent_path() / file).string()});
-          const std::string ignored = "texture ignored: hemirad uses the constant Kd/Ke of each material, never textures";
-          out.warnings.push_back({where, fmt::format("material '{}': {} {}", current, key, ignored), "texture maps",
-                                  ignored});
+          if (!file.empty())
+            out.files.push_back({"a texture the scene names", (mtlPath.parent_path() / file).string()});
+          const std::string ignored =
+              "texture ignored: hemirad uses the constant Kd/Ke of each material, never textures";
+          out.warnings.push_back(
+              {where, fmt::format("material '{}': {} {}", current, key, ignored), "texture maps", ignored});
         }
       }
     }
@@ -199,7 +203,8 @@ Material toMaterial(const tinyobj::material_t& m, const LoadOptions& options, co
     if (out.reflectance[c] > 1.0)
       fail("{}: material '{}': reflectance Kd {} is above 1 (it would reflect more light than it receives)", kd, m.name,
            out.reflectance[c]);
-    if (out.reflectance[c] < 0.0) fail("{}: material '{}': reflectance Kd {} is negative", kd, m.name, out.reflectance[c]);
+    if (out.reflectance[c] < 0.0)
+      fail("{}: material '{}': reflectance Kd {} is negative", kd, m.name, out.reflectance[c]);
     if (out.emission[c] < 0.0) fail("{}: material '{}': emission {} {} is negative", ek, m.name, eKey, out.emission[c]);
   }
   // Exactly 1 (white paper in many models) is physical enough to solve: the light stays in play.

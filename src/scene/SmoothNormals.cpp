@@ -48,7 +48,7 @@ glm::dvec3 smoothNormalAt(const ScenePolygon& poly, const std::vector<glm::dvec3
     const double whole = glm::dot(glm::cross(b - a, c - a), poly.normal);
     if (!(std::abs(whole) > 0)) continue;
     const double u = glm::dot(glm::cross(c - b, p - b), poly.normal) / whole,  // weight of a
-        w = glm::dot(glm::cross(a - c, p - c), poly.normal) / whole;            // weight of b
+        w = glm::dot(glm::cross(a - c, p - c), poly.normal) / whole;           // weight of b
     const double x = 1 - u - w;                                                // weight of c
     if (u < -1e-9 || w < -1e-9 || x < -1e-9) continue;
     const glm::dvec3 n = u * vertexNormals[0] + w * vertexNormals[i] + x * vertexNormals[i + 1];

@@ -97,7 +97,8 @@ int Bvh::build(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t
   const std::size_t mid = begin + (end - begin) / 2;
   std::nth_element(order.begin() + long(begin), order.begin() + long(mid), order.begin() + long(end),
                    [&](std::uint32_t a, std::uint32_t b) {
-                     return centroids_[a][axis] < centroids_[b][axis] || (centroids_[a][axis] == centroids_[b][axis] && a < b);
+                     return centroids_[a][axis] < centroids_[b][axis] ||
+                            (centroids_[a][axis] == centroids_[b][axis] && a < b);
                    });
   build(order, begin, mid, depth + 1);
   const int second = build(order, mid, end, depth + 1);

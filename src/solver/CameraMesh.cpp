@@ -1,8 +1,8 @@
 #include "src/solver/CameraMesh.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <algorithm>
 #include <span>
 #include <vector>
 

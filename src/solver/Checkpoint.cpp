@@ -148,9 +148,10 @@ void checkResumable(const std::string& path, const nlohmann::json& savedAsWritte
   for (const auto& [key, value] : current.items()) {
     auto it = saved.find(key);
     if (it == saved.end() || *it != value)
-      fail("--resume {}: the checkpoint was made with {} = {}, this run has {}; resume with the same scene and "
-           "parameters",
-           path, key, it == saved.end() ? "(none)" : it->dump(), value.dump());
+      fail(
+          "--resume {}: the checkpoint was made with {} = {}, this run has {}; resume with the same scene and "
+          "parameters",
+          path, key, it == saved.end() ? "(none)" : it->dump(), value.dump());
   }
 }
 

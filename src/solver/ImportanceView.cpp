@@ -58,7 +58,8 @@ bool ImportanceView::look(const Camera& camera, double aspect) {
   state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_READ_WRITE);
   pixels_.bindImage(slot::IMAGE_VIEW_PIXELS, GL_READ_ONLY);
   direct_.bindImage(slot::IMAGE_DIRECT, GL_READ_WRITE);
-  gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16), gl::groupsFor(unsigned(state_.atlas.height), 16));
+  gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16),
+                        gl::groupsFor(unsigned(state_.atlas.height), 16));
   gl::barrier(gl::Barrier::Image | gl::Barrier::TextureFetch | gl::Barrier::Storage);
   gl::checkErrors("importance view");
   return true;
@@ -70,6 +71,8 @@ std::vector<float> ImportanceView::readDirect() const {
   return out;
 }
 
-void ImportanceView::restoreDirect(const std::vector<float>& direct) { direct_.upload(GL_RED, GL_FLOAT, direct.data()); }
+void ImportanceView::restoreDirect(const std::vector<float>& direct) {
+  direct_.upload(GL_RED, GL_FLOAT, direct.data());
+}
 
 }  // namespace hemirad

@@ -21,7 +21,7 @@ class ImportanceView {
   // Looks from `camera` (aspect width / height) and updates R, I and dI. False (and nothing
   // done) for the view it already has: a resumed solve looks again.
   bool look(const Camera& camera, double aspect);
-  std::vector<float> readDirect() const;  // R per atlas texel
+  std::vector<float> readDirect() const;                 // R per atlas texel
   void restoreDirect(const std::vector<float>& direct);  // a checkpoint's R
 
  private:

@@ -44,10 +44,14 @@ int faceSide(int resolution, Projection p) {
 // hemisphere.glsl's switch; the orthographic map (seed 003's) is the one with none.
 gl::Defines itemBufferDefines(Projection p) {
   switch (p) {
-    case Projection::Hemicube: return {{"HEMICUBE", "1"}};
-    case Projection::Conformal: return {{"CONFORMAL", "1"}};
-    case Projection::EqualArea: return {{"EQUAL_AREA", "1"}};
-    case Projection::Orthographic: break;
+    case Projection::Hemicube:
+      return {{"HEMICUBE", "1"}};
+    case Projection::Conformal:
+      return {{"CONFORMAL", "1"}};
+    case Projection::EqualArea:
+      return {{"EQUAL_AREA", "1"}};
+    case Projection::Orthographic:
+      break;
   }
   return {};
 }
@@ -90,7 +94,8 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
   cull_.set("chunkCount", unsigned(chunkCount_));
   program_.set("faceSize", float(faceResolution_));
   std::vector<glm::vec4> planes;
-  for (auto& p : scene.polygons()) planes.push_back(glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))));
+  for (auto& p : scene.polygons())
+    planes.push_back(glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))));
   planes_ = gl::Buffer(std::span<const glm::vec4>(planes));
 }
 

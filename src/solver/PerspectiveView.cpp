@@ -1,9 +1,9 @@
 #include "src/solver/PerspectiveView.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fmt/format.h>
 
 #include "gl/Debug.h"
 #include "gl/Limits.h"
@@ -58,7 +58,9 @@ double PerspectiveView::simulatedFov() const {
   return camera_.fovY + (180.0 - camera_.fovY) * double(std::min(step_, kSteps)) / kSteps;
 }
 
-std::size_t PerspectiveView::surfacesInView() const { return std::size_t(std::count(visible_.begin(), visible_.end(), 1)); }
+std::size_t PerspectiveView::surfacesInView() const {
+  return std::size_t(std::count(visible_.begin(), visible_.end(), 1));
+}
 
 void PerspectiveView::look(const Camera& camera, double aspect, unsigned shots) {
   if (looked_ && camera == camera_ && aspect == aspect_) return;
@@ -78,8 +80,7 @@ unsigned PerspectiveView::shotsToNextStep(unsigned shots) const {
 
 void PerspectiveView::grow(unsigned shots) {
   int step = step_;
-  while (step < lastStep() &&
-         shots >= lookShots_ + unsigned(std::uint64_t(decayShots_) * unsigned(step + 1) / kSteps))
+  while (step < lastStep() && shots >= lookShots_ + unsigned(std::uint64_t(decayShots_) * unsigned(step + 1) / kSteps))
     ++step;
   if (step == step_) return;
   step_ = step;
@@ -130,7 +131,8 @@ std::vector<std::uint8_t> PerspectiveView::renderSeen() {
     state_.bindScene();
     state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_ONLY);
     importantPass_.use();
-    gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16), gl::groupsFor(unsigned(state_.atlas.height), 16));
+    gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), 16),
+                          gl::groupsFor(unsigned(state_.atlas.height), 16));
   }
   gl::barrier(gl::Barrier::BufferUpdate);
   std::vector<std::uint32_t> seen(surfaces_);
@@ -161,8 +163,10 @@ bool PerspectiveView::applyView(unsigned shots) {
   // would mostly bring it back), and so does a surface still owed entries (they end at its epoch).
   // Before the first look() no view has shown anything.
   for (std::uint32_t p = 0; p < surfaces_; ++p)
-    if (seen[p]) lastIn_[p] = shots;
-    else if (visible_[p] && (epoch_[p] >= 0 || (lastIn_[p] != kNever && shots - lastIn_[p] < decayShots_))) seen[p] = 1;
+    if (seen[p])
+      lastIn_[p] = shots;
+    else if (visible_[p] && (epoch_[p] >= 0 || (lastIn_[p] != kNever && shots - lastIn_[p] < decayShots_)))
+      seen[p] = 1;
   std::vector<std::uint32_t> entering, leaving;
   for (std::uint32_t p = 0; p < surfaces_; ++p)
     if (visible_[p] != seen[p]) (seen[p] ? entering : leaving).push_back(p);
@@ -257,8 +261,10 @@ void PerspectiveView::uploadSurfaces() {
 void PerspectiveView::bind() const {
   surfaceView_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SURFACE_VIEW);
   shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOT_SO_FAR);
-  if (snapshots_) snapshots_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SNAPSHOTS);
-  else shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SNAPSHOTS);  // no epoch yet: never read, but bound
+  if (snapshots_)
+    snapshots_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SNAPSHOTS);
+  else
+    shotSoFar_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SNAPSHOTS);  // no epoch yet: never read, but bound
 }
 
 }  // namespace hemirad
@@ -270,8 +276,12 @@ namespace {
 // Plain little-endian-as-in-memory fields, in a fixed order (checkpoints stay on one machine kind).
 struct Writer {
   std::vector<std::uint8_t> bytes;
-  template <class T> void put(const T& v) { putBytes(&v, sizeof v); }
-  template <class T> void putVector(const std::vector<T>& v) {
+  template <class T>
+  void put(const T& v) {
+    putBytes(&v, sizeof v);
+  }
+  template <class T>
+  void putVector(const std::vector<T>& v) {
     put(std::uint64_t(v.size()));
     putBytes(v.data(), v.size() * sizeof(T));
   }
@@ -288,12 +298,14 @@ struct Reader {
     if (n) std::memcpy(p, bytes.data() + at, n);
     at += n;
   }
-  template <class T> T get() {
+  template <class T>
+  T get() {
     T v;
     getBytes(&v, sizeof v);
     return v;
   }
-  template <class T> std::vector<T> getVector(std::size_t most) {
+  template <class T>
+  std::vector<T> getVector(std::size_t most) {
     const auto n = get<std::uint64_t>();
     if (n > most) throw InputError("checkpoint: perspective view state is corrupt");
     std::vector<T> v(n);
@@ -336,11 +348,12 @@ void PerspectiveView::restore(std::span<const std::uint8_t> bytes) {
   const std::vector<glm::vec4> table = r.getVector<glm::vec4>(blocks_ * (1 + kMaxEpochs));
   const std::vector<std::uint32_t> deferred = r.getVector<std::uint32_t>(blocks_);
   auto bad = [&](int e) { return e >= int(capacity_); };
-  if (r.at != bytes.size() || visible_.size() != surfaces_ || lastIn_.size() != surfaces_ || epoch_.size() != surfaces_ ||
-      end_.size() != surfaces_ || slotUsed_.size() != capacity_ || table.size() != blocks_ * (1 + std::size_t(capacity_)) ||
-      deferred.size() != deferred_ || next_ > deferred_ || std::any_of(epoch_.begin(), epoch_.end(), bad) ||
-      std::any_of(end_.begin(), end_.end(), bad) ||
-      std::any_of(round_.begin(), round_.end(), [&](std::uint32_t p) { return p >= surfaces_ || epoch_[p] < 0 || end_[p] < 0; }) ||
+  if (r.at != bytes.size() || visible_.size() != surfaces_ || lastIn_.size() != surfaces_ ||
+      epoch_.size() != surfaces_ || end_.size() != surfaces_ || slotUsed_.size() != capacity_ ||
+      table.size() != blocks_ * (1 + std::size_t(capacity_)) || deferred.size() != deferred_ || next_ > deferred_ ||
+      std::any_of(epoch_.begin(), epoch_.end(), bad) || std::any_of(end_.begin(), end_.end(), bad) ||
+      std::any_of(round_.begin(), round_.end(),
+                  [&](std::uint32_t p) { return p >= surfaces_ || epoch_[p] < 0 || end_[p] < 0; }) ||
       std::any_of(deferred.begin(), deferred.end(), [&](std::uint32_t b) { return b >= blocks_; }))
     throw InputError("checkpoint: perspective view state is corrupt");
   shotSoFar_.upload(0, blocks_ * kVec4, table.data());

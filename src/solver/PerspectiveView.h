@@ -36,11 +36,10 @@ namespace hemirad {
 
 class PerspectiveView {
  public:
-  static constexpr int kSteps = 8;          // simulated field-of-view steps from the camera's to all
+  static constexpr int kSteps = 8;            // simulated field-of-view steps from the camera's to all
   static constexpr unsigned kMaxEpochs = 64;  // live snapshots; beyond, a new view waits for a round's end
   static constexpr unsigned kNoStep = std::numeric_limits<unsigned>::max();
   static constexpr std::uint32_t kNever = std::numeric_limits<std::uint32_t>::max();
-
 
   // `resolution`: pixels of the visibility view's longer side. `interest`: a surface with
   // received importance I - R above interest / (total area) somewhere (1: the view's importance
@@ -69,7 +68,7 @@ class PerspectiveView {
   bool settled() const { return !pending_view_ && round_.empty(); }
   bool delivering() const { return !round_.empty(); }
   bool deliveryTurn() const { return delivering() && deliveryTurn_; }  // the next pass delivers
-  void shot() { deliveryTurn_ = true; }  // after a shooting pass
+  void shot() { deliveryTurn_ = true; }                                // after a shooting pass
   bool update(unsigned shots);  // applies a waiting view at `shots`; true if it did
   // Blocks whose entries are still to deliver; describes the next `count` of them as the pass's
   // shooters (gather.comp, delivery mode).
@@ -86,10 +85,10 @@ class PerspectiveView {
   void restore(std::span<const std::uint8_t> bytes);
 
  private:
-  bool applyView(unsigned shots);  // false: no snapshot slot free, the view waits
+  bool applyView(unsigned shots);                                       // false: no snapshot slot free, the view waits
   int lastStep() const { return byImportance_ ? kSteps - 1 : kSteps; }  // growth ends there
   std::vector<std::uint8_t> renderSeen();
-  int takeEpoch();  // a free snapshot slot, -1 if none
+  int takeEpoch();    // a free snapshot slot, -1 if none
   void startRound();  // the surfaces owed entries now, and the blocks with entries for them
   void endRound();
   void uploadSurfaces();
@@ -111,12 +110,12 @@ class PerspectiveView {
   bool looked_ = false;
   int step_ = kSteps;  // until the first look() everything is in view
   std::vector<std::uint8_t> visible_;
-  std::vector<std::uint32_t> lastIn_;     // per surface: shots when a view last showed it (kNever: none)
-  std::vector<int> epoch_;                // per surface: the epoch its entries started, -1 none
-  std::vector<int> end_;                  // ... and, back in view, the epoch they end at, -1 none
-  std::vector<std::uint8_t> slotUsed_;    // per snapshot slot
-  std::vector<std::uint32_t> round_;      // the surfaces the delivery round under way serves
-  std::size_t deferred_ = 0, next_ = 0;   // its blocks with entries, delivered so far
+  std::vector<std::uint32_t> lastIn_;    // per surface: shots when a view last showed it (kNever: none)
+  std::vector<int> epoch_;               // per surface: the epoch its entries started, -1 none
+  std::vector<int> end_;                 // ... and, back in view, the epoch they end at, -1 none
+  std::vector<std::uint8_t> slotUsed_;   // per snapshot slot
+  std::vector<std::uint32_t> round_;     // the surfaces the delivery round under way serves
+  std::size_t deferred_ = 0, next_ = 0;  // its blocks with entries, delivered so far
   bool pending_view_ = false, deliveryTurn_ = true;
 };
 

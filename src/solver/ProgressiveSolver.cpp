@@ -12,16 +12,16 @@
 #include "gl/Debug.h"
 #include "gl/Limits.h"
 #include "gl/State.h"
-#include "src/solver/Control.h"
 #include "src/base/Error.h"
 #include "src/solver/Bvh.h"
+#include "src/solver/Control.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
 namespace {
 
-constexpr unsigned kGatherGroup = 16;   // gather.comp local size (x and y)
+constexpr unsigned kGatherGroup = 16;     // gather.comp local size (x and y)
 constexpr unsigned kGroupEntries = 1024;  // entries ranked per reduction workgroup (reduce_entry.glsl)
 constexpr unsigned kUnlimitedHistory = 1u << 20;
 constexpr unsigned kTimingStride = 16;  // with GPU stamps, one pass in 16 is timed
@@ -41,7 +41,8 @@ unsigned defaultFovDecay(std::size_t blocks, unsigned shootersPerPass) {
 ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettings& settings)
     : state_(state), settings_(settings), timer_(settings.timings) {
   if (settings.shootersPerPass < 1 || unsigned(settings.shootersPerPass) > kMaxPassShooters)
-    throw InputError(fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shootersPerPass));
+    throw InputError(
+        fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shootersPerPass));
   const unsigned keep = unsigned(settings.shootersPerPass);
   const bool perspective = settings.algorithm == Algorithm::Perspective;
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
@@ -62,8 +63,8 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   if (refinesNear()) gather_.set("refineNear", float(settings.refineNear));
   if (perspective) {
     perspective_ = std::make_unique<PerspectiveView>(
-        state, nodes_, blockCount_, settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep),
-        settings.viewInterest);
+        state, nodes_, blockCount_,
+        settings.fovDecayShots ? settings.fovDecayShots : defaultFovDecay(blockCount_, keep), settings.viewInterest);
     gather_.set("blockCount", unsigned(blockCount_));
   }
   setUpControl(settings.stop, keep);
@@ -348,7 +349,8 @@ std::vector<std::uint8_t> ProgressiveSolver::saveState() const {
     view.insert(view.end(), delivered, delivered + sizeof deliveryShots_);
     const std::uint64_t size = view.size();
     bytes.insert(bytes.end(), view.begin(), view.end());
-    bytes.insert(bytes.end(), reinterpret_cast<const std::uint8_t*>(&size), reinterpret_cast<const std::uint8_t*>(&size + 1));
+    bytes.insert(bytes.end(), reinterpret_cast<const std::uint8_t*>(&size),
+                 reinterpret_cast<const std::uint8_t*>(&size + 1));
   }
   return bytes;
 }
@@ -361,7 +363,8 @@ SolveStatus ProgressiveSolver::restoreState(std::span<const std::uint8_t> bytes)
     std::memcpy(&size, bytes.data() + bytes.size() - sizeof size, sizeof size);
     if (size < sizeof deliveryShots_ || size > bytes.size() - sizeof size)
       throw InputError("checkpoint: progressive solver state is corrupt");
-    const std::size_t at = bytes.size() - sizeof size - std::size_t(size), view = std::size_t(size) - sizeof deliveryShots_;
+    const std::size_t at = bytes.size() - sizeof size - std::size_t(size),
+                      view = std::size_t(size) - sizeof deliveryShots_;
     perspective_->restore(bytes.subspan(at, view));
     std::memcpy(&deliveryShots_, bytes.data() + at + view, sizeof deliveryShots_);
     bytes = bytes.first(at);
@@ -378,8 +381,7 @@ SolveStatus ProgressiveSolver::restoreState(std::span<const std::uint8_t> bytes)
   c.done = 0;
   c.count = c.importanceCount = 0;
   control_.upload(0, header, &c);
-  const std::size_t history =
-      std::min<std::size_t>((bytes.size() - header - direct) / sizeof(float), historyCapacity_);
+  const std::size_t history = std::min<std::size_t>((bytes.size() - header - direct) / sizeof(float), historyCapacity_);
   control_.upload(sizeof(ControlBlock), history * sizeof(float), bytes.data() + header);
   if (view_) {
     std::vector<float> r(state_.atlas.positionArea.size());

@@ -24,11 +24,13 @@ namespace hemirad {
 struct ProgressiveSettings {
   // The item buffer and shooters start as the default preset's, `fast` (src/solver/Presets.h).
   int itemSubdivision = kFastPlan.itemSubdivision;  // 1-to-4 splits of the item mesh
-  int itemResolution = kFastPlan.itemResolution;    // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
+  int itemResolution =
+      kFastPlan
+          .itemResolution;  // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
   Projection projection = kFastPlan.projection;
-  int shootLevel = kFastPlan.shootLevel;            // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
-  double refineNear = kFastPlan.refineNear;         // receivers nearer than this many shooter sides see its parts (0: off)
-  std::string preset{kDefaultPreset};               // the preset the five above started from (the report names it)
+  int shootLevel = kFastPlan.shootLevel;  // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
+  double refineNear = kFastPlan.refineNear;  // receivers nearer than this many shooter sides see its parts (0: off)
+  std::string preset{kDefaultPreset};        // the preset the five above started from (the report names it)
   ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel, refineNear}; }
   // Starts from preset `name` (InputError for an unknown name): its five values and its name.
   void usePreset(std::string_view name) {
@@ -103,9 +105,9 @@ class ProgressiveSolver final : public Solver {
  private:
   // What a ranking orders the blocks by (reduce_entry.glsl's rankBy).
   enum class Rank : unsigned {
-    Power = 0,                // unshot power: plain progressive refinement
-    PowerByImportance = 1,    // unshot power x (largest I - R + floor), seed 004 §4.2.4
-    Importance = 2,           // |unshot importance| x area: the importance shooters
+    Power = 0,              // unshot power: plain progressive refinement
+    PowerByImportance = 1,  // unshot power x (largest I - R + floor), seed 004 §4.2.4
+    Importance = 2,         // |unshot importance| x area: the importance shooters
   };
   // Who receives a gather (gather.comp's viewMode; perspective-driven solves only).
   enum class Receivers : unsigned {
@@ -125,8 +127,8 @@ class ProgressiveSolver final : public Solver {
   void runPasses(unsigned passes);
   // Perspective-driven: item buffers for deliveries and for shots share `budget`.
   void advancePerspective(unsigned budget);
-  unsigned deliverStored();  // one pass of entries for surfaces entering the view
-  bool openWholeView();                     // out of light with entries held back
+  unsigned deliverStored();                   // one pass of entries for surfaces entering the view
+  bool openWholeView();                       // out of light with entries held back
   unsigned shootToNextStep(unsigned budget);  // returns the shots enqueued
   bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
   SolveStatus readStatus();
@@ -144,11 +146,11 @@ class ProgressiveSolver final : public Solver {
   gl::Program reduce_, select_, gather_;
   gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
   std::size_t discShapes_ = 0;
-  gl::Buffer shapes_;  // per node: its exact shape (shapeTable), what the gather integrates over
-  int treeDepth_ = 0;  // levels below the deepest block
+  gl::Buffer shapes_;                   // per node: its exact shape (shapeTable), what the gather integrates over
+  int treeDepth_ = 0;                   // levels below the deepest block
   gl::Buffer bvhNodes_, bvhTriangles_;  // the scene's BVH: exact visibility near shooters (refine_near.glsl)
   std::unique_ptr<ItemBuffer> itemBuffer_;
-  std::unique_ptr<ImportanceView> view_;  // importance-driven solves only
+  std::unique_ptr<ImportanceView> view_;          // importance-driven solves only
   std::unique_ptr<PerspectiveView> perspective_;  // perspective-driven solves only
   unsigned importanceShots_ = 0, deliveryShots_ = 0;
   std::vector<gl::Buffer> levels_;  // outputs of the parallel reduction levels (large scenes)
@@ -157,7 +159,7 @@ class ProgressiveSolver final : public Solver {
   SolveStatus status_;
   PassTimings timings_;
   gl::GpuTimer timer_;
-  double sampled_[3] = {};  // per-pass milliseconds of the timed passes
+  double sampled_[3] = {};             // per-pass milliseconds of the timed passes
   unsigned enqueued_ = 0, timed_ = 0;  // passes
 };
 

@@ -10,8 +10,8 @@ namespace {
 // Canonical names first; then the aliases that earlier versions wrote into commands, reports,
 // checkpoints and sweep specs, which must keep meaning (bitwise) what they meant.
 const std::pair<const char*, Projection> kNames[] = {
-    {"orthographic", Projection::Orthographic}, {"hemicube", Projection::Hemicube},
-    {"conformal", Projection::Conformal},       {"equal-area", Projection::EqualArea},
+    {"orthographic", Projection::Orthographic},  {"hemicube", Projection::Hemicube},
+    {"conformal", Projection::Conformal},        {"equal-area", Projection::EqualArea},
     {"stereographic", Projection::Orthographic}, {"hemisphere", Projection::Orthographic},
     {"paraboloid", Projection::Conformal}};
 constexpr std::size_t kCanonical = 4;
@@ -44,8 +44,9 @@ std::vector<Projection> allProjections() {
 Projection parseProjectionFlag(const std::string& name) {
   const Projection p = parseProjection(name);
   if (name == "stereographic")
-    warn("--hemisphere stereographic is seed 003's orthographic (Nusselt) map, r = sin theta, as before; "
-         "now named orthographic. The true stereographic map is conformal");
+    warn(
+        "--hemisphere stereographic is seed 003's orthographic (Nusselt) map, r = sin theta, as before; "
+        "now named orthographic. The true stereographic map is conformal");
   return p;
 }
 

@@ -20,8 +20,8 @@ const gl::Defines& contractDefines() {
     d.push_back({"MAX_SPLIT_DEPTH", fmt::format("{}", kMaxSplitDepth)});
     d.push_back({"MAX_TEXEL_PIECES", fmt::format("{}u", kMaxTexelPieces)});
     // Shortest round-trip text: the literals the shaders held before, so the same floats.
-    d.push_back({"LUMINANCE", fmt::format("vec3({}, {}, {})", kLuminanceWeights[0], kLuminanceWeights[1],
-                                          kLuminanceWeights[2])});
+    d.push_back({"LUMINANCE",
+                 fmt::format("vec3({}, {}, {})", kLuminanceWeights[0], kLuminanceWeights[1], kLuminanceWeights[2])});
     return d;
   }();
   return defines;

@@ -24,7 +24,8 @@ ShooterNode makeNode(const Atlas& atlas, glm::ivec4 rect) {
       if (atlas.charts[atlas.chartOf[n.polygon]].planar) n.normal = glm::vec4(atlas.normalOf[t], 0.0f);
     }
   if (area > 0) n.centreArea = glm::vec4(glm::vec3(centre / area), float(area));
-  if (area > 0 && !atlas.charts[atlas.chartOf[n.polygon]].planar) n.normal = glm::vec4(glm::vec3(glm::normalize(normal)), 0.0f);
+  if (area > 0 && !atlas.charts[atlas.chartOf[n.polygon]].planar)
+    n.normal = glm::vec4(glm::vec3(glm::normalize(normal)), 0.0f);
   return n;
 }
 

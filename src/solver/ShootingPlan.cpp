@@ -41,8 +41,9 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
   ShootingPlan plan;
   for (const Chart& c : atlas.charts) {
     const bool emitter = scene.materials[scene.polygons()[std::size_t(c.polygon)].material].emissive();
-    plan.chartLevel.push_back(shootLevel != kAutoShootLevel ? shootLevel
-                                : levelFor(extent * (emitter ? kEmitterSide : kShooterSide), atlas.texelSize));
+    plan.chartLevel.push_back(shootLevel != kAutoShootLevel
+                                  ? shootLevel
+                                  : levelFor(extent * (emitter ? kEmitterSide : kShooterSide), atlas.texelSize));
   }
   const int divisor = projection == Projection::Hemicube ? kHemicubeDivisor : 1;
   plan.itemResolution =

@@ -21,15 +21,15 @@ class SolverState {
 
   const Scene& scene;
   const Atlas& atlas;
-  gl::Texture positionArea;  // RGBA32F element centre and area
-  gl::Texture polygonOf;     // R32UI polygon id per texel
-  gl::Texture normal;        // RGBA32F per texel the receiver normal (Atlas::normalOf)
-  gl::Texture radiosity;     // RGBA32F B
-  gl::Texture deltaB;        // RGBA32F dB (unshot)
-  gl::Buffer polygons;       // per polygon: plane, reflectance, emission, vertex range
+  gl::Texture positionArea;    // RGBA32F element centre and area
+  gl::Texture polygonOf;       // R32UI polygon id per texel
+  gl::Texture normal;          // RGBA32F per texel the receiver normal (Atlas::normalOf)
+  gl::Texture radiosity;       // RGBA32F B
+  gl::Texture deltaB;          // RGBA32F dB (unshot)
+  gl::Buffer polygons;         // per polygon: plane, reflectance, emission, vertex range
   gl::Buffer polygonVertices;  // every polygon's vertices (xyz), in polygon order
-  double emittedPower = 0;   // sum over elements of luminance(E) * area
-  double farDistance = 0;    // longer than any segment inside the scene
+  double emittedPower = 0;     // sum over elements of luminance(E) * area
+  double farDistance = 0;      // longer than any segment inside the scene
 
   // Binds what scene.glsl reads: the polygon table, its vertices and the atlas.
   void bindScene() const;

@@ -19,9 +19,9 @@ namespace hemirad {
 
 namespace {
 
-constexpr unsigned kGroup2D = 16;      // pyramid.comp and stochastic_update.comp local size (x and y)
-constexpr unsigned kSampleGroup = 64;  // sample.comp local size
-constexpr unsigned kTimingStride = 16;  // with GPU stamps, one iteration in 16 is timed
+constexpr unsigned kGroup2D = 16;                  // pyramid.comp and stochastic_update.comp local size (x and y)
+constexpr unsigned kSampleGroup = 64;              // sample.comp local size
+constexpr unsigned kTimingStride = 16;             // with GPU stamps, one iteration in 16 is timed
 constexpr std::uint32_t kStateMagic = 0x53544331;  // "STC1"
 
 enum Slot { kSelect, kItemBuffer, kUpdate };
@@ -47,8 +47,10 @@ StochasticSolver::StochasticSolver(SolverState& state, const StochasticSettings&
   if (settings.shooters < 1 || unsigned(settings.shooters) > kMaxPassShooters)
     throw InputError(fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shooters));
   if (settings.stop.targetConvergence > 0)
-    throw InputError("--method stochastic has no convergence measure: stop it with --shots (iterations), not --converge");
-  itemResolution_ = planShooting(state.scene, state.atlas, 0, settings.itemResolution, settings.projection).itemResolution;
+    throw InputError(
+        "--method stochastic has no convergence measure: stop it with --shots (iterations), not --converge");
+  itemResolution_ =
+      planShooting(state.scene, state.atlas, 0, settings.itemResolution, settings.projection).itemResolution;
   while (side_ < unsigned(std::max(state.atlas.width, state.atlas.height))) side_ *= 2, ++levels_;
   std::size_t floats = 0;
   for (unsigned l = 0; l < levels_; ++l) floats += std::size_t(side_ >> l) * (side_ >> l);

@@ -27,17 +27,17 @@ Source parseSource(const std::string& name);  // throws InputError
 const char* sourceName(Source s);
 
 struct StochasticSettings {
-  std::uint32_t seed = 1;      // with the backend, fixes the result bit for bit
-  int shooters = 16;           // K texels shot per iteration (1..kMaxPassShooters), averaged inside it
+  std::uint32_t seed = 1;  // with the backend, fixes the result bit for bit
+  int shooters = 16;       // K texels shot per iteration (1..kMaxPassShooters), averaged inside it
   Source source = Source::Iterate;
   // 0: B is the mean of all iterates (weight 1/m). W > 0: weight max(1/m, 1/W), an exponential
   // window of about W iterations, so B follows a scene that changes (moving lights).
   unsigned window = 0;
   int itemSubdivision = 3;
-  int itemResolution = 256;    // item buffer pixels a side; kAutoItemResolution: planned as progressive
+  int itemResolution = 256;  // item buffer pixels a side; kAutoItemResolution: planned as progressive
   Projection projection = Projection::Orthographic;
   gl::TimerMode timings = gl::TimerMode::Gpu;
-  StopRule stop;               // maxShots: iterations (a convergence target does not apply)
+  StopRule stop;  // maxShots: iterations (a convergence target does not apply)
 };
 
 class StochasticSolver final : public Solver {

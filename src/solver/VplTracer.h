@@ -35,13 +35,13 @@ static_assert(sizeof(GpuPolygon) == 64);
 std::vector<GpuPolygon> gpuPolygonTable(const Scene& scene, std::vector<glm::vec4>& vertices);
 
 struct InstantSettings {
-  unsigned vpls = 256;    // VPL slots: exactly this many, over all levels
-  int bounces = 8;        // the deepest level: VPLs at 0 (on emitters) to `bounces` hits
+  unsigned vpls = 256;  // VPL slots: exactly this many, over all levels
+  int bounces = 8;      // the deepest level: VPLs at 0 (on emitters) to `bounces` hits
   unsigned seed = 0;
   int shadowResolution = 128;  // each VPL's hemispherical shadow map, pixels a side
-  int itemSubdivision = 2;    // the shadow maps' mesh: 1-to-4 splits (curved projection)
-  double clamp = 0.05;        // cos cos / r^2 is clamped at 1 / (clamp x scene diagonal)^2
-  int interleave = 1;         // n: each pixel of an n x n tile shades with 1 / n^2 of the VPLs (1: all)
+  int itemSubdivision = 2;     // the shadow maps' mesh: 1-to-4 splits (curved projection)
+  double clamp = 0.05;         // cos cos / r^2 is clamped at 1 / (clamp x scene diagonal)^2
+  int interleave = 1;          // n: each pixel of an n x n tile shades with 1 / n^2 of the VPLs (1: all)
 };
 
 // Keller's quasi-random walk: n[j] paths reach level j, n[j] ~ rhoAvg^j n[0], sum n[j] = vpls.

@@ -74,9 +74,11 @@ Row mergeRow(const std::string& dir, const Sweep& sweep, const SweepConfiguratio
 
 // A done row's point on the spec's plot, in the series of its other values.
 void addPoint(const Sweep& sweep, const std::vector<std::string>& cells, std::vector<PlotSeries>& plot) {
-  const std::size_t xColumn = std::find(sweep.columns.begin(), sweep.columns.end(), sweep.plotX) - sweep.columns.begin();
-  const std::size_t yCell = 1 + sweep.columns.size() +
-                            (std::find(sweep.metrics.begin(), sweep.metrics.end(), sweep.plotY) - sweep.metrics.begin());
+  const std::size_t xColumn =
+      std::find(sweep.columns.begin(), sweep.columns.end(), sweep.plotX) - sweep.columns.begin();
+  const std::size_t yCell =
+      1 + sweep.columns.size() +
+      (std::find(sweep.metrics.begin(), sweep.metrics.end(), sweep.plotY) - sweep.metrics.begin());
   std::string label;
   for (std::size_t k = 0; k < sweep.columns.size(); ++k)
     if (k != xColumn)
@@ -123,7 +125,8 @@ SweepTable mergeSweep(const std::string& dir, const Sweep& sweep) {
   SweepTable t;
   auto addLine = [&t](const std::vector<std::string>& cells) {
     std::string csv, md = "|";
-    for (std::size_t k = 0; k < cells.size(); ++k) csv += (k ? "," : "") + csvCell(cells[k]), md += " " + cells[k] + " |";
+    for (std::size_t k = 0; k < cells.size(); ++k)
+      csv += (k ? "," : "") + csvCell(cells[k]), md += " " + cells[k] + " |";
     t.csv += csv + "\n", t.markdown += md + "\n";
   };
   t.markdown = fmt::format("# Sweep {}: {} configurations\n\n", sweep.name, sweep.configurations.size());
@@ -134,12 +137,15 @@ SweepTable mergeSweep(const std::string& dir, const Sweep& sweep) {
   for (const SweepConfiguration& c : sweep.configurations) {
     Row row = mergeRow(dir, sweep, c);
     addLine(row.cells);
-    if (!row.problem.empty()) t.problems.push_back(row.problem);
-    else if (!sweep.plotX.empty()) addPoint(sweep, row.cells, t.plot);
+    if (!row.problem.empty())
+      t.problems.push_back(row.problem);
+    else if (!sweep.plotX.empty())
+      addPoint(sweep, row.cells, t.plot);
     if (row.problem.empty() && t.backend.empty()) t.backend = row.backend, t.renderer = row.renderer;
   }
   if (!t.problems.empty()) {
-    t.markdown += fmt::format("\n{} of {} configurations not done:\n\n", t.problems.size(), sweep.configurations.size());
+    t.markdown +=
+        fmt::format("\n{} of {} configurations not done:\n\n", t.problems.size(), sweep.configurations.size());
     for (const std::string& p : t.problems) t.markdown += "- " + p + "\n";
   }
   return t;

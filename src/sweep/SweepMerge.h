@@ -21,8 +21,8 @@ struct SweepTable {
 };
 
 SweepTable mergeSweep(const std::string& dir, const Sweep& sweep);
-// Writes DIR/results.csv and DIR/results.md (and results.svg and .pdf with a plot), prints the markdown and the problems; returns 0
-// when every configuration is done, else 1.
+// Writes DIR/results.csv and DIR/results.md (and results.svg and .pdf with a plot), prints the markdown and the
+// problems; returns 0 when every configuration is done, else 1.
 int runMerge(const std::string& dir);
 
 // A report field by '.'-separated path ("shots", "timings_ms.gather", "objects.floor.mean_radiosity"):

@@ -21,9 +21,9 @@ namespace {
 
 // Flags each task sets itself (its report, checkpoint, backend) or that write files the tasks
 // would share: a spec naming one is refused.
-const std::set<std::string> kTaskFlags = {"report",     "checkpoint", "checkpoint-every", "resume", "quiet",
-                                          "backend",    "gpu",        "out",              "image",  "atlas",
-                                          "ply",        "camera-path", "frames"};
+const std::set<std::string> kTaskFlags = {
+    "report", "checkpoint", "checkpoint-every", "resume", "quiet", "backend", "gpu", "out", "image",
+    "atlas",  "ply",        "camera-path",      "frames"};
 
 ojson readJsonFile(const std::string& path, const std::string& what) {
   std::ifstream in(path);
@@ -57,10 +57,14 @@ void checkFlagName(const std::string& spec, const std::string& flag) {
 SweepResources readResources(const std::string& spec, const ojson& r) {
   SweepResources out;
   for (const auto& [key, v] : r.items()) {
-    if (key == "cpus" && v.is_number_integer() && v.get<int>() >= 1) out.cpus = v.get<int>();
-    else if (key == "mem" && v.is_string()) out.mem = v.get<std::string>();
-    else if (key == "time" && v.is_string()) out.time = v.get<std::string>();
-    else if (key == "gpu" && v.is_boolean()) out.gpu = v.get<bool>();
+    if (key == "cpus" && v.is_number_integer() && v.get<int>() >= 1)
+      out.cpus = v.get<int>();
+    else if (key == "mem" && v.is_string())
+      out.mem = v.get<std::string>();
+    else if (key == "time" && v.is_string())
+      out.time = v.get<std::string>();
+    else if (key == "gpu" && v.is_boolean())
+      out.gpu = v.get<bool>();
     else
       fail("{}: resources.{} = {}: expected cpus (integer >= 1), mem (\"4G\"), time (\"02:00:00\") or gpu (true/false)",
            spec, key, v.dump());
@@ -205,14 +209,15 @@ nlohmann::json sweepJson(const Sweep& s) {
   nlohmann::json configs = nlohmann::json::array();
   for (const SweepConfiguration& c : s.configurations)
     configs.push_back({{"id", c.id}, {"values", c.values}, {"args", c.args}});
-  return {{"name", s.name},
-          {"columns", s.columns},
-          {"metrics", s.metrics},
-          {"resources",
-           {{"cpus", s.resources.cpus}, {"mem", s.resources.mem}, {"time", s.resources.time}, {"gpu", s.resources.gpu}}},
-          {"checkpoint_every", s.checkpointEvery},
-          {"plot", {{"x", s.plotX}, {"y", s.plotY}}},
-          {"configurations", configs}};
+  return {
+      {"name", s.name},
+      {"columns", s.columns},
+      {"metrics", s.metrics},
+      {"resources",
+       {{"cpus", s.resources.cpus}, {"mem", s.resources.mem}, {"time", s.resources.time}, {"gpu", s.resources.gpu}}},
+      {"checkpoint_every", s.checkpointEvery},
+      {"plot", {{"x", s.plotX}, {"y", s.plotY}}},
+      {"configurations", configs}};
 }
 
 Sweep readSweepDir(const std::string& dir) {
@@ -229,8 +234,7 @@ Sweep readSweepDir(const std::string& dir) {
     s.resources = {r.at("cpus"), r.at("mem"), r.at("time"), r.at("gpu")};
     s.checkpointEvery = j.at("checkpoint_every");
     s.plotX = j.at("plot").at("x"), s.plotY = j.at("plot").at("y");
-    for (const auto& c : j.at("configurations"))
-      s.configurations.push_back({c.at("id"), c.at("values"), c.at("args")});
+    for (const auto& c : j.at("configurations")) s.configurations.push_back({c.at("id"), c.at("values"), c.at("args")});
     return s;
   } catch (const nlohmann::json::exception& e) {
     fail("{}: damaged: {}", path, e.what());

@@ -12,24 +12,24 @@ namespace hemirad {
 
 struct SweepResources {
   int cpus = 1;
-  std::string mem = "2G";        // Slurm's --mem syntax
+  std::string mem = "2G";         // Slurm's --mem syntax
   std::string time = "01:00:00";  // Slurm's --time syntax
   bool gpu = false;               // --gres=gpu:1 and --backend egl
 };
 
 struct SweepConfiguration {
-  std::string id;                         // "0003": the task folder's name
-  std::vector<std::string> values;        // the scene as written, then each axis's value
-  std::vector<std::string> args;          // "solve", the scene (absolute), flags
+  std::string id;                   // "0003": the task folder's name
+  std::vector<std::string> values;  // the scene as written, then each axis's value
+  std::vector<std::string> args;    // "solve", the scene (absolute), flags
 };
 
 struct Sweep {
   std::string name;
-  std::vector<std::string> columns;       // "scene", then each axis's flag name
-  std::vector<std::string> metrics;       // report fields, '.'-separated paths
+  std::vector<std::string> columns;  // "scene", then each axis's flag name
+  std::vector<std::string> metrics;  // report fields, '.'-separated paths
   SweepResources resources;
-  unsigned checkpointEvery = 64;          // shots between a task's checkpoints
-  std::string plotX, plotY;               // optional figure: a numeric axis against a metric (log-log)
+  unsigned checkpointEvery = 64;  // shots between a task's checkpoints
+  std::string plotX, plotY;       // optional figure: a numeric axis against a metric (log-log)
   std::vector<SweepConfiguration> configurations;
 };
 

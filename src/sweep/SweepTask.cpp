@@ -5,11 +5,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <map>
 
 #include "src/base/AtomicFile.h"
@@ -137,8 +137,8 @@ unsigned runSweepLocally(const std::string& dir, const Sweep& sweep, unsigned jo
     const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
     if (!ok) ++failed;
     fmt::print(stderr, "hemirad sweep: task {} {}, {} of {} finished (log: {}/logs/task_{}.log)\n",
-               sweep.configurations[it->second].id, ok ? "done" : "failed", ++finished, sweep.configurations.size(), dir,
-               it->second);
+               sweep.configurations[it->second].id, ok ? "done" : "failed", ++finished, sweep.configurations.size(),
+               dir, it->second);
     running.erase(it);
   }
   return failed;

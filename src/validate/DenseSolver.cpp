@@ -43,7 +43,8 @@ DenseSystem buildDense(const Scene& scene, const Atlas& atlas, const cpu::ExactV
       if (!cpu::facing(centre[j], normal[j], centre[i], normal[i])) continue;
       if (!visibility.visible(centre[i], polygon[i], centre[j], polygon[j])) continue;
       double f = 0;  // linear in the shape: the pieces' sum is the element's
-      for (const Poly3& piece : shape[j]) f += cpu::pointToPolygon(centre[i], normal[i], piece, glm::normalize(newellNormal(piece)));
+      for (const Poly3& piece : shape[j])
+        f += cpu::pointToPolygon(centre[i], normal[i], piece, glm::normalize(newellNormal(piece)));
       F[i * n + j] = float(f);
     }
   });

@@ -27,7 +27,8 @@ OperatorSamples sampleOperator(SolverState& state, const StochasticSettings& set
     out.power.push_back(power);
   }
   out.variance.resize(n);
-  for (std::size_t t = 0; t < n; ++t) out.variance[t] = applications > 1 ? m2[t] / double(applications - 1) : glm::dvec3(0.0);
+  for (std::size_t t = 0; t < n; ++t)
+    out.variance[t] = applications > 1 ? m2[t] / double(applications - 1) : glm::dvec3(0.0);
   return out;
 }
 

@@ -7,16 +7,16 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
-#include <numeric>
 #include <nlohmann/json.hpp>
+#include <numeric>
 
 #include "src/base/AtomicFile.h"
+#include "src/base/Error.h"
 #include "src/output/Figure.h"
 #include "src/output/Provenance.h"
 #include "src/scene/Camera.h"
-#include "src/validate/DenseSolver.h"
 #include "src/solver/ProgressiveSolver.h"
-#include "src/base/Error.h"
+#include "src/validate/DenseSolver.h"
 #include "src/validate/ExactReference.h"
 #include "src/validate/FormFactorProbe.h"
 
@@ -36,7 +36,8 @@ double percentile(std::vector<double>& v, double q) {
 struct ObjectSums {
   std::vector<double> shooterArea;            // per object
   std::vector<std::vector<double>> handedOn;  // [a][b]: sum over a's shooters of A_i F_i->b
-  explicit ObjectSums(size_t objects) : shooterArea(objects, 0.0), handedOn(objects, std::vector<double>(objects, 0.0)) {}
+  explicit ObjectSums(size_t objects)
+      : shooterArea(objects, 0.0), handedOn(objects, std::vector<double>(objects, 0.0)) {}
 };
 
 // Shooter s's exact samples, added to the object sums.
@@ -46,7 +47,8 @@ std::vector<PairSample> exactFromShooter(ExactReference& exact, std::size_t s, c
   std::vector<PairSample> samples = exact.fromShooter(s);
   sums.shooterArea[objectOf(s)] += atlas.positionArea[s].w;
   for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
-    if (samples[t].formFactor > 0) sums.handedOn[objectOf(s)][objectOf(t)] += samples[t].formFactor * atlas.positionArea[t].w;
+    if (samples[t].formFactor > 0)
+      sums.handedOn[objectOf(s)][objectOf(t)] += samples[t].formFactor * atlas.positionArea[t].w;
   return samples;
 }
 
@@ -76,7 +78,8 @@ struct LevelTally {
       seesAnything = seesAnything || ref.visible;
       st.falseVisible += gv && !ref.visible;
       st.falseHidden += !gv && ref.visible;
-      if (ref.formFactor > 0) relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
+      if (ref.formFactor > 0)
+        relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
     }
     return seesAnything ? misplaced : -1.0;
   }
@@ -165,7 +168,8 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
   for (Projection projection : o.projections)
     for (int resolution : o.itemResolutions)
       for (int level : o.levels) {
-        const bool first = v.levels.empty(), figureConfig = projection == o.projections[0] && resolution == o.itemResolutions[0];
+        const bool first = v.levels.empty(),
+                   figureConfig = projection == o.projections[0] && resolution == o.itemResolutions[0];
         FormFactorProbe probe(state, level, resolution, projection);
         LevelStats st;
         st.projection = projection;
@@ -185,8 +189,10 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
         // Figure samples: the chosen shooter at the first configuration's lowest and highest level.
         if (figureConfig && (level == o.levels.front() || level == o.levels.back())) {
           std::vector<ProbeSample> gpu = probe.fromShooter(shooters[figureIndex]);
-          if (level == o.levels.front()) v.figureGpu.assign(2, gpu);
-          else v.figureGpu[1] = std::move(gpu);
+          if (level == o.levels.front())
+            v.figureGpu.assign(2, gpu);
+          else
+            v.figureGpu[1] = std::move(gpu);
         }
       }
   v.figureShooter = shooters[figureIndex];
@@ -235,22 +241,38 @@ int runValidate(const ValidateOptions& o) {
     using nlohmann::json;
     json levels = json::array(), ffs = json::array();
     for (const LevelStats& s : v.levels)
-      levels.push_back({{"hemisphere", projectionName(s.projection)}, {"item_resolution", s.itemResolution},
-                        {"item_subdivision", s.itemSubdivision}, {"item_triangles", s.itemTriangles},
-                        {"texel_pairs", s.texelPairs}, {"visibility_agreement", s.visibilityAgreement},
-                        {"false_visible", s.falseVisible}, {"false_hidden", s.falseHidden},
-                        {"ff_rel_error_median", s.ffRelErrorMedian}, {"ff_rel_error_mean", s.ffRelErrorMean},
+      levels.push_back({{"hemisphere", projectionName(s.projection)},
+                        {"item_resolution", s.itemResolution},
+                        {"item_subdivision", s.itemSubdivision},
+                        {"item_triangles", s.itemTriangles},
+                        {"texel_pairs", s.texelPairs},
+                        {"visibility_agreement", s.visibilityAgreement},
+                        {"false_visible", s.falseVisible},
+                        {"false_hidden", s.falseHidden},
+                        {"ff_rel_error_median", s.ffRelErrorMedian},
+                        {"ff_rel_error_mean", s.ffRelErrorMean},
                         {"ff_rel_error_p95", s.ffRelErrorP95},
-                        {"ff_rel_error_max", s.ffRelErrorMax}, {"gpu_ms", s.gpuMs}});
-    for (const auto& f : v.objectFormFactors) ffs.push_back({{"from", f.from}, {"to", f.to}, {"exact", f.exact}, {"gpu", f.gpu}});
-    json report = {{"scene", o.scene},         {"backend", backend->name()}, {"renderer", backend->renderer()},
-                   {"elements", v.elements},   {"shooters", v.shooters},     {"exact_ms", v.exactMs},
-                   {"total_ms", totalMs},      {"levels", levels},           {"object_form_factors", ffs},
+                        {"ff_rel_error_max", s.ffRelErrorMax},
+                        {"gpu_ms", s.gpuMs}});
+    for (const auto& f : v.objectFormFactors)
+      ffs.push_back({{"from", f.from}, {"to", f.to}, {"exact", f.exact}, {"gpu", f.gpu}});
+    json report = {{"scene", o.scene},
+                   {"backend", backend->name()},
+                   {"renderer", backend->renderer()},
+                   {"elements", v.elements},
+                   {"shooters", v.shooters},
+                   {"exact_ms", v.exactMs},
+                   {"total_ms", totalMs},
+                   {"levels", levels},
+                   {"object_form_factors", ffs},
                    {"provenance", provenanceJson(provenance(backend->name(), backend->renderer()))}};
     if (o.solution) {
       json sol = json::array();
       for (const SolutionError& e : v.solution)
-        sol.push_back({{"object", e.object}, {"mean_dense", e.meanDense}, {"mean_gpu", e.meanGpu}, {"rmse", e.rmse},
+        sol.push_back({{"object", e.object},
+                       {"mean_dense", e.meanDense},
+                       {"mean_gpu", e.meanGpu},
+                       {"rmse", e.rmse},
                        {"max_error", e.maxError}});
       report["solution"] = {{"shots", v.solutionShots}, {"convergence", o.solutionConvergence}, {"objects", sol}};
     }
@@ -273,8 +295,8 @@ std::vector<std::vector<std::string>> levelRows(const Validation& v) {
                     fmt::format("{}", s.falseVisible), fmt::format("{}", s.falseHidden),
                     // significant digits: the errors span decades, and a fixed 4 decimals shows 0.0000
                     fmt::format("{:.3g}", s.ffRelErrorMedian), fmt::format("{:.3g}", s.ffRelErrorMean),
-                    fmt::format("{:.3g}", s.ffRelErrorP95),
-                    fmt::format("{:.3g}", s.ffRelErrorMax), fmt::format("{:.0f}", s.gpuMs)});
+                    fmt::format("{:.3g}", s.ffRelErrorP95), fmt::format("{:.3g}", s.ffRelErrorMax),
+                    fmt::format("{:.0f}", s.gpuMs)});
   return rows;
 }
 

@@ -7,13 +7,13 @@
 
 #include "gl/Backend.h"
 #include "src/output/Provenance.h"
+#include "src/scene/Atlas.h"
 #include "src/scene/Camera.h"
-#include "src/validate/ExactReference.h"
-#include "src/validate/FormFactorProbe.h"
+#include "src/scene/SceneLoader.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/solver/SolverState.h"
-#include "src/scene/Atlas.h"
-#include "src/scene/SceneLoader.h"
+#include "src/validate/ExactReference.h"
+#include "src/validate/FormFactorProbe.h"
 
 namespace hemirad {
 
@@ -30,7 +30,7 @@ struct ValidateOptions {
   std::optional<std::string> camera;  // for the camera-view figures
   std::string report, figures;
   std::string figureSize;  // --figure-size (parseFigureSize)
-  bool solution = false;           // also compare a converged GPU solve with the dense solution
+  bool solution = false;   // also compare a converged GPU solve with the dense solution
   double solutionConvergence = 0.999;
 };
 

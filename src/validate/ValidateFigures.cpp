@@ -21,8 +21,8 @@ namespace {
 // values, distinct also for colour-blind readers.
 enum Class { kBothVisible, kBothHidden, kFalseVisible, kFalseHidden, kShooter, kNotFacing };
 const std::pair<std::string, std::string> kClasses[] = {
-    {"visible in both", "#d9d9d9"},  {"hidden in both", "#737373"}, {"false visible (GPU only)", "#e66100"},
-    {"false hidden (exact only)", "#0073b3"}, {"the shooter", "#009e73"}, {"not facing", "#1a1a1a"}};
+    {"visible in both", "#d9d9d9"},           {"hidden in both", "#737373"}, {"false visible (GPU only)", "#e66100"},
+    {"false hidden (exact only)", "#0073b3"}, {"the shooter", "#009e73"},    {"not facing", "#1a1a1a"}};
 constexpr int kNoTexel = -1;
 
 std::vector<int> classify(const Atlas& atlas, const Validation& v, int which) {
@@ -32,9 +32,9 @@ std::vector<int> classify(const Atlas& atlas, const Validation& v, int which) {
     const PairSample& e = v.figureExact[t];
     const bool g = v.figureGpu[size_t(which)][t].visible > 0.5f;
     c[t] = t == v.figureShooter ? kShooter
-           : !e.facing         ? kNotFacing
-           : e.visible         ? (g ? kBothVisible : kFalseHidden)
-                               : (g ? kFalseVisible : kBothHidden);
+           : !e.facing          ? kNotFacing
+           : e.visible          ? (g ? kBothVisible : kFalseHidden)
+                                : (g ? kFalseVisible : kBothHidden);
   }
   return c;
 }
@@ -79,9 +79,16 @@ void addLevelPlots(Figures& figures, const std::string& dir, const std::string& 
       "hemisphere,item_resolution,item_subdivision,item_triangles,texel_pairs,visibility_agreement,false_visible,"
       "false_hidden,ff_rel_error_median,ff_rel_error_p95,ff_rel_error_max,gpu_ms,ff_rel_error_mean\n";
   const std::string L = "item-mesh subdivision level L";
-  LinePlot agreement{title + ": item-buffer visibility vs exact (CGAL)", L, "fraction of shooter-receiver pairs agreeing", false, false, {}};
-  LinePlot falses{title + ": visibility disagreements", L, "false visible + false hidden, fraction of pairs", false, true, {}};
-  LinePlot ffError{title + ": form factor vs exact", L, "relative error of F: 95th percentile and mean", false, true, {}};
+  LinePlot agreement{title + ": item-buffer visibility vs exact (CGAL)",
+                     L,
+                     "fraction of shooter-receiver pairs agreeing",
+                     false,
+                     false,
+                     {}};
+  LinePlot falses{
+      title + ": visibility disagreements", L, "false visible + false hidden, fraction of pairs", false, true, {}};
+  LinePlot ffError{
+      title + ": form factor vs exact", L, "relative error of F: 95th percentile and mean", false, true, {}};
   auto seriesFor = [](LinePlot& plot, const std::string& label) -> PlotSeries& {
     for (auto& s : plot.series)
       if (s.label == label) return s;

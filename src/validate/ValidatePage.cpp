@@ -27,13 +27,14 @@ std::string table(const std::string& id, const std::vector<std::vector<std::stri
 }
 
 std::string figure(const std::string& stem, const std::string& caption, const char* width = "100%") {
-  return fmt::format("<figure style=\"width:{2}\"><img src=\"{0}.svg\" alt=\"{1}\"><figcaption>{1} "
-                     "(<a href=\"{0}.pdf\">PDF</a>)</figcaption></figure>\n",
-                     stem, escape(caption), width);
+  return fmt::format(
+      "<figure style=\"width:{2}\"><img src=\"{0}.svg\" alt=\"{1}\"><figcaption>{1} "
+      "(<a href=\"{0}.pdf\">PDF</a>)</figcaption></figure>\n",
+      stem, escape(caption), width);
 }
 
 std::vector<std::vector<std::string>> provenanceRows(const Provenance& p) {
-  return {{"", "this run"}, {"hemirad", p.version}, {"git commit", p.gitHash}, {"command line", p.commandLine},
+  return {{"", "this run"},       {"hemirad", p.version},  {"git commit", p.gitHash}, {"command line", p.commandLine},
           {"backend", p.backend}, {"renderer", p.renderer}};
 }
 
@@ -70,18 +71,23 @@ std::string validationPage(const std::string& title, const Scene& scene, const A
       "<h2>Per texel, one shooter</h2>\n<p>The shooter element at ({:.4g}, {:.4g}, {:.4g}) on {}: the one whose "
       "visibility errors misplace the most form factor at L = {} ({}).</p>\n",
       shooter.x, shooter.y, shooter.z, escape(object), low, escape(configName(v.levels.front())));
-  page += fmt::format("<figure style=\"width:96%\"><img src=\"view_visibility_L{0}.png\" alt=\"camera view, L = {0}\" "
-                      "style=\"width:49%\"> <img src=\"view_visibility_L{1}.png\" alt=\"camera view, L = {1}\" "
-                      "style=\"width:49%\">"
-                      "<figcaption>Camera view of the visibility classes at L = {0} and L = {1}: light grey visible "
-                      "in both, dark grey hidden in both, orange false visible (the GPU sees, the exact test does "
-                      "not), blue false hidden, green the shooter, black not facing.</figcaption></figure>\n",
-                      low, high);
-  page += figure(fmt::format("atlas_visibility_L{}", low), fmt::format("visibility classes on the atlas, L = {}", low), "47%") +
-          figure(fmt::format("atlas_visibility_L{}", high), fmt::format("visibility classes on the atlas, L = {}", high), "47%") +
+  page += fmt::format(
+      "<figure style=\"width:96%\"><img src=\"view_visibility_L{0}.png\" alt=\"camera view, L = {0}\" "
+      "style=\"width:49%\"> <img src=\"view_visibility_L{1}.png\" alt=\"camera view, L = {1}\" "
+      "style=\"width:49%\">"
+      "<figcaption>Camera view of the visibility classes at L = {0} and L = {1}: light grey visible "
+      "in both, dark grey hidden in both, orange false visible (the GPU sees, the exact test does "
+      "not), blue false hidden, green the shooter, black not facing.</figcaption></figure>\n",
+      low, high);
+  page += figure(fmt::format("atlas_visibility_L{}", low), fmt::format("visibility classes on the atlas, L = {}", low),
+                 "47%") +
+          figure(fmt::format("atlas_visibility_L{}", high),
+                 fmt::format("visibility classes on the atlas, L = {}", high), "47%") +
           figure(fmt::format("atlas_ff_error_L{}", high),
                  fmt::format("relative form-factor error on the atlas, L = {} (log colour scale; black: no exact "
-                             "value)", high), "62%");
+                             "value)",
+                             high),
+                 "62%");
   page += "<h2>Object to object form factors</h2>\n" + table("form_factors", formFactorRows(v));
   return page + "</body></html>\n";
 }

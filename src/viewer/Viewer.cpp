@@ -12,8 +12,8 @@
 #include <thread>
 
 #include "src/base/AtomicFile.h"
-#include "src/solver/Control.h"
 #include "src/base/Error.h"
+#include "src/solver/Control.h"
 #include "src/viewer/ViewerWindow.h"
 #include "src/viewer/ViewerWorker.h"
 
@@ -72,13 +72,27 @@ void writeScreenshot(const std::string& path, glm::ivec2 size, const std::vector
 void apply(ViewerControls& c, ViewerWindow::Action a) {
   using A = ViewerWindow::Action;
   switch (a) {
-    case A::Progressive: c.algorithm = Algorithm::Progressive, ++c.restarts; break;
-    case A::Importance: c.algorithm = Algorithm::Importance, ++c.restarts; break;
-    case A::Perspective: c.algorithm = Algorithm::Perspective, ++c.restarts; break;
-    case A::Restart: ++c.restarts; break;
-    case A::Ambient: c.ambient = !c.ambient; break;
-    case A::Pause: c.paused = !c.paused; break;
-    case A::Screenshot: case A::Quit: break;  // not controls: the window loop's own
+    case A::Progressive:
+      c.algorithm = Algorithm::Progressive, ++c.restarts;
+      break;
+    case A::Importance:
+      c.algorithm = Algorithm::Importance, ++c.restarts;
+      break;
+    case A::Perspective:
+      c.algorithm = Algorithm::Perspective, ++c.restarts;
+      break;
+    case A::Restart:
+      ++c.restarts;
+      break;
+    case A::Ambient:
+      c.ambient = !c.ambient;
+      break;
+    case A::Pause:
+      c.paused = !c.paused;
+      break;
+    case A::Screenshot:
+    case A::Quit:
+      break;  // not controls: the window loop's own
   }
 }
 
@@ -135,7 +149,8 @@ struct FrameRate {
   double fps = 0;
   void presented(std::chrono::steady_clock::time_point now) {
     ++frames;
-    if (double s = std::chrono::duration<double>(now - start).count(); s >= 0.5) fps = frames / s, frames = 0, start = now;
+    if (double s = std::chrono::duration<double>(now - start).count(); s >= 0.5)
+      fps = frames / s, frames = 0, start = now;
   }
 };
 

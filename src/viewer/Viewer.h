@@ -6,9 +6,9 @@
 
 #include "gl/Backend.h"
 #include "src/output/InstantRenderer.h"
-#include "src/solver/ProgressiveSolver.h"
-#include "src/scene/SceneLoader.h"
 #include "src/scene/Atlas.h"
+#include "src/scene/SceneLoader.h"
+#include "src/solver/ProgressiveSolver.h"
 
 namespace hemirad {
 
@@ -28,11 +28,11 @@ struct ViewerOptions {
   std::optional<std::string> camera;
   int width = 800, height = 600;
   double exposure = 0;
-  bool ambient = true;          // seed 004's display-only ambient term
-  double frameMs = 33;          // solver time budget per frame
-  unsigned shotsPerFrame = 0;   // instead of the budget: exactly this many shots a frame (deterministic)
-  unsigned frames = 0;          // quit after this many frames (0: when the window closes)
-  std::string screenshot;       // PNG of the window's last frame, written on quit
+  bool ambient = true;         // seed 004's display-only ambient term
+  double frameMs = 33;         // solver time budget per frame
+  unsigned shotsPerFrame = 0;  // instead of the budget: exactly this many shots a frame (deterministic)
+  unsigned frames = 0;         // quit after this many frames (0: when the window closes)
+  std::string screenshot;      // PNG of the window's last frame, written on quit
 };
 
 // The mouse and key controls, for --help and the terminal.

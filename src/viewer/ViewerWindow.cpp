@@ -84,25 +84,26 @@ ViewerWindow::ViewerWindow(int width, int height, const std::string& title) : st
 
   glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
     if (action != GLFW_PRESS) return;
-    static const std::pair<int, Action> keys[] = {
-        {GLFW_KEY_1, Action::Progressive}, {GLFW_KEY_2, Action::Importance}, {GLFW_KEY_3, Action::Perspective},
-        {GLFW_KEY_R, Action::Restart},     {GLFW_KEY_M, Action::Ambient},    {GLFW_KEY_SPACE, Action::Pause},
-        {GLFW_KEY_P, Action::Screenshot},  {GLFW_KEY_ESCAPE, Action::Quit}};
+    static const std::pair<int, Action> keys[] = {{GLFW_KEY_1, Action::Progressive}, {GLFW_KEY_2, Action::Importance},
+                                                  {GLFW_KEY_3, Action::Perspective}, {GLFW_KEY_R, Action::Restart},
+                                                  {GLFW_KEY_M, Action::Ambient},     {GLFW_KEY_SPACE, Action::Pause},
+                                                  {GLFW_KEY_P, Action::Screenshot},  {GLFW_KEY_ESCAPE, Action::Quit}};
     for (auto [k, a] : keys)
       if (k == key) static_cast<State*>(glfwGetWindowUserPointer(win))->input.actions.push_back(a);
   });
   glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int) {
-    if (button == GLFW_MOUSE_BUTTON_LEFT) static_cast<State*>(glfwGetWindowUserPointer(win))->dragging = action == GLFW_PRESS;
+    if (button == GLFW_MOUSE_BUTTON_LEFT)
+      static_cast<State*>(glfwGetWindowUserPointer(win))->dragging = action == GLFW_PRESS;
   });
   glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
     State* s = static_cast<State*>(glfwGetWindowUserPointer(win));
     if (s->dragging) s->input.drag += glm::dvec2(x, y) - s->cursor;
     s->cursor = {x, y};
   });
-  glfwSetWindowRefreshCallback(w, [](GLFWwindow* win) { static_cast<State*>(glfwGetWindowUserPointer(win))->damaged = true; });
-  glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) {
-    static_cast<State*>(glfwGetWindowUserPointer(win))->damaged = true;
-  });
+  glfwSetWindowRefreshCallback(
+      w, [](GLFWwindow* win) { static_cast<State*>(glfwGetWindowUserPointer(win))->damaged = true; });
+  glfwSetFramebufferSizeCallback(
+      w, [](GLFWwindow* win, int, int) { static_cast<State*>(glfwGetWindowUserPointer(win))->damaged = true; });
 }
 
 ViewerWindow::~ViewerWindow() {
@@ -126,7 +127,8 @@ ViewerWindow::Input ViewerWindow::input() {
   auto held = [w](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0 : 0.0; };
   Input in = std::move(state_->input);
   state_->input = {};
-  in.move = {held(GLFW_KEY_W) - held(GLFW_KEY_S), held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_E) - held(GLFW_KEY_Q)};
+  in.move = {held(GLFW_KEY_W) - held(GLFW_KEY_S), held(GLFW_KEY_D) - held(GLFW_KEY_A),
+             held(GLFW_KEY_E) - held(GLFW_KEY_Q)};
   in.fast = held(GLFW_KEY_LEFT_SHIFT) + held(GLFW_KEY_RIGHT_SHIFT) > 0;
   return in;
 }

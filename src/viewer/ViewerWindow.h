@@ -17,10 +17,10 @@ class ViewerWindow {
  public:
   enum class Action { Progressive, Importance, Perspective, Restart, Ambient, Pause, Screenshot, Quit };
   struct Input {
-    glm::dvec2 drag{0.0};          // screen units the mouse moved with the left button held
-    glm::dvec3 move{0.0};          // held keys: forward (W/S), right (D/A), up (E/Q), each -1..1
-    bool fast = false;             // shift held
-    std::vector<Action> actions;   // keys pressed since the last input(), in order
+    glm::dvec2 drag{0.0};         // screen units the mouse moved with the left button held
+    glm::dvec3 move{0.0};         // held keys: forward (W/S), right (D/A), up (E/Q), each -1..1
+    bool fast = false;            // shift held
+    std::vector<Action> actions;  // keys pressed since the last input(), in order
   };
 
   // Throws std::runtime_error, one line, if there is no display or no window.
@@ -38,7 +38,7 @@ class ViewerWindow {
   Input input();
   bool damaged();  // exposed or resized since the last call: draw again
 
-  void draw(const ViewerFrame& frame);  // into the back buffer, top-left aligned
+  void draw(const ViewerFrame& frame);         // into the back buffer, top-left aligned
   std::vector<std::uint8_t> readBack() const;  // the back buffer, RGBA rows bottom-up
   void swap();
 

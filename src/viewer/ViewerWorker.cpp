@@ -9,10 +9,10 @@
 #include <utility>
 
 #include "src/base/Clock.h"
-#include "src/scene/Atlas.h"
 #include "src/output/Image.h"
 #include "src/output/InstantRenderer.h"
 #include "src/output/Renderer.h"
+#include "src/scene/Atlas.h"
 
 namespace hemirad {
 
@@ -83,8 +83,9 @@ void workInstant(const ViewerOptions& o, const Scene& scene, ViewerLink& link) {
     }
     const auto t0 = Clock::now();
     const Image image = renderer.render(c.camera, c.width, c.height, 1, o.shading).image;
-    ViewerFrame frame{c.width, c.height, bottomUpRgba(toneMap(image, exposureScale(image, o.exposure)), c.width, c.height),
-                      "instant", SolveStatus{}, msSince(t0)};
+    ViewerFrame frame{
+        c.width,   c.height,      bottomUpRgba(toneMap(image, exposureScale(image, o.exposure)), c.width, c.height),
+        "instant", SolveStatus{}, msSince(t0)};
     shown = c;
     ++frames;
     if (!publish(link, std::move(frame))) return;
@@ -142,8 +143,12 @@ void workProgressive(const ViewerOptions& o, const Scene& scene, ViewerLink& lin
     if (!c.paused && !status.done) status = shootFrame(o, *solver, status, batch, solveFrames, t0);
     renderer->setAmbient(c.ambient);
     Image image = renderer->render(c.camera, c.width, c.height, 1);
-    ViewerFrame frame{c.width, c.height, bottomUpRgba(toneMap(image, exposureScale(image, o.exposure)), c.width, c.height),
-                      solver->algorithm(), status, msSince(t0)};
+    ViewerFrame frame{c.width,
+                      c.height,
+                      bottomUpRgba(toneMap(image, exposureScale(image, o.exposure)), c.width, c.height),
+                      solver->algorithm(),
+                      status,
+                      msSince(t0)};
     shown = c;
     ++frames, ++solveFrames;
     if (!publish(link, std::move(frame))) return;

@@ -1,7 +1,7 @@
 #include "src/walk/CameraPath.h"
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -12,7 +12,8 @@ namespace hemirad {
 Camera CameraPath::at(double time) const {
   std::size_t k = 1;
   while (k < keys.size() && keys[k].time < time) ++k;
-  if (k == keys.size() || time <= keys.front().time) return time <= keys.front().time ? keys.front().camera : keys.back().camera;
+  if (k == keys.size() || time <= keys.front().time)
+    return time <= keys.front().time ? keys.front().camera : keys.back().camera;
   const Keyframe &a = keys[k - 1], &b = keys[k];
   const double s = (time - a.time) / (b.time - a.time);
   Camera c;
@@ -41,7 +42,8 @@ CameraPath readCameraPath(const std::string& path, const Camera& base, double un
     if (end == first.c_str() || *end != '\0' || !std::isfinite(time) || time < 0)
       throw InputError(fmt::format("{}: a keyframe starts with its time in seconds, not '{}'", where, first));
     if (!out.keys.empty() && time <= out.keys.back().time)
-      throw InputError(fmt::format("{}: keyframe times must increase ({} after {})", where, time, out.keys.back().time));
+      throw InputError(
+          fmt::format("{}: keyframe times must increase ({} after {})", where, time, out.keys.back().time));
     std::string rest;
     std::getline(fields, rest);
     previous = parseCamera(rest, previous, where);

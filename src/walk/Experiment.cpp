@@ -1,15 +1,15 @@
 #include "src/walk/Experiment.h"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <filesystem>
-#include <fmt/format.h>
 
 #include "src/base/AtomicFile.h"
-#include "src/base/OutputPaths.h"
-#include "src/scene/Atlas.h"
-#include "src/base/Error.h"
 #include "src/base/DataDir.h"
+#include "src/base/Error.h"
+#include "src/base/OutputPaths.h"
 #include "src/output/Figure.h"
+#include "src/scene/Atlas.h"
 #include "src/scene/SceneLoader.h"
 
 namespace hemirad {
@@ -65,7 +65,9 @@ std::string summaryMarkdown(const std::vector<Run>& runs, const ExperimentOption
       o.walkthrough.frameShots ? fmt::format("{} shots", o.walkthrough.frameShots)
                                : fmt::format("{} ms of solver time", o.walkthrough.frameMs),
       o.referenceConvergence);
-  md += "| scene | elements | algorithm | shots | deliveries | mean image error | mean error with ambient | mean visible convergence |";
+  md +=
+      "| scene | elements | algorithm | shots | deliveries | mean image error | mean error with ambient | mean visible "
+      "convergence |";
   for (const LightingEvent& e : kEvents) md += fmt::format(" {} (ms / shots) |", e.name);
   md += "\n|---|---|---|---|---|---|---|---|";
   for (std::size_t k = 0; k < std::size(kEvents); ++k) md += "---|";
@@ -96,18 +98,21 @@ std::string winsMarkdown(const std::vector<Run>& runs) {
       if (a.scene != p.scene || a.algorithm == "progressive") continue;
       if (p.still) {
         for (unsigned n = 64; n <= p.frames.back().shots; n *= 2) {
-          const FrameRecord& at = *std::find_if(p.frames.begin(), p.frames.end(), [n](const FrameRecord& r) { return r.shots >= n; });
+          const FrameRecord& at =
+              *std::find_if(p.frames.begin(), p.frames.end(), [n](const FrameRecord& r) { return r.shots >= n; });
           const FrameRecord* reach = nullptr;
           for (const FrameRecord& r : a.frames)
             if (!reach && r.imageError <= at.imageError) reach = &r;
-          still += reach ? fmt::format("| {} | {} | {} | {:.4f} | {} | {:.1f} |\n", p.scene, a.algorithm, at.shots,
-                                       at.imageError, reach->shots, double(at.shots) / reach->shots)
-                         : fmt::format("| {} | {} | {} | {:.4f} | - | - |\n", p.scene, a.algorithm, at.shots, at.imageError);
+          still +=
+              reach ? fmt::format("| {} | {} | {} | {:.4f} | {} | {:.1f} |\n", p.scene, a.algorithm, at.shots,
+                                  at.imageError, reach->shots, double(at.shots) / reach->shots)
+                    : fmt::format("| {} | {} | {} | {:.4f} | - | - |\n", p.scene, a.algorithm, at.shots, at.imageError);
         }
         continue;
       }
       for (const Run& b : runs) {
-        if (b.scene != a.scene || b.algorithm == a.algorithm || (a.algorithm == "importance" && b.algorithm != "progressive"))
+        if (b.scene != a.scene || b.algorithm == a.algorithm ||
+            (a.algorithm == "importance" && b.algorithm != "progressive"))
           continue;
         std::size_t asGood = 0;
         double ratio = 0;
@@ -122,19 +127,29 @@ std::string winsMarkdown(const std::vector<Run>& runs) {
   }
   std::string md;
   if (!still.empty())
-    md += "\n## Shots to progressive refinement's error (still camera)\n\n"
-          "| scene | algorithm | progressive shots N | its image error | shots to reach it | N / shots |\n"
-          "|---|---|---|---|---|---|\n" + still;
+    md +=
+        "\n## Shots to progressive refinement's error (still camera)\n\n"
+        "| scene | algorithm | progressive shots N | its image error | shots to reach it | N / shots |\n"
+        "|---|---|---|---|---|---|\n" +
+        still;
   if (!moving.empty())
-    md += "\n## Frame by frame (moving camera)\n\n"
-          "| scene | algorithms | frames with error at most the other's | mean error ratio |\n|---|---|---|---|\n" + moving;
+    md +=
+        "\n## Frame by frame (moving camera)\n\n"
+        "| scene | algorithms | frames with error at most the other's | mean error ratio |\n|---|---|---|---|\n" +
+        moving;
   return md;
 }
 
 void plotScene(Figures& figures, const std::string& out, const std::string& scene, const std::vector<Run>& runs) {
   const std::string yLabel = "image error vs converged (mean |dL| / mean L)";
-  LinePlot error{scene + ": image error along the path", "solver time (s)", "image error vs converged", false, true, {}};
-  LinePlot visible{scene + ": visible convergence along the path", "solver time (s)", "light in frame / converged", false, false, {}};
+  LinePlot error{
+      scene + ": image error along the path", "solver time (s)", "image error vs converged", false, true, {}};
+  LinePlot visible{scene + ": visible convergence along the path",
+                   "solver time (s)",
+                   "light in frame / converged",
+                   false,
+                   false,
+                   {}};
   LinePlot byShots{scene + ": image error against shots", "radiosity shots", yLabel, true, true, {}};
   LinePlot byTime{scene + ": image error against solver time", "solver time (ms)", yLabel, true, true, {}};
   for (const Run& run : runs) {
@@ -176,7 +191,8 @@ int runExperiment(ExperimentOptions o) {
     const std::string name = std::filesystem::path(path).stem().string();
     const std::string pathFile =
         o.cameraPath.empty() ? std::filesystem::path(path).replace_extension(".path").string() : o.cameraPath;
-    if (!std::filesystem::exists(pathFile)) throw InputError(fmt::format("{}: no camera path {} beside it", path, pathFile));
+    if (!std::filesystem::exists(pathFile))
+      throw InputError(fmt::format("{}: no camera path {} beside it", path, pathFile));
     const CameraPath cameraPath = readCameraPath(pathFile, resolveCamera(scene, std::nullopt), scene.unitScale);
     const Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, o.elements), backend->maxTextureSize());
     ConvergedViews converged(scene, atlas, o.progressive, o.referenceConvergence, true);
@@ -203,7 +219,8 @@ int runExperiment(ExperimentOptions o) {
   for (const Run& run : runs)
     for (const LightingEvent& e : kEvents) {
       const FrameRecord* r = firstReaching(run, e);
-      csv += r ? fmt::format("{},{},{},{},{:.2f},{}\n", run.scene, run.elements, run.algorithm, e.name, r->solveMs, r->shots)
+      csv += r ? fmt::format("{},{},{},{},{:.2f},{}\n", run.scene, run.elements, run.algorithm, e.name, r->solveMs,
+                             r->shots)
                : fmt::format("{},{},{},{},,\n", run.scene, run.elements, run.algorithm, e.name);
     }
   writeTextFile(o.out + "/events.csv", csv);
@@ -212,7 +229,8 @@ int runExperiment(ExperimentOptions o) {
     for (const std::string& name : names) plotScene(figures, o.out, name, runs);
     figures.write();
   }
-  const std::string md = summaryMarkdown(runs, o, fmt::format("{} ({})", backend->name(), backend->renderer())) + winsMarkdown(runs);
+  const std::string md =
+      summaryMarkdown(runs, o, fmt::format("{} ({})", backend->name(), backend->renderer())) + winsMarkdown(runs);
   writeTextFile(o.out + "/summary.md", md);
   fmt::print("{}", md);
   return 0;

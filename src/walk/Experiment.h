@@ -22,8 +22,8 @@ struct ExperimentOptions {
   ProgressiveSettings progressive;
   WalkthroughOptions walkthrough;  // fps, frame budget, frame size
   std::string cameraPath;          // instead of SCENE.path beside each scene (e.g. a still camera)
-  std::string out;  // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
-  std::string figureSize;  // --figure-size (parseFigureSize)
+  std::string out;                 // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
+  std::string figureSize;          // --figure-size (parseFigureSize)
   bool frames = false;             // also keep every frame's PNG (written by walkthrough.writeFrame)
   bool figures = true;             // the SVG/PDF plots (matplotlib); without, the CSVs and summary only
   gl::BackendOptions backend;

@@ -6,13 +6,17 @@ namespace hemirad {
 
 std::vector<CLI::Option*> addExperimentFlags(CLI::App* x, ExperimentOptions& e) {
   using options::add;
-  std::vector<CLI::Option*> flags{
-      add(x, "--scenes", e.scenes), add(x, "--algorithms", e.algorithms), add(x, "--elements", e.elements),
-      add(x, "--fps", e.walkthrough.fps), add(x, "--frame-ms", e.walkthrough.frameMs),
-      add(x, "--camera-path", e.cameraPath, "SCENE.path beside each scene"),
-      add(x, "--width", e.walkthrough.width), add(x, "--height", e.walkthrough.height),
-      add(x, "--ambient", e.walkthrough.ambient), add(x, "--reference-convergence", e.referenceConvergence),
-      add(x, "--fov-decay", e.progressive.fovDecayShots)};
+  std::vector<CLI::Option*> flags{add(x, "--scenes", e.scenes),
+                                  add(x, "--algorithms", e.algorithms),
+                                  add(x, "--elements", e.elements),
+                                  add(x, "--fps", e.walkthrough.fps),
+                                  add(x, "--frame-ms", e.walkthrough.frameMs),
+                                  add(x, "--camera-path", e.cameraPath, "SCENE.path beside each scene"),
+                                  add(x, "--width", e.walkthrough.width),
+                                  add(x, "--height", e.walkthrough.height),
+                                  add(x, "--ambient", e.walkthrough.ambient),
+                                  add(x, "--reference-convergence", e.referenceConvergence),
+                                  add(x, "--fov-decay", e.progressive.fovDecayShots)};
   // --preset alone: the walkthroughs' item buffer and shooters (seed 004's runs: --preset seed003).
   flags.push_back(options::add(x, "--preset", e.progressive.preset)->each([&e](const std::string& name) {
     e.progressive.usePreset(name);

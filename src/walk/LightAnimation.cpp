@@ -7,13 +7,13 @@
 #include <vector>
 
 #include "src/base/AtomicFile.h"
-#include "src/walk/SolutionError.h"
 #include "src/base/Error.h"
 #include "src/output/ImageFile.h"
 #include "src/output/Renderer.h"
 #include "src/scene/Camera.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/walk/LightPath.h"
+#include "src/walk/SolutionError.h"
 
 namespace hemirad {
 

@@ -19,9 +19,9 @@ struct AnimationOptions {
   Discretisation discretisation;
   std::optional<std::string> camera;
   double fps = 10;
-  unsigned frameIterations = 32;      // --frame-shots
+  unsigned frameIterations = 32;        // --frame-shots
   double referenceConvergence = 0.999;  // each frame's progressive reference
-  StochasticSettings stochastic;      // window: --window (default 64)
+  StochasticSettings stochastic;        // window: --window (default 64)
   int width = 256, height = 256;
   gl::BackendOptions backend;
 };

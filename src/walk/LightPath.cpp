@@ -64,7 +64,9 @@ Scene withLightsMoved(const Scene& scene, const glm::dvec3& offset) {
 
 Atlas withLightsMoved(const Atlas& atlas, const Scene& scene, const glm::dvec3& offset) {
   Atlas out = atlas;
-  auto emits = [&](std::size_t polygon) { return scene.materials[std::size_t(scene.polygons()[polygon].material)].emissive(); };
+  auto emits = [&](std::size_t polygon) {
+    return scene.materials[std::size_t(scene.polygons()[polygon].material)].emissive();
+  };
   for (Chart& c : out.charts)  // a chart is one material: it moves whole
     if (emits(std::size_t(c.polygon))) {
       c.frame.origin += offset;

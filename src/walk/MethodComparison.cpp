@@ -8,12 +8,12 @@
 #include <functional>
 
 #include "src/base/AtomicFile.h"
-#include "src/base/OutputPaths.h"
 #include "src/base/Clock.h"
-#include "src/walk/SolutionError.h"
 #include "src/base/DataDir.h"
+#include "src/base/OutputPaths.h"
 #include "src/output/Figure.h"
 #include "src/scene/SceneLoader.h"
+#include "src/walk/SolutionError.h"
 
 namespace hemirad {
 
@@ -65,15 +65,17 @@ int runMethodComparison(MethodComparisonOptions o) {
   auto backend = gl::createBackend(o.backend);
   Figures figures(provenance(backend->name(), backend->renderer()), parseFigureSize(o.figureSize));
   std::filesystem::create_directories(o.out);
-  std::string summary = fmt::format("# Error against solver time: progressive vs stochastic ({}, {})\n\n"
-                                    "| scene | elements | method | shots / iterations | solver ms | RMS error / mean (non-emitters) |\n"
-                                    "|---|---|---|---|---|---|\n",
-                                    backend->name(), backend->renderer());
+  std::string summary = fmt::format(
+      "# Error against solver time: progressive vs stochastic ({}, {})\n\n"
+      "| scene | elements | method | shots / iterations | solver ms | RMS error / mean (non-emitters) |\n"
+      "|---|---|---|---|---|---|\n",
+      backend->name(), backend->renderer());
   for (const std::string& path : o.scenes) {
     const Scene scene = loadScene(path);
     validateSolvable(scene);
     const double angle = Discretisation{}.chartAngle;  // both methods share the default atlas
-    const Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, o.elements, angle), backend->maxTextureSize(), 0, angle);
+    const Atlas atlas =
+        buildAtlas(scene, texelSizeForElements(scene, o.elements, angle), backend->maxTextureSize(), 0, angle);
     ProgressiveSettings p = o.progressive;
     p.shootLevel = 0;  // one-texel shooters, as stochastic iteration's: the same discrete operator
     p.timings = gl::TimerMode::Off;
@@ -89,7 +91,8 @@ int runMethodComparison(MethodComparisonOptions o) {
     st.stop = {o.iterations, 0};
     SolverState stState(scene, atlas);
     StochasticSolver stochastic(stState, st);
-    const std::vector<Sample> stSamples = trace(*backend, stState, stochastic, reference, [](const Sample&) { return false; });
+    const std::vector<Sample> stSamples =
+        trace(*backend, stState, stochastic, reference, [](const Sample&) { return false; });
     SolverState prState(scene, atlas);
     ProgressiveSolver progressive(prState, p);
     const double budget = stSamples.back().solverMs;
@@ -97,16 +100,20 @@ int runMethodComparison(MethodComparisonOptions o) {
         trace(*backend, prState, progressive, reference, [budget](const Sample& s) { return s.solverMs > budget; });
 
     const std::string name = std::filesystem::path(path).stem().string();
-    writeTextFile(o.out + "/" + name + "_methods.csv",
-                  "method,shots,solver_ms,relative_rms_error\n" + csv("progressive", prSamples) + csv("stochastic", stSamples));
+    writeTextFile(
+        o.out + "/" + name + "_methods.csv",
+        "method,shots,solver_ms,relative_rms_error\n" + csv("progressive", prSamples) + csv("stochastic", stSamples));
     figures.add(o.out + "/" + name + "_error_vs_time",
-                LinePlot{fmt::format("{}: {} elements", name, atlas.elements), "solver time (ms)",
-                         "RMS error of luminance / mean (non-emitters)", true, true,
+                LinePlot{fmt::format("{}: {} elements", name, atlas.elements),
+                         "solver time (ms)",
+                         "RMS error of luminance / mean (non-emitters)",
+                         true,
+                         true,
                          {series("progressive (K = " + std::to_string(p.shootersPerPass) + ")", prSamples),
                           series("stochastic (K = " + std::to_string(st.shooters) + ")", stSamples)}});
     for (const auto& [method, samples] : {std::pair{"progressive", &prSamples}, {"stochastic", &stSamples}})
-      summary += fmt::format("| {} | {} | {} | {} | {:.0f} | {:.4f} |\n", name, atlas.elements, method, samples->back().shots,
-                             samples->back().solverMs, samples->back().error);
+      summary += fmt::format("| {} | {} | {} | {} | {:.0f} | {:.4f} |\n", name, atlas.elements, method,
+                             samples->back().shots, samples->back().solverMs, samples->back().error);
     fmt::print(stderr, "hemirad: {}: reference to {}, {} samples each, into {}\n", name, o.referenceConvergence,
                stSamples.size(), o.out);
   }

@@ -20,7 +20,7 @@ struct MethodComparisonOptions {
   unsigned iterations = 1024;            // stochastic iterations; progressive gets the same solver time at most
   ProgressiveSettings progressive;       // item buffer, shooters per pass (also the stochastic K)
   std::uint32_t seed = 1;
-  std::string out;  // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
+  std::string out;         // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
   std::string figureSize;  // --figure-size (parseFigureSize)
   gl::BackendOptions backend;
 };

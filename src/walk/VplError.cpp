@@ -63,7 +63,8 @@ Image sideBySide(const Image& left, const Image& right) {
     for (int x = 0; x < out.width; ++x)
       for (int c = 0; c < 3; ++c) {
         const Image& from = x < left.width ? left : right;
-        out.rgb[(std::size_t(y) * out.width + x) * 3 + c] = from.rgb[(std::size_t(y) * left.width + x % left.width) * 3 + c];
+        out.rgb[(std::size_t(y) * out.width + x) * 3 + c] =
+            from.rgb[(std::size_t(y) * left.width + x % left.width) * 3 + c];
       }
   return out;
 }
@@ -108,7 +109,8 @@ int runVplError(VplErrorOptions o) {
     const std::vector<double>& errors = region.absolute;
     const double escaped = stats.emitted > 0 ? stats.escaped / stats.emitted : 0.0;
     csv += fmt::format("{},{},{:.6g},{:.6g},{:.1f}", vpls, stats.paths, render.clampBias(), escaped, ms);
-    table += fmt::format("| {} | {} | {:.2f} % | {:.2f} % |", vpls, stats.paths, 100 * render.clampBias(), 100 * escaped);
+    table +=
+        fmt::format("| {} | {} | {:.2f} % | {:.2f} % |", vpls, stats.paths, 100 * render.clampBias(), 100 * escaped);
     for (std::size_t r = 0; r < errors.size(); ++r) {
       csv += fmt::format(",{:.6g}", errors[r]);
       table += fmt::format(" {:.4f} |", errors[r]);
@@ -123,11 +125,10 @@ int runVplError(VplErrorOptions o) {
   writeTextFile(o.out + "/" + name + "_vpl_error.md", table);
   Figures figures(provenance(backend->name(), backend->renderer()), parseFigureSize(o.figureSize));
   figures.add(o.out + "/" + name + "_vpl_error",
-              LinePlot{fmt::format("{}: instant radiosity vs progressive ({} x {} px)", name, o.width, o.height), "VPLs",
-                       "mean relative luminance error per pixel", true, true, series});
+              LinePlot{fmt::format("{}: instant radiosity vs progressive ({} x {} px)", name, o.width, o.height),
+                       "VPLs", "mean relative luminance error per pixel", true, true, series});
   figures.write();
-  if (!o.sideBySide.empty())
-    writePng(o.sideBySide, sideBySide(last, reference), exposureScale(reference, 0));
+  if (!o.sideBySide.empty()) writePng(o.sideBySide, sideBySide(last, reference), exposureScale(reference, 0));
   fmt::print("{}", table);
   return 0;
 }

@@ -24,7 +24,7 @@ struct VplErrorOptions {
   double referenceConvergence = 0.999;
   std::optional<std::string> camera;
   int width = 96, height = 96;
-  std::string out;  // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
+  std::string out;         // --out-dir; empty: a fresh ./hemirad-COMMAND folder (freshFolder)
   std::string figureSize;  // --figure-size (parseFigureSize)
   std::string sideBySide;  // a PNG: instant (largest count) | progressive
   gl::BackendOptions backend;

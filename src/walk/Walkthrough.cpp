@@ -1,9 +1,9 @@
 #include "src/walk/Walkthrough.h"
 
+#include <fmt/format.h>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
@@ -104,11 +104,13 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
 }
 
 void writeFramesCsv(const std::string& path, const std::vector<FrameRecord>& frames) {
-  std::string out = "frame,time_s,solve_ms,shots,importance_shots,delivery_shots,convergence,visible_convergence,image_error,shown_error,image_rms,shown_rms\n";
+  std::string out =
+      "frame,time_s,solve_ms,shots,importance_shots,delivery_shots,convergence,visible_convergence,image_error,shown_"
+      "error,image_rms,shown_rms\n";
   for (const FrameRecord& r : frames)
-    out += fmt::format("{},{:.4f},{:.2f},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", r.frame, r.time, r.solveMs,
-                       r.shots, r.importanceShots, r.deliveryShots, r.convergence, r.visibleConvergence, r.imageError,
-                       r.shownError, r.imageRms, r.shownRms);
+    out += fmt::format("{},{:.4f},{:.2f},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}\n", r.frame, r.time,
+                       r.solveMs, r.shots, r.importanceShots, r.deliveryShots, r.convergence, r.visibleConvergence,
+                       r.imageError, r.shownError, r.imageRms, r.shownRms);
   writeTextFile(path, out);
 }
 

@@ -34,9 +34,10 @@ Scene unitSquare() {
 
 // ---- discretisation: texel size and element count against the GPU's limits
 
-TEST_CASE("Bad input: a texel size whose atlas is over the GPU texture limit is one error naming the limit and a size "
-          "that fits",
-          "[cli][bad-input]") {
+TEST_CASE(
+    "Bad input: a texel size whose atlas is over the GPU texture limit is one error naming the limit and a size "
+    "that fits",
+    "[cli][bad-input]") {
   std::string obj = writeScene("tiny-texels", kQuad + "f 1 2 3 4\n");
   expectRefused("tiny-texels", solve(obj) + " --texel-size 1e-5",
                 {"texel size 1e-05 needs a", "GL_MAX_TEXTURE_SIZE", "use --texel-size", "or --elements"});

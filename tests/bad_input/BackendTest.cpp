@@ -15,14 +15,16 @@ using hemirad::test::count;
 
 // ---- backends
 
-TEST_CASE("Backend failure: a missing OSMesa library is one error naming the file, exit 1, no output", "[cli][backend]") {
+TEST_CASE("Backend failure: a missing OSMesa library is one error naming the file, exit 1, no output",
+          "[cli][backend]") {
   std::string obj = writeScene("no-osmesa", kQuad + "f 1 2 3 4\n");
   Outputs out("no-osmesa");
   test::Run run = test::hemirad(solve(obj) + out.flags, "HEMIRAD_OSMESA_LIBRARY=/no/such/libOSMesa.so.8");
   INFO(run.output);
   CHECK(run.exitCode == 1);
   CHECK(count(run.output, "hemirad: error:") == 1);
-  CHECK_THAT(run.output, Contains("hemirad: error: osmesa: cannot load HEMIRAD_OSMESA_LIBRARY=/no/such/libOSMesa.so.8"));
+  CHECK_THAT(run.output,
+             Contains("hemirad: error: osmesa: cannot load HEMIRAD_OSMESA_LIBRARY=/no/such/libOSMesa.so.8"));
   CHECK(out.empty());
 }
 
@@ -41,11 +43,13 @@ TEST_CASE("Backend failure: a missing EGL library with --backend egl is one erro
 TEST_CASE("Backend failure: --backend auto without an EGL library warns and falls back to OSMesa", "[cli][backend]") {
   std::string obj = writeScene("auto", kQuad + "f 1 2 3 4\n");
   std::string report = test::tempPath("auto.json");
-  test::Run run = test::hemirad(solve(obj) + " --backend auto --report " + report, "HEMIRAD_EGL_LIBRARY=/no/such/libEGL.so.1");
+  test::Run run =
+      test::hemirad(solve(obj) + " --backend auto --report " + report, "HEMIRAD_EGL_LIBRARY=/no/such/libEGL.so.1");
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
   CHECK(count(run.output, "hemirad: warning:") == 1);
-  CHECK_THAT(run.output, Contains("hemirad: warning: --backend auto: egl: cannot load HEMIRAD_EGL_LIBRARY=/no/such/libEGL.so.1"));
+  CHECK_THAT(run.output,
+             Contains("hemirad: warning: --backend auto: egl: cannot load HEMIRAD_EGL_LIBRARY=/no/such/libEGL.so.1"));
   CHECK_THAT(run.output, Contains("falling back to osmesa"));
   CHECK(nlohmann::json::parse(std::ifstream(report))["backend"] == "osmesa");
 }

@@ -2,8 +2,8 @@
 // a checkpoint has its own extension and never names an input, two outputs never share a file
 // or stream, a full disk is an error naming the flag, the path and the reason, and a run that
 // fails on one output leaves none of the others.
-#include <catch2/catch.hpp>
 #include <fmt/format.h>
+#include <catch2/catch.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -76,7 +76,8 @@ TEST_CASE("Bad input: two outputs on one file or stream, after symlinks, are one
        {std::tuple<std::string, std::string, std::string>{"--out " + dir + "/a.exr --atlas " + dir + "/a.exr",
                                                           "--out " + dir + "/a.exr", "--atlas " + dir + "/a.exr"},
         {"--report - --ply /dev/stdout", "--report -", "--ply /dev/stdout"},
-        {"--image " + dir + "/b.png --out " + dir + "/link.png", "--out " + dir + "/link.png", "--image " + dir + "/b.png"},
+        {"--image " + dir + "/b.png --out " + dir + "/link.png", "--out " + dir + "/link.png",
+         "--image " + dir + "/b.png"},
         {"--gltf " + dir + "/g.glb --atlas " + dir + "/g.lightmap.exr", "--atlas " + dir + "/g.lightmap.exr",
          "--gltf " + dir + "/g.lightmap.exr"}}) {
     test::Run run = test::hemirad(solve(obj) + " " + flags);

@@ -30,22 +30,24 @@ TEST_CASE("Bad input: an unknown flag is one error naming it", "[cli][bad-input]
 
 TEST_CASE("Bad input: a non-numeric or out-of-range flag value is one error naming the flag", "[cli][bad-input]") {
   std::string obj = writeScene("values", kQuad + "f 1 2 3 4\n");
-  for (std::string flag : {"--shots many", "--texel-size big", "--texel-size inf", "--texel-size -1", "--elements lots",
-                           "--elements 0", "--width abc", "--exposure x", "--item-res 8", "--shooters-per-pass 65",
-                           "--gpu -1"})
+  for (std::string flag :
+       {"--shots many", "--texel-size big", "--texel-size inf", "--texel-size -1", "--elements lots", "--elements 0",
+        "--width abc", "--exposure x", "--item-res 8", "--shooters-per-pass 65", "--gpu -1"})
     expectRefused("values", solve(obj) + " " + flag, {flag.substr(0, flag.find(' '))});
 }
 
-TEST_CASE("Bad input: a flag of the other method, a seed that is not a number, or stochastic iteration without "
-          "--shots is one error naming the flag",
-          "[cli][bad-input]") {
+TEST_CASE(
+    "Bad input: a flag of the other method, a seed that is not a number, or stochastic iteration without "
+    "--shots is one error naming the flag",
+    "[cli][bad-input]") {
   std::string obj = writeScene("method-flags", kQuad + "f 1 2 3 4\n");
   const std::string stochastic = solve(obj) + " --method stochastic";
   for (std::string flag : {"--converge 0.5", "--shoot-level 1", "--algorithm importance", "--fov-decay 8"})
     expectRefused("method-flags", stochastic + " " + flag,
                   {flag.substr(0, flag.find(' ')), "is for --method progressive, not stochastic"});
   for (std::string flag : {"--seed 3", "--transport mean"})
-    expectRefused("method-flags", solve(obj) + " " + flag, {flag.substr(0, flag.find(' ')), "is for --method stochastic"});
+    expectRefused("method-flags", solve(obj) + " " + flag,
+                  {flag.substr(0, flag.find(' ')), "is for --method stochastic"});
   for (std::string flag : {"--seed abc", "--seed -1", "--seed 4294967296", "--transport average"})
     expectRefused("method-flags", stochastic + " " + flag, {flag.substr(0, flag.find(' '))});
   expectRefused("method-flags", "solve " + obj + " --quiet --method stochastic", {"--method stochastic needs --shots"});

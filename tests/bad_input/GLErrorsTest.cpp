@@ -1,8 +1,8 @@
 // GL errors (docs/errors.md): out of GPU memory names the allocation, --gl-debug reports every
 // KHR_debug message and the driver's words for a GL error, and a normal solve raises none.
-#include <catch2/catch.hpp>
 #include <fcntl.h>
 #include <unistd.h>
+#include <catch2/catch.hpp>
 
 #include <cstdio>
 #include <filesystem>
@@ -52,14 +52,16 @@ std::string captureStderr(Fn&& fn) {
 
 TEST_CASE("GL_OUT_OF_MEMORY allocating a buffer or texture is an error naming the allocation and its size", "[gl]") {
   test::backend();
-  CHECK_THROWS_WITH(gl::Buffer(std::size_t(1) << 42), Contains("out of GPU memory allocating a buffer of 4398046511104 bytes (4096.00 GiB)"));
+  CHECK_THROWS_WITH(gl::Buffer(std::size_t(1) << 42),
+                    Contains("out of GPU memory allocating a buffer of 4398046511104 bytes (4096.00 GiB)"));
   CHECK_THROWS_WITH(gl::Texture(GL_RGBA32F, 16384, 16384, 2048),
                     Contains("out of GPU memory allocating a 16384 x 16384 x 2048 GL_RGBA32F texture (8192.00 GiB)"));
   CHECK(gl::takeError() == 0);
   CHECK_NOTHROW(gl::Buffer(64));  // and the context goes on working
 }
 
-TEST_CASE("With GL debug output every KHR_debug message is reported and a GL error names the driver's message", "[gl]") {
+TEST_CASE("With GL debug output every KHR_debug message is reported and a GL error names the driver's message",
+          "[gl]") {
   test::backend();
   std::string error;
   std::string printed = captureStderr([&] {

@@ -14,15 +14,19 @@ using Catch::Contains;
 using hemirad::test::count;
 namespace fs = std::filesystem;
 
-TEST_CASE("Bad input: an output path in a missing folder or naming a folder is one error naming the flag before solving",
-          "[cli][bad-input]") {
+TEST_CASE(
+    "Bad input: an output path in a missing folder or naming a folder is one error naming the flag before solving",
+    "[cli][bad-input]") {
   std::string obj = writeScene("unwritable", kQuad + "f 1 2 3 4\n");
   std::string file = fs::path(obj).parent_path() / "m.mtl";  // a file, used as a folder below
   std::string folder = test::tempPath("a-folder");
   fs::create_directories(folder);
   for (auto [flag, path] : {std::pair<std::string, std::string>{"--out", "/no/such/folder/x.exr"},
-                            {"--image", file + "/x.png"}, {"--report", folder}, {"--atlas", "/no/such/a.exr"},
-                            {"--ply", folder}, {"--gltf", "/no/such/folder/x.glb"}}) {
+                            {"--image", file + "/x.png"},
+                            {"--report", folder},
+                            {"--atlas", "/no/such/a.exr"},
+                            {"--ply", folder},
+                            {"--gltf", "/no/such/folder/x.glb"}}) {
     test::Run run = test::hemirad(solve(obj) + " " + flag + " " + path);
     INFO(run.output);
     CHECK(run.exitCode == 2);

@@ -2,8 +2,8 @@
 // indices, non-finite coordinates, materials defined twice or unknown, no emitter, reflectance
 // out of range: one error line naming the file and line, exit code 2, no output. Repairs
 // (zero-area, non-planar faces) warn with the line and go on.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cctype>
 #include <cstdint>
 #include <filesystem>
@@ -123,8 +123,9 @@ TEST_CASE("Bad input: a scene of zero-area faces only warns for each and is one 
   CHECK(out.empty());
 }
 
-TEST_CASE("Bad input: a non-planar polygon is split into triangles with a warning naming its line and the solve goes on",
-          "[cli][bad-input]") {
+TEST_CASE(
+    "Bad input: a non-planar polygon is split into triangles with a warning naming its line and the solve goes on",
+    "[cli][bad-input]") {
   std::string obj = kQuad;
   obj.replace(obj.find("v 1 1 0"), 7, "v 1 1 0.5");
   obj = writeScene("non-planar", obj + "f 1 2 3 4\n");
@@ -136,9 +137,10 @@ TEST_CASE("Bad input: a non-planar polygon is split into triangles with a warnin
   CHECK(fs::exists(out.dir + "/r.json"));
 }
 
-TEST_CASE("A face repeating its vertex cycle is read once with one warning: the single cycle's area, and a solve's "
-          "convergence never goes negative",
-          "[cli][bad-input]") {
+TEST_CASE(
+    "A face repeating its vertex cycle is read once with one warning: the single cycle's area, and a solve's "
+    "convergence never goes negative",
+    "[cli][bad-input]") {
   // A triangle given twice reads as the triangle.
   const Scene triangle = loadScene(writeScene("cycle-triangle", kQuad + "f 1 2 3\n"));
   const Scene twice = loadScene(writeScene("cycle-triangle-twice", kQuad + "f 1 2 3 1 2 3\n"));
@@ -224,12 +226,15 @@ TEST_CASE("Bad input: a scene without emitters is one error saying so", "[cli][b
   expectRefused("dark", solve(obj), {"s.obj: no emitter"});
 }
 
-TEST_CASE("Reflectance exactly 1 (Kd 1) is solved with one warning naming the material, and converges in an open "
-          "scene",
-          "[cli][bad-input]") {
+TEST_CASE(
+    "Reflectance exactly 1 (Kd 1) is solved with one warning naming the material, and converges in an open "
+    "scene",
+    "[cli][bad-input]") {
   // The lamp quad at z = 0 facing +z, a white quad at z = 1 facing it.
-  const std::string obj = writeScene("rho-one", kQuad + "f 1 2 3 4\nv 0 0 1\nv 0 1 1\nv 1 1 1\nv 1 0 1\nusemtl white\n"
-                                                        "f 5 6 7 8\n",
+  const std::string obj = writeScene("rho-one",
+                                     kQuad +
+                                         "f 1 2 3 4\nv 0 0 1\nv 0 1 1\nv 1 1 1\nv 1 0 1\nusemtl white\n"
+                                         "f 5 6 7 8\n",
                                      kMtl + "newmtl white\nKd 1 1 1\n");
   const Scene scene = loadScene(obj);
   CHECK(scene.materials.back().reflectance == glm::dvec3(1.0));
@@ -312,9 +317,10 @@ TEST_CASE("Bad input: a glTF 1.0 file (.gltf or .glb) is one error saying to con
 
 // ---- no emitter
 
-TEST_CASE("Bad input: the no-emitter error names glTF's emissiveFactor for glTF, and never suggests --emission ka "
-          "when it was given",
-          "[cli][bad-input]") {
+TEST_CASE(
+    "Bad input: the no-emitter error names glTF's emissiveFactor for glTF, and never suggests --emission ka "
+    "when it was given",
+    "[cli][bad-input]") {
   // The glTF Cornell box with its light made dark: its emissiveFactor (and the comma after it) removed.
   std::string text = test::readText(test::sourcePath("scenes/cornell/cornell.gltf"));
   const std::size_t at = text.find("\"emissiveFactor\"");

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "src/scene/Atlas.h"
 #include "src/base/Error.h"
+#include "src/scene/Atlas.h"
 #include "src/scene/SceneLoader.h"
 
 namespace hemirad::fuzz {

@@ -22,9 +22,9 @@ struct Outcome {
 };
 
 // Writes `mtllib scene.mtl` + the OBJ part to scene.obj and the MTL part to scene.mtl in this
-// process's temp folder (/dev/shm, else $TMPDIR) (a glTF input: the rest to scene.gltf), then runs loadScene, an atlas of about 200
-// elements (as `hemirad info` does) and validateSolvable. An InputError is the expected refusal
-// and is returned; any other exception propagates (a bug).
+// process's temp folder (/dev/shm, else $TMPDIR) (a glTF input: the rest to scene.gltf), then runs loadScene, an atlas
+// of about 200 elements (as `hemirad info` does) and validateSolvable. An InputError is the expected refusal and is
+// returned; any other exception propagates (a bug).
 Outcome loadFuzzInput(std::string_view input);
 
 }  // namespace hemirad::fuzz

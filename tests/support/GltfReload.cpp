@@ -2,8 +2,8 @@
 
 #include <tiny_gltf.h>
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cstring>
 #include <glm/gtc/quaternion.hpp>
 
@@ -25,7 +25,8 @@ std::vector<T> read(const tinygltf::Model& m, int index, int components) {
   const std::size_t stride = v.byteStride ? v.byteStride : sizeof(T) * std::size_t(components);
   const unsigned char* base = m.buffers.at(std::size_t(v.buffer)).data.data() + v.byteOffset + a.byteOffset;
   std::vector<T> out(a.count * std::size_t(components));
-  for (std::size_t i = 0; i < a.count; ++i) std::memcpy(&out[i * std::size_t(components)], base + i * stride, sizeof(T) * std::size_t(components));
+  for (std::size_t i = 0; i < a.count; ++i)
+    std::memcpy(&out[i * std::size_t(components)], base + i * stride, sizeof(T) * std::size_t(components));
   return out;
 }
 
@@ -41,7 +42,8 @@ void addPrimitive(const tinygltf::Model& m, const tinygltf::Primitive& p, std::u
     const std::uint32_t fan = std::min({indices[t], indices[t + 1], indices[t + 2]});
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t i = indices[t + std::size_t(k)];
-      out.triangles.push_back({{position[i * 3], position[i * 3 + 1], position[i * 3 + 2]}, {uv[i * 2], uv[i * 2 + 1]}, surfaces + fan});
+      out.triangles.push_back(
+          {{position[i * 3], position[i * 3 + 1], position[i * 3 + 2]}, {uv[i * 2], uv[i * 2 + 1]}, surfaces + fan});
     }
     top = std::max(top, fan + 1);
   }
@@ -90,7 +92,8 @@ ReloadedGltf reloadGltf(const std::string& path) {
     const tinygltf::BufferView& v = m.bufferViews.at(std::size_t(image.bufferView));
     const auto& data = m.buffers.at(std::size_t(v.buffer)).data;
     REQUIRE(v.byteOffset + v.byteLength <= data.size());
-    out.embeddedImage.assign(data.begin() + std::ptrdiff_t(v.byteOffset), data.begin() + std::ptrdiff_t(v.byteOffset + v.byteLength));
+    out.embeddedImage.assign(data.begin() + std::ptrdiff_t(v.byteOffset),
+                             data.begin() + std::ptrdiff_t(v.byteOffset + v.byteLength));
   }
   const tinygltf::Sampler& s = m.samplers.at(std::size_t(m.textures[0].sampler));
   out.samplerFilter = s.minFilter == s.magFilter ? s.magFilter : -1;
@@ -105,14 +108,19 @@ ReloadedGltf reloadGltf(const std::string& path) {
 
 Bands bandLuminance(const Image& image, const std::vector<int>& surface) {
   const int w = image.width, h = image.height;
-  auto lum = [&](std::size_t p) { return luminance(glm::dvec3(image.rgb[p * 3], image.rgb[p * 3 + 1], image.rgb[p * 3 + 2])); };
-  auto at = [&](int x, int y) { return x >= 0 && y >= 0 && x < w && y < h ? surface[std::size_t(y) * w + std::size_t(x)] : -3; };
+  auto lum = [&](std::size_t p) {
+    return luminance(glm::dvec3(image.rgb[p * 3], image.rgb[p * 3 + 1], image.rgb[p * 3 + 2]));
+  };
+  auto at = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < w && y < h ? surface[std::size_t(y) * w + std::size_t(x)] : -3;
+  };
   // An edge pixel: its samples saw two surfaces, or (one sample a pixel) a neighbour sees another.
   std::vector<char> edge(surface.size());
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const int s = at(x, y), n[4] = {at(x + 1, y), at(x - 1, y), at(x, y + 1), at(x, y - 1)};
-      edge[std::size_t(y) * w + std::size_t(x)] = s == -1 || std::any_of(n, n + 4, [&](int o) { return o != s && o != -3; });
+      edge[std::size_t(y) * w + std::size_t(x)] =
+          s == -1 || std::any_of(n, n + 4, [&](int o) { return o != s && o != -3; });
     }
   auto edgeWithin = [&](int x, int y, int r) {  // an edge pixel at chessboard distance <= r
     for (int j = -r; j <= r; ++j)

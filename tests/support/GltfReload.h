@@ -15,12 +15,12 @@ struct ReloadedGltf {
   std::vector<LightmapVertex> triangles;  // uv: TEXCOORD_1; surface: the fan (polygon) a triangle belongs to
   Camera camera;
   double aspect = 1;
-  std::string imageUri;                   // the lightmap texture's image, if external
-  std::string embeddedImage;              // its bytes, if in the binary chunk
-  int samplerFilter = 0;                  // mag filter, if min agrees (else -1)
-  int samplerWrap = 0;                    // wrapS, if wrapT agrees (else -1)
-  std::vector<int> emissiveTexCoords;     // per material
-  std::vector<double> baseColorSums;      // per material: R + G + B of baseColorFactor
+  std::string imageUri;                // the lightmap texture's image, if external
+  std::string embeddedImage;           // its bytes, if in the binary chunk
+  int samplerFilter = 0;               // mag filter, if min agrees (else -1)
+  int samplerWrap = 0;                 // wrapS, if wrapT agrees (else -1)
+  std::vector<int> emissiveTexCoords;  // per material
+  std::vector<double> baseColorSums;   // per material: R + G + B of baseColorFactor
 };
 // Fails the test if tinygltf cannot read `path`.
 ReloadedGltf reloadGltf(const std::string& path);

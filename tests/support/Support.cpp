@@ -5,13 +5,13 @@
 #include "cpu/Hemisphere.h"
 #include "src/output/Renderer.h"
 
+#include <sys/wait.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <sys/wait.h>
 
 namespace hemirad::test {
 
@@ -38,11 +38,12 @@ void addSphere(Scene& s, glm::dvec3 centre, double radius, int slices, int stack
                bool inward) {
   auto at = [&](int i, int j) {  // j = 0 the south pole
     const double phi = 2 * M_PI * i / slices, theta = M_PI * j / stacks;
-    return centre + radius * glm::dvec3(std::sin(theta) * std::cos(phi), -std::cos(theta), std::sin(theta) * std::sin(phi));
+    return centre +
+           radius * glm::dvec3(std::sin(theta) * std::cos(phi), -std::cos(theta), std::sin(theta) * std::sin(phi));
   };
   for (int j = 0; j < stacks; ++j)
     for (int i = 0; i < slices; ++i) {
-      Poly3 f = j == 0 ? Poly3{at(i, 0), at(i + 1, 1), at(i, 1)}
+      Poly3 f = j == 0            ? Poly3{at(i, 0), at(i + 1, 1), at(i, 1)}
                 : j == stacks - 1 ? Poly3{at(i, j), at(i + 1, j), at(i, j + 1)}
                                   : Poly3{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
       if (!inward) std::reverse(f.begin(), f.end());
@@ -55,7 +56,8 @@ void addCylinder(Scene& s, glm::dvec3 base, double radius, double height, int sl
     const double phi = 2 * M_PI * i / slices;
     return base + glm::dvec3(radius * std::cos(phi), y, radius * std::sin(phi));
   };
-  for (int i = 0; i < slices; ++i) s.addPolygon({at(i + 1, 0), at(i, 0), at(i, height), at(i + 1, height)}, material, object);
+  for (int i = 0; i < slices; ++i)
+    s.addPolygon({at(i + 1, 0), at(i, 0), at(i, height), at(i + 1, height)}, material, object);
 }
 
 gl::RenderBackend& backend() {
@@ -112,7 +114,8 @@ double exactRowSum(const Scene& scene, const Atlas& a, size_t s) {
     if (a.polygonOf[j] == kNoPolygon || a.chartAt(j) == a.chartAt(s)) continue;
     const glm::dvec3 nj = glm::normalize(glm::dvec3(a.normalOf[j]));
     for (const Poly3& piece : shape)
-      sum += cpu::pointToPolygon(glm::dvec3(a.positionArea[j]), nj, piece, glm::normalize(newellNormal(piece))) * a.positionArea[j].w;
+      sum += cpu::pointToPolygon(glm::dvec3(a.positionArea[j]), nj, piece, glm::normalize(newellNormal(piece))) *
+             a.positionArea[j].w;
   }
   return sum / a.positionArea[s].w;
 }
@@ -120,20 +123,20 @@ double exactRowSum(const Scene& scene, const Atlas& a, size_t s) {
 double meanExactRowSum(const Scene& scene, const Atlas& a) {
   double sigma = 0, area = 0;
   for (std::size_t t = 0; t < a.polygonOf.size(); ++t)
-    if (a.polygonOf[t] != kNoPolygon) sigma += exactRowSum(scene, a, t) * a.positionArea[t].w, area += a.positionArea[t].w;
+    if (a.polygonOf[t] != kNoPolygon)
+      sigma += exactRowSum(scene, a, t) * a.positionArea[t].w, area += a.positionArea[t].w;
   return sigma / area;
 }
 
 double meanDiscRowSum(const Scene& scene, const Atlas& a) {
   double sigma = 0, area = 0;
   for (std::size_t t = 0; t < a.polygonOf.size(); ++t)
-    if (a.polygonOf[t] != kNoPolygon) sigma += discRowSum(scene, a, t) * a.positionArea[t].w, area += a.positionArea[t].w;
+    if (a.polygonOf[t] != kNoPolygon)
+      sigma += discRowSum(scene, a, t) * a.positionArea[t].w, area += a.positionArea[t].w;
   return sigma / area;
 }
 
-Run hemirad(const std::string& args, const std::string& env) {
-  return shell(env + " " + HEMIRAD_BINARY + " " + args);
-}
+Run hemirad(const std::string& args, const std::string& env) { return shell(env + " " + HEMIRAD_BINARY + " " + args); }
 
 Run shell(const std::string& script) {
   std::string cmd = "HEMIRAD='" + std::string(HEMIRAD_BINARY) + "'; { " + script + "\n} 2>&1";

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "gl/Backend.h"
+#include "src/output/Image.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/Camera.h"
-#include "src/output/Image.h"
-#include "src/solver/ProgressiveSolver.h"
 #include "src/scene/Scene.h"
+#include "src/solver/ProgressiveSolver.h"
 
 namespace hemirad::test {
 
@@ -39,8 +39,7 @@ struct Solved {
 // The backend shared by the [gl] tests (OSMesa; HEMIRAD_TEST_BACKEND=egl picks EGL).
 gl::RenderBackend& backend();
 // With `camera`: importance-driven solves look from it, and the result is rendered from it.
-Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings,
-             const Camera* camera = nullptr);
+Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings, const Camera* camera = nullptr);
 const ObjectRadiosity& object(const Solved& s, const std::string& name);
 
 // What the disc form factor (docs/design.md#form-factor) hands on from element `s` in a convex scene (no

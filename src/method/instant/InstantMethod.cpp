@@ -39,20 +39,30 @@ struct InstantRun {
 nlohmann::json instantReport(const SolveOptions& o, const InstantRun& i, const gl::RenderBackend& backend,
                              const VplTracer& tracer, const VplStats& stats, const InstantImage& render) {
   const VplLevels& levels = tracer.levels();
-  return {{"method", "instant"}, {"scene", o.scene}, {"backend", backend.name()}, {"renderer", backend.renderer()},
-          {"seed", i.settings.seed}, {"shading", shadingName(i.shading)},
-          {"vpls", stats.vpls}, {"paths", stats.paths},
+  return {{"method", "instant"},
+          {"scene", o.scene},
+          {"backend", backend.name()},
+          {"renderer", backend.renderer()},
+          {"seed", i.settings.seed},
+          {"shading", shadingName(i.shading)},
+          {"vpls", stats.vpls},
+          {"paths", stats.paths},
           {"paths_per_level", std::vector<unsigned>(levels.count.begin(), levels.count.begin() + levels.deepest + 1)},
-          {"rho_avg", tracer.rhoAvg()}, {"shadow_resolution", i.settings.shadowResolution},
-          {"clamp", i.settings.clamp}, {"clamp_bias", render.clampBias()},
-          {"emitted_power", stats.emitted}, {"escaped_power", stats.escaped},
+          {"rho_avg", tracer.rhoAvg()},
+          {"shadow_resolution", i.settings.shadowResolution},
+          {"clamp", i.settings.clamp},
+          {"clamp_bias", render.clampBias()},
+          {"emitted_power", stats.emitted},
+          {"escaped_power", stats.escaped},
           {"escaped_fraction", stats.emitted > 0 ? stats.escaped / stats.emitted : 0.0},
-          {"escaped_paths", stats.escapedPaths}, {"behind_power", stats.behind}, {"behind_paths", stats.behindPaths},
-          {"image", {o.width, o.height}}, {"supersample", o.supersample},
+          {"escaped_paths", stats.escapedPaths},
+          {"behind_power", stats.behind},
+          {"behind_paths", stats.behindPaths},
+          {"image", {o.width, o.height}},
+          {"supersample", o.supersample},
           {"image_mean_luminance", meanLuminance(render.image)},
           {"image_hash", fmt::format("{:016x}", imageHash(render.image))}};
 }
-
 
 class InstantMethod final : public MethodUnit {
  public:
@@ -65,16 +75,17 @@ class InstantMethod final : public MethodUnit {
             bindFlag("--vpl-bounces", i.bounces),
             bindFlag("--vpl-clamp", i.clamp),
             bindFlag("--shadow-res", i.shadowResolution),
-            parseFlag("--shading", run_.shading,
-                      [](const std::string& s) { return s == "forward" ? Shading::Forward : Shading::Deferred; },
-                      "deferred"),
+            parseFlag(
+                "--shading", run_.shading,
+                [](const std::string& s) { return s == "forward" ? Shading::Forward : Shading::Deferred; }, "deferred"),
             bindFlag("--interleave", i.interleave)};
   }
   // Solve's outputs of radiosity per element, and checkpoints, mean nothing here.
   void settle(const SolveOptions& o) override {
     if (!o.atlas.empty() || !o.ply.empty() || !o.gltf.empty())
-      throw InputError("--atlas, --ply and --gltf need radiosity per element; --method instant shades camera pixels "
-                       "only (--out, --image)");
+      throw InputError(
+          "--atlas, --ply and --gltf need radiosity per element; --method instant shades camera pixels "
+          "only (--out, --image)");
     if (!o.checkpoint.empty() || !o.resume.empty()) throw InputError("--method instant has nothing to checkpoint");
   }
   int solve(const SolveOptions& o) const override;
@@ -83,8 +94,8 @@ class InstantMethod final : public MethodUnit {
   // Emission and one bounce per VPL level 0..15: E (1 + rho + ... + rho^16); unclamped, so only
   // the VPL sampling's noise remains (tests/InstantGLTest.cpp measures its standard error).
   ClosedBoxRun closedBox() const override {
-    return {"--vpls 512 --vpl-bounces 15 --vpl-clamp 0 --shadow-res 64 --width 48 --height 32", 2 * (1 - std::pow(0.5, 17)),
-            0.03};
+    return {"--vpls 512 --vpl-bounces 15 --vpl-clamp 0 --shadow-res 64 --width 48 --height 32",
+            2 * (1 - std::pow(0.5, 17)), 0.03};
   }
 
  private:
@@ -116,10 +127,12 @@ int InstantMethod::solve(const SolveOptions& o) const {
   report["provenance"] = provenanceJson(provenance(backend->name(), backend->renderer()));
   if (!o.report.empty()) outputs.add("--report", o.report, report.dump(2) + "\n");
   outputs.commit();
-  fmt::print(stderr, "hemirad: {}: {} VPLs from {} paths, {:.2f} % of the power escaped, clamp bias {:.2f} %, {} "
-             "shading in {:.0f} ms ({}, {})\n", o.scene, stats.vpls, stats.paths,
-             100.0 * report["escaped_fraction"].get<double>(), 100.0 * render.clampBias(), shadingName(run_.shading),
-             msSince(start), backend->name(), backend->renderer());
+  fmt::print(stderr,
+             "hemirad: {}: {} VPLs from {} paths, {:.2f} % of the power escaped, clamp bias {:.2f} %, {} "
+             "shading in {:.0f} ms ({}, {})\n",
+             o.scene, stats.vpls, stats.paths, 100.0 * report["escaped_fraction"].get<double>(),
+             100.0 * render.clampBias(), shadingName(run_.shading), msSince(start), backend->name(),
+             backend->renderer());
   return 0;
 }
 

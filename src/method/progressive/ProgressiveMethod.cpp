@@ -63,14 +63,16 @@ int ProgressiveRun::walkthrough(const SolveOptions& o, const Scene& scene, const
                                 const Camera& camera) {
   const CameraPath path = readCameraPath(o.cameraPath, camera, scene.unitScale);
   WalkthroughOptions w = o.walkthrough;
-  w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient.value_or(true), w.exposure = o.exposure;
+  w.width = o.width, w.height = o.height, w.supersample = o.supersample, w.ambient = o.ambient.value_or(true),
+  w.exposure = o.exposure;
   w.writeFrame = writePng;
   w.progress = o.progress;
   ConvergedViews converged(scene, atlas, settings_, o.referenceConvergence, o.progress);
   const std::vector<FrameRecord> frames = walk(solver_, state, path, converged, w);
   writeFramesCsv(w.framesDir + "/frames.csv", frames);
   const FrameRecord& last = frames.back();
-  fmt::print(stderr, "hemirad: {}: {} frames along {} ({} shots, visible convergence {:.4f}, image error {:.4f}) into {}\n",
+  fmt::print(stderr,
+             "hemirad: {}: {} frames along {} ({} shots, visible convergence {:.4f}, image error {:.4f}) into {}\n",
              o.scene, frames.size(), o.cameraPath, last.shots, last.visibleConvergence, last.imageError, w.framesDir);
   return 0;
 }
@@ -81,8 +83,9 @@ class ProgressiveMethod final : public AtlasMethod {
   std::vector<MethodFlag> flags() override {
     ProgressiveSettings& p = settings_;
     // --preset first: choose() binds in this order, so the flags given beside it override it.
-    return {parseFlag("--preset", p.preset, [&p](const std::string& name) { return p.usePreset(name), p.preset; },
-                      std::string(kDefaultPreset)),
+    return {parseFlag(
+                "--preset", p.preset, [&p](const std::string& name) { return p.usePreset(name), p.preset; },
+                std::string(kDefaultPreset)),
             bindFlag("--converge", p.stop.targetConvergence, "0.9; 0.9999 with --camera-path"),
             bindFlag("--shots", p.stop.maxShots),
             bindFlag("--item-subdiv", p.itemSubdivision, options::defaultText("--item-subdiv")),
@@ -93,7 +96,8 @@ class ProgressiveMethod final : public AtlasMethod {
             bindFlag("--algorithm", p.algorithm),
             bindFlag("--fov-decay", p.fovDecayShots),
             bindFlag("--shooters-per-pass", p.shootersPerPass),
-            parseFlag("--direct", perPixelDirect_, [](const std::string& v) { return v == "per-pixel"; }, "atlas"),
+            parseFlag(
+                "--direct", perPixelDirect_, [](const std::string& v) { return v == "per-pixel"; }, "atlas"),
             switchFlag("--sync-timings", [&p] { p.timings = gl::TimerMode::Synchronous; }),
             acceptFlag("--camera-path")};
   }

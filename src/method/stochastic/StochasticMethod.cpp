@@ -17,7 +17,8 @@ namespace {
 
 class StochasticRun final : public AtlasRun {
  public:
-  StochasticRun(SolverState& state, const StochasticSettings& settings) : settings_(settings), solver_(state, settings) {}
+  StochasticRun(SolverState& state, const StochasticSettings& settings)
+      : settings_(settings), solver_(state, settings) {}
   Solver& solver() override { return solver_; }
   void look(const Camera&, double) override {}
   // The ambient term stands in for light not yet shot (dB); stochastic iteration keeps its
@@ -80,9 +81,13 @@ class StochasticMethod final : public AtlasMethod {
   // shoot_level: progressive refinement's default, as checkpoints written before issue 27 hold.
   nlohmann::json identity() const override {
     const StochasticSettings& s = settings_;
-    return {{"item_subdivision", s.itemSubdivision}, {"item_resolution", s.itemResolution},
-            {"projection", projectionName(s.projection)}, {"shoot_level", 1},
-            {"shooters_per_pass", s.shooters}, {"seed", s.seed}, {"transport", sourceName(s.source)}};
+    return {{"item_subdivision", s.itemSubdivision},
+            {"item_resolution", s.itemResolution},
+            {"projection", projectionName(s.projection)},
+            {"shoot_level", 1},
+            {"shooters_per_pass", s.shooters},
+            {"seed", s.seed},
+            {"transport", sourceName(s.source)}};
   }
   const StopRule& stop() const override { return settings_.stop; }
 
