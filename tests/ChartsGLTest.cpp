@@ -65,7 +65,7 @@ double luminanceAt(const Image& im, int x, int y) {
 }  // namespace
 
 TEST_CASE("A closed box of tessellated walls solves as the untessellated box: one chart a wall, same elements, same B",
-          "[gl][charts]") {
+          "[heavy][gl][charts]") {
   const double rho = 0.5;
   Scene plain = test::cube(rho, 1.0), cut = tessellatedCube(rho, 1.0, 8);
   REQUIRE(cut.polygons().size() == 6 * 8 * 8 * 2);

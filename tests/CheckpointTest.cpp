@@ -77,7 +77,7 @@ TEST_CASE("A finished solve's checkpoint resumes to the same result with no more
   CHECK(resumed["shots"] == uninterrupted()["shots"]);
 }
 
-TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint is refused", "[cli][checkpoint]") {
+TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint is refused", "[heavy][cli][checkpoint]") {
   std::string ck = test::tempPath("refuse.ckpt");
   REQUIRE(test::hemirad(solveArgs() + " --shots 32 --checkpoint " + ck).exitCode == 0);
   auto refused = [](const test::Run& r, const std::string& why) {
@@ -121,7 +121,7 @@ TEST_CASE(
 }
 
 TEST_CASE("A perspective-driven solve resumed mid-solve gives the bitwise result of an uninterrupted one",
-          "[cli][checkpoint][perspective]") {
+          "[heavy][cli][checkpoint][perspective]") {
   // The camera in room 0 of the 4-room building, the area of interest looked at again every 2
   // shots (--fov-decay 16, 8 steps): by 20 shots surfaces have left the view, entries are held
   // in the table and deliveries are due, so the checkpoint holds all of the view's state. Seed

@@ -106,7 +106,7 @@ TEST_CASE("Determinism guard: B after a fixed number of shots hashes the same ac
 TEST_CASE(
     "The orthographic map's old name, --hemisphere stereographic, gives its bitwise result with a warning, and "
     "conformal and equal-area give others",
-    "[cli]") {
+    "[heavy][cli]") {
   auto solve = [](const std::string& flags) {
     std::string report = test::tempPath("proj" + std::to_string(std::hash<std::string>{}(flags)) + ".json");
     // Seed 003's item buffer at 128^2 and item-mesh level 0, where each map bends the mesh's straight
@@ -172,7 +172,7 @@ std::vector<std::string> documentedCommands(const std::string& doc, const std::s
 }  // namespace
 
 TEST_CASE("The README's and docs/gpu.md's commands parse as written in both binaries, space-separated values too",
-          "[cli]") {
+          "[heavy][cli]") {
   std::vector<std::pair<std::string, std::string>> commands;  // binary, arguments
   for (const std::string& args : documentedCommands("README.md", "build/hemirad "))
     commands.emplace_back("\"$HEMIRAD\"", args);

@@ -116,7 +116,7 @@ TEST_CASE("Every method takes each of its own flags, and solve declares every me
 TEST_CASE(
     "Every method killed in a checkpoint write resumes from the previous one to the bitwise result of an "
     "uninterrupted solve, or refuses --checkpoint before reading the scene",
-    "[cli][checkpoint]") {
+    "[heavy][cli][checkpoint]") {
   const std::string name = GENERATE(from_range(methodNames()));
   const std::vector<std::unique_ptr<MethodUnit>> methods = makeMethods();
   const MethodUnit& method = named(methods, name);
@@ -155,7 +155,7 @@ TEST_CASE(
 TEST_CASE(
     "Every method solves a closed box of emitting grey walls to the B it declares, and one seed gives "
     "byte-identical images",
-    "[gl][closed-box]") {
+    "[heavy][gl][closed-box]") {
   const std::string name = GENERATE(from_range(methodNames()));
   const std::vector<std::unique_ptr<MethodUnit>> methods = makeMethods();
   const MethodUnit& method = named(methods, name);

@@ -82,7 +82,7 @@ TEST_CASE("A mistyped flag or subcommand is one error naming the closest valid o
   expectOneError("bench --scnees x.obj", "did you mean --scenes?");
 }
 
-TEST_CASE("The --converge flag is checked the same in every command that takes it", "[cli][bad-input]") {
+TEST_CASE("The --converge flag is checked the same in every command that takes it", "[heavy][cli][bad-input]") {
   for (const std::string& command : {"solve " + kOptionsScene, "view " + kOptionsScene, std::string("bench")})
     for (const std::string value : {"0", "1", "nan", "x"})
       expectOneError(command + " --converge " + value, "--converge: must be in (0, 1), not '" + value + "'");
