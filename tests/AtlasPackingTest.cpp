@@ -91,7 +91,7 @@ TEST_CASE("The minimum-area rectangle of a turned rectangle's points is that rec
   CHECK(std::abs(std::abs(glm::dot(r.axis, glm::dvec2(std::cos(0.4), std::sin(0.4)))) - 0.5) == Approx(0.5));
 }
 
-TEST_CASE("Best-fit packing places every rectangle once, inside the strip, in steps linear in their count", "[cpu]") {
+TEST_CASE("Best-fit packing places every rectangle once, inside the strip, in steps linear in their count", "[heavy][cpu]") {
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> side(1, 12), longSide(1, 60);
   std::vector<std::size_t> steps;

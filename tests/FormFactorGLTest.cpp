@@ -74,7 +74,7 @@ TEST_CASE("GPU form factor between perpendicular rectangles sharing an edge matc
   }
 }
 
-TEST_CASE("Form factors converge to Howell's as elements shrink", "[gl]") {
+TEST_CASE("Form factors converge to Howell's as elements shrink", "[heavy][gl]") {
   Scene s = twoPatches(test::rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1, 1),
                        test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1, 1));
   double exact = cpu::perpendicularRectangles(1, 1, 1);

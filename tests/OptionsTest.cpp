@@ -109,7 +109,7 @@ TEST_CASE("Solve refuses atlas outputs of --method instant and unknown methods, 
 }
 
 TEST_CASE("Solve with --method progressive gives the bitwise result of the default and the report names the method",
-          "[cli]") {
+          "[heavy][cli]") {
   auto report = [](const std::string& flags) {
     const std::string path = test::tempPath("method" + std::to_string(flags.size()) + ".json");
     test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell/cornell.obj") +

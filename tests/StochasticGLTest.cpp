@@ -281,7 +281,7 @@ TEST_CASE("Stochastic iteration is bitwise deterministic for a seed, and another
   CHECK(meanFirst.hash != first.hash);
 }
 
-TEST_CASE("Stochastic camera images carry no ambient term: --ambient on and off render the same", "[cli]") {
+TEST_CASE("Stochastic camera images carry no ambient term: --ambient on and off render the same", "[heavy][cli]") {
   // The ambient term estimates light not yet shot from dB, where stochastic iteration keeps its
   // iterate: added to the running mean, it washed the image out (every bounce counted twice).
   auto render = [](const std::string& ambient) {

@@ -99,7 +99,7 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("Walkthrough flags come together: a path needs a frames folder and a budget of one kind", "[cli]") {
+TEST_CASE("Walkthrough flags come together: a path needs a frames folder and a budget of one kind", "[heavy][cli]") {
   const std::string scene = test::sourcePath("scenes/cornell/cornell.obj");
   const std::string path = test::sourcePath("scenes/cornell/cornell.path");
   for (const std::string& args :
