@@ -77,6 +77,18 @@ glm::vec3 clampedTexel(const Lightmap& map, int polygon, int i, int j) {
   return map.rgb[std::size_t(t.y) * map.width + std::size_t(t.x)];
 }
 
+// GL_LINEAR with CLAMP_TO_EDGE at continuous lightmap coordinate c (texel (i, j) spans [i, i+1)).
+glm::vec3 bilinear(const Lightmap& map, glm::dvec2 c) {
+  const glm::dvec2 p = c - 0.5, f = glm::fract(p);
+  const glm::ivec2 t(glm::floor(p));
+  auto at = [&](int x, int y) {
+    x = std::clamp(x, 0, map.width - 1), y = std::clamp(y, 0, map.height - 1);
+    return glm::dvec3(map.rgb[std::size_t(y) * map.width + std::size_t(x)]);
+  };
+  return glm::vec3(glm::mix(glm::mix(at(t.x, t.y), at(t.x + 1, t.y), f.x),
+                            glm::mix(at(t.x, t.y + 1), at(t.x + 1, t.y + 1), f.x), f.y));
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -135,6 +147,52 @@ TEST_CASE(
                  glm::any(glm::greaterThan(glm::abs(glm::fract(c) - within), glm::dvec2(1e-9)));
   }
   CHECK(misplaced == 0);
+}
+
+TEST_CASE(
+    "A chart one cell wide gets no gutter across it, and GL_LINEAR anywhere on it reads what the camera's masked "
+    "lookup does",
+    "[cpu]") {
+  // A floor, a strip 0.04 m wide (one 0.1 m cell across, ten along) and a 0.03 m square (one cell).
+  const std::string path =
+      test::writeScene("one-cell-charts",
+                       "mtllib m.mtl\nusemtl g\n"
+                       "v 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n"
+                       "v 0 0.5 0\nv 1 0.5 0\nv 1 0.5 0.04\nv 0 0.5 0.04\nf 5 6 7 8\n"
+                       "v 0 0.3 0.5\nv 0.03 0.3 0.5\nv 0.03 0.3 0.53\nv 0 0.3 0.53\nf 9 10 11 12\n",
+                       "newmtl g\nKd 0.5 0.5 0.5\n");
+  const Scene scene = loadScene(path);
+  const Atlas atlas = buildAtlas(scene, 0.1);
+  REQUIRE(atlas.charts.size() == 3);
+  std::vector<glm::vec4> B(atlas.polygonOf.size(), glm::vec4(0.0f));
+  for (std::size_t t = 0; t < B.size(); ++t)  // a different value per texel
+    if (atlas.polygonOf[t] != kNoPolygon) B[t] = glm::vec4(float(t % 7) + 1, float(t % 5) + 1, float(t) + 1, 0);
+  const Lightmap map = buildLightmap(atlas, B);
+  std::size_t slivers = 0;
+  for (std::size_t c = 0; c < atlas.charts.size(); ++c) {
+    const glm::ivec2 size = atlas.charts[c].size;
+    INFO("chart " << c << ": " << size.x << " x " << size.y);
+    CHECK(map.gutters[c] == glm::ivec2(size.x > 1 ? 1 : 0, size.y > 1 ? 1 : 0));
+    slivers += size.x == 1 || size.y == 1;
+  }
+  CHECK(slivers == 2);
+  CHECK(map.elements == atlas.elements);
+  // Points spread over each polygon: the lightmap's GL_LINEAR value against Atlas::sample (the
+  // CPU twin of camera.frag's chart-masked lookup); on the full-cell floor and on the one-cell
+  // charts both are exact reconstructions of the same texels.
+  double worst = 0;
+  for (std::size_t p = 0; p < scene.polygons().size(); ++p) {
+    const auto& v = scene.polygons()[p].vertices;
+    for (int a = 0; a <= 10; ++a)
+      for (int b = 0; b <= 10; ++b) {
+        const double u = 0.02 + 0.96 * a / 10, w = 0.02 + 0.96 * b / 10;
+        const glm::dvec3 x = glm::mix(glm::mix(v[0], v[1], u), glm::mix(v[3], v[2], u), w);
+        const glm::dvec2 coord = atlas.atlasCoord(int(p), x);
+        const glm::vec3 camera = atlas.sample(B, int(p), coord), baked = bilinear(map, map.coord(atlas, int(p), coord));
+        worst = std::max(worst, double(glm::length(camera - baked) / glm::length(camera)));
+      }
+  }
+  CHECK(worst < 1e-5);
 }
 
 TEST_CASE("Lightmap gutters copy the nearest element outward, and the packing is deterministic", "[cpu]") {

@@ -55,9 +55,10 @@ void dilate(glm::ivec2 size, std::vector<glm::vec3>& value, std::vector<char>& f
 // Copies chart `c`'s elements into the lightmap at its origin (transposed if so placed) and, if
 // asked, dilates them over its cells without element and its gutter; what falls outside the
 // image (the gutter on the border) is left out.
-void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, std::size_t chart, int gutter, bool dilateGutter,
+void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, std::size_t chart, bool dilateGutter,
                Lightmap& map) {
   const Chart& c = atlas.charts[chart];
+  const glm::ivec2 gutter = map.gutters[chart];
   const glm::ivec2 size = c.size + 2 * gutter;
   std::vector<glm::vec3> value(std::size_t(size.x) * size.y, glm::vec3(0.0f));
   std::vector<char> filled(value.size(), 0);
@@ -65,14 +66,14 @@ void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, std::size_t 
     for (int i = 0; i < c.size.x; ++i) {
       const std::size_t t = std::size_t(c.origin.y + j) * atlas.width + std::size_t(c.origin.x + i);
       if (atlas.chartAt(t) != std::uint32_t(chart)) continue;
-      const std::size_t local = std::size_t(j + gutter) * size.x + std::size_t(i + gutter);
+      const std::size_t local = std::size_t(j + gutter.y) * size.x + std::size_t(i + gutter.x);
       value[local] = glm::vec3(B[t]);
       filled[local] = 1;
       ++map.elements;
     }
   if (dilateGutter) dilate(size, value, filled);
-  const glm::ivec2 corner = map.origins[chart] - gutter;
   const bool transposed = map.transposed[chart];
+  const glm::ivec2 corner = map.origins[chart] - (transposed ? glm::ivec2(gutter.y, gutter.x) : gutter);
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) {
       const glm::ivec2 t = corner + (transposed ? glm::ivec2(y, x) : glm::ivec2(x, y));
@@ -86,7 +87,10 @@ void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, std::size_t 
 
 glm::dvec2 Lightmap::coord(const Atlas& atlas, int polygon, glm::dvec2 atlasCoord) const {
   const std::size_t chart = atlas.chartOf[std::size_t(polygon)];
-  const glm::dvec2 local = atlasCoord - glm::dvec2(atlas.charts[chart].origin);
+  const Chart& c = atlas.charts[chart];
+  glm::dvec2 local = atlasCoord - glm::dvec2(c.origin);
+  for (int k = 0; k < 2; ++k)
+    if (c.size[k] == 1) local[k] = 0.5;  // one cell across: its centre line (no gutter there)
   return (transposed[chart] ? glm::dvec2(local.y, local.x) : local) + glm::dvec2(origins[chart]);
 }
 
@@ -98,14 +102,22 @@ Lightmap buildLightmap(const Atlas& atlas, const std::vector<glm::vec4>& B, cons
   if (B.size() != atlas.polygonOf.size())
     fail("lightmap: {} radiosity texels for a {} texel atlas", B.size(), atlas.polygonOf.size());
   const int g = std::max(0, options.gutter);
-  std::vector<glm::ivec2> padded;
-  for (const Chart& c : atlas.charts) padded.push_back(c.size + 2 * g);
-  const ChartLayout layout = packCharts(padded, g, options.maxAspect);
   Lightmap map;
+  std::vector<glm::ivec2> padded;
+  bool everyGutter = true;  // only then may the packer cut the border's gutters away
+  for (const Chart& c : atlas.charts) {
+    map.gutters.push_back(glm::ivec2(c.size.x > 1 ? g : 0, c.size.y > 1 ? g : 0));
+    padded.push_back(c.size + 2 * map.gutters.back());
+    everyGutter = everyGutter && map.gutters.back() == glm::ivec2(g);
+  }
+  const ChartLayout layout = packCharts(padded, everyGutter ? g : 0, options.maxAspect);
   map.width = layout.width, map.height = layout.height, map.gutter = g, map.transposed = layout.transposed;
-  for (glm::ivec2 corner : layout.corners) map.origins.push_back(corner + g);
+  for (std::size_t c = 0; c < atlas.charts.size(); ++c) {
+    const glm::ivec2 gutter = map.gutters[c];  // the chart's own axes; the layout may have turned it
+    map.origins.push_back(layout.corners[c] + (map.transposed[c] ? glm::ivec2(gutter.y, gutter.x) : gutter));
+  }
   map.rgb.assign(std::size_t(map.width) * map.height, glm::vec3(0.0f));
-  for (std::size_t c = 0; c < atlas.charts.size(); ++c) fillChart(atlas, B, c, g, options.dilate, map);
+  for (std::size_t c = 0; c < atlas.charts.size(); ++c) fillChart(atlas, B, c, options.dilate, map);
   return map;
 }
 

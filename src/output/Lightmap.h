@@ -4,6 +4,9 @@
 // (GL_LINEAR, CLAMP_TO_EDGE) at a polygon's edge reads its own values, never black nor another
 // chart. On the lightmap's border the gutter is cut away: clamping repeats the chart's own edge.
 // One lightmap texel per element, as in the atlas; rows run from the image's top, as glTF's v does.
+// A chart one cell wide (or high) has no gutter across that side: its coordinates there are its
+// cells' centre line, so bilinear sampling reads its one column (row) alone, which holds the
+// value it has across (on real_400k most charts are such slivers and strips).
 #pragma once
 #include <cstddef>
 #include <glm/glm.hpp>
@@ -26,6 +29,7 @@ struct Lightmap {
   int width = 0, height = 0, gutter = 0;
   std::vector<glm::ivec2> origins;  // per polygon: the lightmap texel of its chart's cell (0, 0)
   std::vector<char> transposed;     // per polygon: cell (i, j) at origin + (j, i), not (i, j)
+  std::vector<glm::ivec2> gutters;  // per chart, in its own cells' x and y: gutter, or 0 across one cell
   std::vector<glm::vec3> rgb;       // per texel, row-major from row 0
   std::size_t elements = 0;
   std::size_t chartTexels = 0;  // the charts with their gutters, as far as they lie in the image
