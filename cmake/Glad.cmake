@@ -6,7 +6,7 @@ set(GLAD_OUT ${CMAKE_BINARY_DIR}/glad)
 add_custom_command(
   OUTPUT ${GLAD_OUT}/src/gl.c ${GLAD_OUT}/include/glad/gl.h
   COMMAND ${SYSTEM_PYTHON3} -m glad --quiet --reproducible --api gl:core=4.5
-          --extensions GL_KHR_debug,GL_ARB_indirect_parameters --out-path ${GLAD_OUT} c
+          --extensions GL_KHR_debug --out-path ${GLAD_OUT} c
   COMMENT "Generating the glad GL 4.5 core loader")
 add_library(glad_gl STATIC ${GLAD_OUT}/src/gl.c)
 target_include_directories(glad_gl SYSTEM PUBLIC $<BUILD_INTERFACE:${GLAD_OUT}/include>)

@@ -38,18 +38,6 @@ void drawIndexedIndirect(const Buffer& commands, std::size_t count) {
   glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, GLsizei(count), 0);
 }
 
-bool hasIndirectCount() { return GLAD_GL_ARB_indirect_parameters && glMultiDrawElementsIndirectCountARB; }
-
-void drawIndexedIndirectCount(const Buffer& commands, std::size_t first, const Buffer& counts, std::size_t countAt,
-                              std::size_t maxCount) {
-  constexpr std::size_t kCommandBytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
-  commands.bind(GL_DRAW_INDIRECT_BUFFER);
-  counts.bind(GL_PARAMETER_BUFFER_ARB);
-  glMultiDrawElementsIndirectCountARB(GL_TRIANGLES, GL_UNSIGNED_INT,
-                                      reinterpret_cast<const void*>(first * kCommandBytes),
-                                      GLintptr(countAt * sizeof(GLuint)), GLsizei(maxCount), 0);
-}
-
 void finish() { glFinish(); }
 
 }  // namespace hemirad::gl

@@ -57,13 +57,6 @@ void drawIndexedTriangles(std::size_t indices, int instances = 1);
 // Indexed triangles as `count` DrawElementsIndirectCommand records of `commands` (written by a
 // shader: a Barrier::Command first), from the bound vertex array's index buffer.
 void drawIndexedIndirect(const Buffer& commands, std::size_t count);
-// Whether drawIndexedIndirectCount can run here (GL_ARB_indirect_parameters: the H200's driver and
-// llvmpipe have it).
-bool hasIndirectCount();
-// Records first .. first + maxCount - 1 of `commands`, but only as many as the GLuint at index
-// `countAt` of `counts` says (both written by a shader: a Barrier::Command first).
-void drawIndexedIndirectCount(const Buffer& commands, std::size_t first, const Buffer& counts, std::size_t countAt,
-                              std::size_t maxCount);
 // Waits for every command enqueued so far (timing; synchronised readback is implicit).
 void finish();
 

@@ -16,7 +16,6 @@ struct DrawCommand {
 // Per chunk: bounds min (xyz) and its first index (w, bits); bounds max and its index count.
 layout(std430, binding = SSBO_ITEM_CHUNKS) readonly buffer Chunks { vec4 chunk[]; };
 layout(std430, binding = SSBO_ITEM_COMMANDS) writeonly buffer Commands { DrawCommand command[]; };
-layout(std430, binding = SSBO_ITEM_COUNTS) writeonly buffer Counts { uint counts[]; };
 uniform uint chunkCount;
 uniform float farDistance;
 
@@ -41,37 +40,12 @@ bool chunkVisible(vec3 lo, vec3 hi, uint shooter, int face) {
   return highest >= 1e-5 * farDistance - slack && !any(greaterThan(least, vec4(slack)));
 }
 
-// One workgroup a layer walks the chunks in order, 64 at a time, and writes the visible ones
-// commands packed at the front of the layer's slots (a scan in shared memory keeps the mesh's
-// order, so the item buffer is the same as drawing every chunk), its count into counts[layer] and
-// empty commands after them: a count draw (GL_ARB_indirect_parameters) reads only the count, a
-// plain one reads every slot. On real_400k about a third of 400 chunks x 80 layers survive, and
-// an idle slot cost the H200's front end ~0.7 us.
-shared uint kept[64];
-
 void main() {
-  uint lane = gl_LocalInvocationID.x, layer = gl_WorkGroupID.y, base = layer * chunkCount;
+  uint c = gl_GlobalInvocationID.x, layer = gl_GlobalInvocationID.y;
+  if (c >= chunkCount) return;
+  vec4 lo = chunk[2u * c], hi = chunk[2u * c + 1u];
   uint shooter = layer / uint(ITEM_FACES);
-  bool live = activeShooter(shooter);
-  uint written = 0u;
-  for (uint first = 0u; first < chunkCount; first += 64u) {
-    uint c = first + lane;
-    vec4 lo = c < chunkCount ? chunk[2u * c] : vec4(0.0), hi = c < chunkCount ? chunk[2u * c + 1u] : vec4(0.0);
-    bool drawn = c < chunkCount && live && chunkVisible(lo.xyz, hi.xyz, shooter, int(layer % uint(ITEM_FACES)));
-    kept[lane] = drawn ? 1u : 0u;
-    barrier();
-    for (uint step = 1u; step < 64u; step <<= 1) {  // inclusive scan
-      uint add = lane >= step ? kept[lane - step] : 0u;
-      barrier();
-      kept[lane] += add;
-      barrier();
-    }
-    if (drawn)
-      command[base + written + kept[lane] - 1u] =
-          DrawCommand(floatBitsToUint(hi.w), 1u, floatBitsToUint(lo.w), 0, layer);
-    written += kept[63];
-    barrier();  // kept[] is read before the next round writes it
-  }
-  for (uint c = written + lane; c < chunkCount; c += 64u) command[base + c] = DrawCommand(0u, 0u, 0u, 0, layer);
-  if (lane == 0u) counts[layer] = written;
+  bool drawn = activeShooter(shooter) && chunkVisible(lo.xyz, hi.xyz, shooter, int(layer % uint(ITEM_FACES)));
+  command[layer * chunkCount + c] =
+      DrawCommand(floatBitsToUint(hi.w), drawn ? 1u : 0u, floatBitsToUint(lo.w), 0, layer);
 }

@@ -48,22 +48,3 @@ TEST_CASE(
   INFO("stochastic " << stochastic);
   CHECK(stochastic == Approx(reference).epsilon(0.025));
 }
-
-// cull_items.comp packs each layer's visible chunks first and counts them; without
-// GL_ARB_indirect_parameters (Mesa can hide it) every slot is drawn, empty ones after the packed
-// ones. Both must draw each layer's chunks in the mesh's order: cornell_x4 at item mesh L1 has 152
-// chunks, so the scan runs three rounds a layer.
-TEST_CASE("Packed per-layer item draws and every-slot draws give bitwise the same radiosity", "[gl]") {
-  auto hash = [](const std::string& env) {
-    const std::string report = test::tempPath("packed-draws.json");
-    const test::Run run = test::hemirad("solve " + test::sourcePath("scenes/cornell_subdivided/cornell_x4.obj") +
-                                            " --quiet --elements 2000 --item-subdiv 1 --shots 64 --report " + report,
-                                        env);
-    INFO(env << "\n" << run.output);
-    REQUIRE(run.exitCode == 0);
-    const nlohmann::json json = test::readJson(report);
-    CHECK(json["shots"] == 64);
-    return json["radiosity_hash"].get<std::string>();
-  };
-  CHECK(hash("") == hash("MESA_EXTENSION_OVERRIDE=-GL_ARB_indirect_parameters"));
-}

@@ -85,7 +85,6 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
   if (chunkCount_) {
     chunks_ = gl::Buffer(std::span<const glm::vec4>(chunks));
     commands_ = gl::Buffer(chunkCount_ * layers * 5 * sizeof(std::uint32_t));  // DrawElementsIndirectCommand
-    counts_ = gl::Buffer(layers * sizeof(std::uint32_t));
   }
   target_.attach(GL_COLOR_ATTACHMENT0, id_);
   target_.attach(GL_DEPTH_ATTACHMENT, depth_);
@@ -105,9 +104,8 @@ void ItemBuffer::render(const gl::Buffer& control) {
   if (chunkCount_) {
     chunks_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_ITEM_CHUNKS);
     commands_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_ITEM_COMMANDS);
-    counts_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_ITEM_COUNTS);
     cull_.use();
-    gl::Program::dispatch(1, unsigned(faces_ * shooters_));
+    gl::Program::dispatch(unsigned((chunkCount_ + 63) / 64), unsigned(faces_ * shooters_));
     gl::barrier(gl::Barrier::Command);
   }
   // Every face occludes from both sides (no culling); the hemisphere clips at the horizon.
@@ -125,11 +123,7 @@ void ItemBuffer::render(const gl::Buffer& control) {
   target_.clearColor(kNoPolygon);  // every layer
   target_.clearDepth(reversed ? 0.0f : 1.0f);
   target_.bind();
-  const std::size_t layers = std::size_t(faces_) * std::size_t(shooters_);
-  if (!chunkCount_) return;
-  if (!gl::hasIndirectCount()) return gl::drawIndexedIndirect(commands_, chunkCount_ * layers);
-  for (std::size_t layer = 0; layer < layers; ++layer)  // each layer's visible chunks, packed first
-    gl::drawIndexedIndirectCount(commands_, layer * chunkCount_, counts_, layer, chunkCount_);
+  if (chunkCount_) gl::drawIndexedIndirect(commands_, chunkCount_ * std::size_t(faces_) * std::size_t(shooters_));
 }
 
 void ItemBuffer::bindForLookup(const SolverState& state, const gl::Buffer& control, const gl::Buffer& shapes) const {

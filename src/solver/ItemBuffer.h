@@ -2,7 +2,7 @@
 // from each shooter named in a control block into an R32UI polygon-id target with a depth of
 // distance / far, one layer per shooter (and hemicube face). The mesh is cut into chunks of
 // consecutive triangles; a compute pass (cull_items.comp) lists per layer the chunks it may see
-// and indirect draws render them, so a shooter draws what lies above its horizon (and in
+// and one indirect draw renders them all, so a shooter draws what lies above its horizon (and in
 // each hemicube face's frustum), not the whole scene five times. The gather and the validation
 // probe look receivers up in it (shaders/visibility.glsl).
 #pragma once
@@ -48,7 +48,6 @@ class ItemBuffer {
   gl::Buffer vertices_, indices_;
   gl::Buffer chunks_;    // per chunk: bounds and index range (cull_items.comp)
   gl::Buffer commands_;  // per layer and chunk: its indirect draw
-  gl::Buffer counts_;    // per layer: its visible chunks, whose commands come first
   gl::Buffer layers_;    // 0, 1, ...: each draw's layer, by its baseInstance
   std::size_t chunkCount_ = 0;
   gl::Buffer planes_;  // per polygon: unit normal, offset n . p (exact depths)

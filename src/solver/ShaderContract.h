@@ -19,7 +19,6 @@
   X(SSBO_PLANES, 12)           /* itembuffer.frag: per polygon unit normal and offset */                 \
   X(SSBO_ITEM_CHUNKS, 16)      /* cull_items.comp: per item-mesh chunk its bounds and indices */         \
   X(SSBO_ITEM_COMMANDS, 17)    /* cull_items.comp: the item buffer's indirect draws */                   \
-  X(SSBO_ITEM_COUNTS, 19)      /* cull_items.comp: per layer its draws */                                \
   X(SSBO_NODES, 13)            /* shooter_tree.glsl: the shooter blocks' quadtrees */                    \
   X(SSBO_NODE_STATS, 14)       /* shooter_tree.glsl: each node's unshot sums */                          \
   X(SSBO_BLOCK_LIST, 18)       /* node_stats.comp: the blocks of one workgroup size */                   \
