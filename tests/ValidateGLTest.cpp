@@ -2,6 +2,8 @@
 // the item buffer agrees better with the exact visibility as the item mesh is subdivided, to
 // 99.9% overall and 99% at contacts at L = 4, and no light leaks above a lowered ceiling light.
 #include <catch2/catch.hpp>
+#include <glm/gtc/constants.hpp>
+#include <random>
 
 #include "src/scene/SceneLoader.h"
 #include "src/validate/DenseSolver.h"
@@ -66,9 +68,9 @@ TEST_CASE("Cornell box: item-buffer visibility agreement rises with the item-mes
   CHECK(v.levels[2].ffRelErrorMedian < 1e-4);
   CHECK(v.levels[2].ffRelErrorP95 < 2e-4);
   CHECK(v.levels[1].itemTriangles * 16 == v.levels[2].itemTriangles);
-  // Object form factors: the exact and GPU estimates of floor -> back wall agree to 2%.
+  // Object form factors: the reference and GPU values of floor -> back wall agree to 2%.
   for (const auto& f : v.objectFormFactors)
-    if (f.from == "floor" && f.to == "back_wall") CHECK(f.gpu == Approx(f.exact).epsilon(0.02));
+    if (f.from == "floor" && f.to == "back_wall") CHECK(f.gpu == Approx(f.reference).epsilon(0.02));
 }
 
 TEST_CASE("Hemicube baseline: straight edges stay straight, so it agrees well without subdivision", "[heavy][gl]") {
@@ -257,4 +259,52 @@ TEST_CASE("validate's level table prints small form-factor errors in significant
   CHECK(std::stod(row.at(8)) == Approx(s.ffRelErrorMean).epsilon(0.01));
   CHECK(std::stod(row.at(9)) == Approx(s.ffRelErrorP95).epsilon(0.01));
   CHECK(std::stod(row.at(10)) == Approx(s.ffRelErrorMax).epsilon(0.01));
+}
+
+// F from the unit emitter square to the receiver one unit above it, the half-size blocker half way
+// between (scenes/analytic/blocked_squares.obj), by Monte Carlo over both squares: a segment
+// between them crosses the blocker's plane at its midpoint. Standard error ~1e-4 at 1e6 pairs.
+double blockedSquaresF() {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int n = 1000000;
+  double sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const double x0 = u(rng), y0 = u(rng), x1 = u(rng), y1 = u(rng);
+    const double mx = (x0 + x1) / 2, my = (y0 + y1) / 2;
+    if (mx > 0.25 && mx < 0.75 && my > 0.25 && my < 0.75) continue;
+    const double r2 = (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0) + 1;
+    sum += 1 / (glm::pi<double>() * r2 * r2);  // cos cos / (pi r^2), both cosines 1 / r
+  }
+  return sum / n;
+}
+
+TEST_CASE(
+    "validate's object form factor over every shooter element is within 2 % of the true F of the blocked squares, "
+    "and a sample of shooters is named as one",
+    "[gl]") {
+  test::backend();
+  Scene s = loadScene(test::sourcePath("scenes/analytic/blocked_squares.obj"));
+  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 300));
+  ValidateOptions o;
+  o.levels = {0};
+  o.itemResolutions = {128};
+  o.projections = {Projection::Hemicube};
+  auto emitterToReceiver = [&](std::optional<std::size_t> shooters) {
+    o.shooters = shooters;
+    for (const ObjectFormFactor& f : validate(s, atlas, o).objectFormFactors)
+      if (f.from == "emitter" && f.to == "receiver") return f;
+    FAIL("no emitter -> receiver form factor");
+    return ObjectFormFactor{};
+  };
+  const ObjectFormFactor all = emitterToReceiver(std::nullopt), sampled = emitterToReceiver(16);
+  const double truth = blockedSquaresF();
+  // Measured: truth 0.0995; every shooter 0.1010 (+1.5 %: receivers' centres), the GPU over the
+  // same 0.0952 (-4.4 %: one visibility a shooter and receiver pair); 9 shooters 0.1190.
+  INFO("truth " << truth << "; all " << all.shooters << " shooters: reference " << all.reference << ", GPU " << all.gpu
+                << "; " << sampled.shooters << " of " << sampled.elements << ": " << sampled.reference);
+  CHECK(all.shooters == all.elements);
+  CHECK(all.reference == Approx(truth).epsilon(0.02));
+  CHECK(sampled.shooters < sampled.elements);
+  CHECK(sampled.elements == all.elements);
 }

@@ -31,13 +31,21 @@ double percentile(std::vector<double>& v, double q) {
   return *k;
 }
 
-// F_ab over the shooters: shooter element i in a hands on sum_j in b F_ji A_j / A_i (reciprocity
-// of the receiver-to-element form factors); F_ab is the area-weighted mean over a's shooters.
+// F_ab over the shooters: shooter element i in a hands on f_i = sum_j in b F_ji A_j / A_i
+// (reciprocity of the receiver-to-element form factors); F_ab is the area-weighted mean of f_i over
+// a's shooters.
 struct ObjectSums {
   std::vector<double> shooterArea;            // per object
-  std::vector<std::vector<double>> handedOn;  // [a][b]: sum over a's shooters of A_i F_i->b
+  std::vector<std::size_t> shooters;          // per object
+  std::vector<std::vector<double>> handedOn;  // [a][b]: sum over a's shooters of A_i f_i
   explicit ObjectSums(size_t objects)
-      : shooterArea(objects, 0.0), handedOn(objects, std::vector<double>(objects, 0.0)) {}
+      : shooterArea(objects, 0.0), shooters(objects, 0), handedOn(objects, std::vector<double>(objects, 0.0)) {}
+  // Shooter element of area A in object a handing on perObject[b] = A f_b.
+  void add(std::size_t a, double A, const std::vector<double>& perObject) {
+    shooterArea[a] += A, ++shooters[a];
+    for (std::size_t b = 0; b < perObject.size(); ++b) handedOn[a][b] += perObject[b];
+  }
+  double formFactor(std::size_t a, std::size_t b) const { return handedOn[a][b] / shooterArea[a]; }
 };
 
 // Shooter s's exact samples, added to the object sums.
@@ -45,10 +53,10 @@ template <class ObjectOf>
 std::vector<PairSample> exactFromShooter(ExactReference& exact, std::size_t s, const ObjectOf& objectOf,
                                          const Atlas& atlas, ObjectSums& sums) {
   std::vector<PairSample> samples = exact.fromShooter(s);
-  sums.shooterArea[objectOf(s)] += atlas.positionArea[s].w;
+  std::vector<double> perObject(sums.shooterArea.size(), 0.0);
   for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
-    if (samples[t].formFactor > 0)
-      sums.handedOn[objectOf(s)][objectOf(t)] += samples[t].formFactor * atlas.positionArea[t].w;
+    if (samples[t].formFactor > 0) perObject[objectOf(t)] += samples[t].formFactor * atlas.positionArea[t].w;
+  sums.add(objectOf(s), atlas.positionArea[s].w, perObject);
   return samples;
 }
 
@@ -64,12 +72,12 @@ struct LevelTally {
   template <class ObjectOf>
   double add(const std::vector<ProbeSample>& gpu, const std::vector<PairSample>& reference, std::size_t s,
              const ObjectOf& objectOf, const Atlas& atlas, LevelStats& st) {
-    sums.shooterArea[objectOf(s)] += atlas.positionArea[s].w;
+    std::vector<double> perObject(sums.shooterArea.size(), 0.0);
     double misplaced = 0;
     bool seesAnything = false;
     for (std::size_t t = 0; t < gpu.size(); ++t) {
       const PairSample& ref = reference[t];
-      if (gpu[t].formFactor > 0) sums.handedOn[objectOf(s)][objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
+      if (gpu[t].formFactor > 0) perObject[objectOf(t)] += gpu[t].formFactor * atlas.positionArea[t].w;
       if (!ref.facing) continue;
       ++st.texelPairs;
       bool gv = gpu[t].visible > 0.5f;
@@ -81,6 +89,7 @@ struct LevelTally {
       if (ref.formFactor > 0)
         relErrors.push_back(std::abs(double(gpu[t].formFactor) - ref.formFactor) / ref.formFactor);
     }
+    sums.add(objectOf(s), atlas.positionArea[s].w, perObject);
     return seesAnything ? misplaced : -1.0;
   }
 
@@ -198,12 +207,13 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
   v.figureShooter = shooters[figureIndex];
   v.figureExact = reference[figureIndex];
   if (o.solution) compareSolution(scene, atlas, exact.visibility(), o, v);
+  std::vector<std::size_t> population(objects, 0);
+  for (std::size_t t : chooseShooters(atlas, std::nullopt)) ++population[objectOf(t)];
   for (size_t a = 0; a < objects; ++a)
     for (size_t b = 0; b < objects; ++b) {
       if (exactSums.shooterArea[a] <= 0) continue;
-      v.objectFormFactors.push_back({scene.objects[a].name, scene.objects[b].name,
-                                     exactSums.handedOn[a][b] / exactSums.shooterArea[a],
-                                     gpuSums.handedOn[a][b] / gpuSums.shooterArea[a]});
+      v.objectFormFactors.push_back({scene.objects[a].name, scene.objects[b].name, exactSums.formFactor(a, b),
+                                     exactSums.shooters[a], population[a], gpuSums.formFactor(a, b)});
     }
   return v;
 }
@@ -255,7 +265,12 @@ int runValidate(const ValidateOptions& o) {
                         {"ff_rel_error_max", s.ffRelErrorMax},
                         {"gpu_ms", s.gpuMs}});
     for (const auto& f : v.objectFormFactors)
-      ffs.push_back({{"from", f.from}, {"to", f.to}, {"exact", f.exact}, {"gpu", f.gpu}});
+      ffs.push_back({{"from", f.from},
+                     {"to", f.to},
+                     {"reference", f.reference},
+                     {"shooters", f.shooters},
+                     {"elements", f.elements},
+                     {"gpu", f.gpu}});
     json report = {{"scene", o.scene},
                    {"backend", backend->name()},
                    {"renderer", backend->renderer()},

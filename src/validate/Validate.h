@@ -43,9 +43,18 @@ struct LevelStats {
   double gpuMs = 0;
 };
 
+// F from object to object over the shooter elements validate takes: the exact form factors (CGAL
+// visibility, partial occlusion integrated) from those shooters to every receiver element's
+// centre, area-weighted. Over a sample of the `from` object's elements (shooters < elements) it
+// is a sample's value, not the object's F: evenly spread picks are systematic, so no standard
+// error holds (blocked squares, 9 of 121 emitter elements: 18 % off the all-element value). With
+// `--shooters all` what is left is the receivers' discretisation (docs/validation.md). The GPU value
+// is over the same shooters: GPU against reference is a paired difference.
 struct ObjectFormFactor {
   std::string from, to;
-  double exact = 0, gpu = 0;
+  double reference = 0;
+  std::size_t shooters = 0, elements = 0;  // of the `from` object: sampled, and all
+  double gpu = 0;
 };
 
 // GPU radiosity (converged) against the dense exact solution, per object (luminance of B).

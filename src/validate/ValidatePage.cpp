@@ -39,10 +39,13 @@ std::vector<std::vector<std::string>> provenanceRows(const Provenance& p) {
 }
 
 std::vector<std::vector<std::string>> formFactorRows(const Validation& v) {
-  std::vector<std::vector<std::string>> rows = {{"from", "to", "exact F", "GPU F", "relative error"}};
+  std::vector<std::vector<std::string>> rows = {{"from", "to", "shooters of its elements",
+                                                 "reference F (exact, over those shooters)", "GPU F (same shooters)",
+                                                 "relative difference"}};
   for (const ObjectFormFactor& f : v.objectFormFactors)
-    rows.push_back({f.from, f.to, fmt::format("{:.5g}", f.exact), fmt::format("{:.5g}", f.gpu),
-                    f.exact > 0 ? fmt::format("{:.3g}", (f.gpu - f.exact) / f.exact) : "-"});
+    rows.push_back({f.from, f.to, fmt::format("{} of {}", f.shooters, f.elements), fmt::format("{:.5g}", f.reference),
+                    fmt::format("{:.5g}", f.gpu),
+                    f.reference > 0 ? fmt::format("{:.3g}", (f.gpu - f.reference) / f.reference) : "-"});
   return rows;
 }
 
