@@ -6,6 +6,7 @@
 #include <random>
 
 #include "src/scene/SceneLoader.h"
+#include "src/solver/ShootingPlan.h"
 #include "src/validate/DenseSolver.h"
 #include "src/validate/ExactReference.h"
 #include "src/validate/Validate.h"
@@ -307,4 +308,19 @@ TEST_CASE(
   CHECK(all.reference == Approx(truth).epsilon(0.02));
   CHECK(sampled.shooters < sampled.elements);
   CHECK(sampled.elements == all.elements);
+}
+
+TEST_CASE("validate --item-res auto checks the item buffer a solve plans, not one of zero pixels", "[gl]") {
+  test::backend();
+  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2000));
+  ValidateOptions o;
+  o.levels = {0};
+  o.itemResolutions = {kAutoItemResolution};
+  o.projections = {Projection::Hemicube};
+  const Validation v = validate(s, atlas, o);
+  REQUIRE(v.levels.size() == 1);
+  CHECK(v.levels[0].itemResolution ==
+        planShooting(s, atlas, 0, kAutoItemResolution, Projection::Hemicube).itemResolution);
+  CHECK(v.levels[0].visibilityAgreement > 0.999);  // a zero-pixel buffer saw everything: 0.44 on real_20k
 }

@@ -16,6 +16,7 @@
 #include "src/output/Provenance.h"
 #include "src/scene/Camera.h"
 #include "src/solver/ProgressiveSolver.h"
+#include "src/solver/ShootingPlan.h"
 #include "src/validate/DenseSolver.h"
 #include "src/validate/ExactReference.h"
 #include "src/validate/FormFactorProbe.h"
@@ -175,10 +176,12 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
   double worstError = -1;
   std::size_t figureIndex = 0;  // into `shooters`
   for (Projection projection : o.projections)
-    for (int resolution : o.itemResolutions)
+    for (int asked : o.itemResolutions)
       for (int level : o.levels) {
+        // auto: what a solve with this projection plans (kAutoItemResolution is no resolution).
+        const int resolution = planShooting(scene, atlas, 0, asked, projection).itemResolution;
         const bool first = v.levels.empty(),
-                   figureConfig = projection == o.projections[0] && resolution == o.itemResolutions[0];
+                   figureConfig = projection == o.projections[0] && asked == o.itemResolutions[0];
         FormFactorProbe probe(state, level, resolution, projection);
         LevelStats st;
         st.projection = projection;
