@@ -43,15 +43,17 @@ ExactVisibility::~ExactVisibility() = default;
 std::size_t ExactVisibility::triangles() const { return impl_->triangles.size(); }
 
 bool ExactVisibility::visible(const glm::dvec3& a, int polyA, const glm::dvec3& b, int polyB) const {
+  return visible(a, b, [&](int p) { return p == polyA || p == polyB; });
+}
+
+bool ExactVisibility::visible(const glm::dvec3& a, const glm::dvec3& b, const std::function<bool(int)>& passes) const {
   Segment s(point(a), point(b));
   if (!impl_->tree.do_intersect(s)) return true;
-  // Something is touched: it hides b unless it is only a's or b's own polygon.
+  // Something is touched: it hides b unless every polygon touched passes.
   std::vector<Tree::Primitive_id> hits;
   impl_->tree.all_intersected_primitives(s, std::back_inserter(hits));
-  for (Iterator it : hits) {
-    int p = impl_->polygonOf[size_t(it - impl_->triangles.cbegin())];
-    if (p != polyA && p != polyB) return false;
-  }
+  for (Iterator it : hits)
+    if (!passes(impl_->polygonOf[size_t(it - impl_->triangles.cbegin())])) return false;
   return true;
 }
 

@@ -1,6 +1,7 @@
 // Exact visibility between points on the scene's polygons: a CGAL AABB tree over the original
 // polygons (not the item mesh), segment queries with exact predicates (Epick).
 #pragma once
+#include <functional>
 #include <glm/glm.hpp>
 #include <memory>
 #include <vector>
@@ -20,6 +21,8 @@ class ExactVisibility {
   // coplanar neighbours do not shadow themselves; a segment that touches another polygon,
   // even grazing its edge, counts as hidden.
   bool visible(const glm::dvec3& a, int polyA, const glm::dvec3& b, int polyB) const;
+  // The same with the polygons whose hits do not count named by `passes` (a polygon id -> bool).
+  bool visible(const glm::dvec3& a, const glm::dvec3& b, const std::function<bool(int)>& passes) const;
   std::size_t triangles() const;
 
  private:

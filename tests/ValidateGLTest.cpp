@@ -324,3 +324,33 @@ TEST_CASE("validate --item-res auto checks the item buffer a solve plans, not on
         planShooting(s, atlas, 0, kAutoItemResolution, Projection::Hemicube).itemResolution);
   CHECK(v.levels[0].visibilityAgreement > 0.999);  // a zero-pixel buffer saw everything: 0.44 on real_20k
 }
+
+TEST_CASE(
+    "Exact reference: a floor of many coplanar triangles (one chart) and a rug lying on it hide none of its element "
+    "centres from an open ceiling, as the GPU's test counts them",
+    "[cpu]") {
+  // Element centres lie on whichever triangle holds them, not always the element's own polygon (the
+  // one of its largest piece), and a segment ending on a coplanar neighbour only touches it there.
+  Scene s;
+  const int m = test::material(s, 0.5, 1.0), room = s.addObject("room"), rug = s.addObject("rug");
+  const int n = 7;  // the floor: n x n squares, each two triangles
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const glm::dvec3 a(i, 0, j), b(i, 0, j + 1), c(i + 1, 0, j + 1), d(i + 1, 0, j);
+      s.addPolygon({a, b, c}, m, room);
+      s.addPolygon({a, c, d}, m, room);
+    }
+  s.addPolygon({{2.2, 0, 2.2}, {2.2, 0, 4.2}, {4.2, 0, 4.2}, {4.2, 0, 2.2}}, m, rug);  // on the floor, facing up
+  s.addPolygon(test::rectangle({0, 3, 0}, {1, 0, 0}, {0, 0, 1}, n, n), m, room);       // ceiling, faces -y
+  const Atlas atlas = buildAtlas(s, 0.3);
+  REQUIRE(atlas.chartOf[0] == atlas.chartOf[2 * n * n - 1]);  // the floor is one chart
+  const ExactReference ref(s, atlas);
+  std::size_t shooter = 0;  // a ceiling element
+  for (std::size_t t = 0; t < atlas.polygonOf.size(); ++t)
+    if (atlas.polygonOf[t] == std::uint32_t(2 * n * n + 1)) shooter = t;
+  const std::vector<PairSample> pairs = ref.fromShooter(shooter);
+  std::size_t facing = 0, hidden = 0;
+  for (const PairSample& p : pairs) facing += p.facing, hidden += p.facing && !p.visible;
+  CHECK(facing > 500);
+  CHECK(hidden == 0);
+}

@@ -30,8 +30,20 @@ std::vector<PairSample> ExactReference::fromShooter(std::size_t s) const {
       PairSample& p = out[t];
       p.facing = cpu::facing(ps, ns, pr, nr);
       if (!p.facing) continue;
-      p.visible = visibility_.visible(ps, shooterPolygon, pr, int(rp));
-      auto seen = [&](const glm::dvec3& q) { return visibility_.visible(q, shooterPolygon, pr, int(rp)); };
+      const std::uint32_t receiverChart = atlas_.chartOf[rp];
+      // What the GPU's visibility test (shaders/visibility.glsl) does not count either: the
+      // receiver's own chart (a curved one's element centre sits off its facets) and any polygon
+      // whose plane holds an end of the segment, which only touches it there (the item buffer clips
+      // the shooter's plane away; a coplanar neighbour at the receiver's centre is a contact).
+      auto passes = [&](const glm::dvec3& q, int p) {
+        if (p == shooterPolygon || p == int(rp) || atlas_.chartOf[std::size_t(p)] == receiverChart) return true;
+        const ScenePolygon& poly = scene_.polygons()[std::size_t(p)];
+        const double tolerance = 1e-9 * (1 + glm::length(poly.vertices[0]));
+        return std::abs(glm::dot(poly.normal, q - poly.vertices[0])) <= tolerance ||
+               std::abs(glm::dot(poly.normal, pr - poly.vertices[0])) <= tolerance;
+      };
+      auto seen = [&](const glm::dvec3& q) { return visibility_.visible(q, pr, [&](int p) { return passes(q, p); }); };
+      p.visible = seen(ps);
       for (const Poly3& piece : element) {  // linear in the shape: the pieces' sum is the element's
         cpu::ElementFormFactor f = cpu::pointToElement(pr, nr, piece, glm::normalize(newellNormal(piece)), seen);
         p.formFactor += f.value;
