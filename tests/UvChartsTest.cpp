@@ -13,6 +13,7 @@
 #include "src/scene/SceneLoader.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/solver/SolverState.h"
+#include "src/solver/TexelParts.h"
 #include "tests/bad_input/BadInput.h"
 #include "tests/support/Support.h"
 
@@ -198,6 +199,32 @@ TEST_CASE(
         CHECK(c.y <= 1 + 1e-12);
       }
   CHECK(pieces == Approx(s.totalArea()).epsilon(1e-12));
+}
+
+TEST_CASE(
+    "Stochastic iteration's texel parts of a UV chart are its texels' pieces, under a header whose prism clip keeps "
+    "them "
+    "whole",
+    "[cpu]") {
+  const Scene s = uvCube(0.5, 1.0);
+  const Atlas a = buildAtlas(s, 0.15, 16384, 0, kDefaultChartAngle, UvSource::Input);
+  const TexelParts parts = texelParts(a);
+  for (std::size_t c = 0; c < a.charts.size(); ++c) {  // zero axes and texel size: clip bounds 0, distances 0
+    CHECK(parts.charts[4 * c] == glm::vec4(0.0f));
+    CHECK(parts.charts[4 * c + 1] == glm::vec4(0.0f));
+    CHECK(parts.charts[4 * c + 2] == glm::vec4(0.0f));
+  }
+  for (std::size_t t = 0; t < a.polygonOf.size(); ++t) {
+    double sum = 0;
+    for (std::uint32_t e = parts.index[t]; e < parts.index[t + 1]; e += 2) {
+      Poly3 piece;
+      for (std::uint32_t v = 0; v < parts.index[e + 1]; ++v)
+        piece.push_back(glm::dvec3(parts.charts[parts.index[e] + v]));
+      sum += area(piece);
+    }
+    INFO("texel " << t);
+    CHECK(sum == Approx(a.positionArea[t].w).epsilon(1e-5));
+  }
 }
 
 TEST_CASE("Lightmap UVs that overlap, fold or collapse are refused with one error naming the polygon", "[cpu]") {
