@@ -10,18 +10,15 @@
 #include "src/cli/Commands.h"
 #include "src/options/Options.h"
 #include "src/options/Suggest.h"
+#include "tests/support/Files.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
 using Catch::Contains;
 
-namespace {
+using hemirad::test::count;
 
-int count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (std::size_t p = 0; (p = text.find(what, p)) != std::string::npos; p += what.size()) ++n;
-  return n;
-}
+namespace {
 
 // Exit 2 and exactly one error line, containing `message`.
 void expectOneError(const std::string& args, const std::string& message) {

@@ -31,6 +31,7 @@ void addScene(CLI::App* cmd, std::string& scene, LoadOptions& load, Discretisati
   CLI::Option* texelSize = add(cmd, "--texel-size", d.texelSize, "from --elements");
   add(cmd, "--elements", d.elements, std::to_string(Discretisation::kDefaultElements))->excludes(texelSize);
   add(cmd, "--chart-angle", d.chartAngle);
+  add(cmd, "--uv", d.uv);
 }
 
 }  // namespace

@@ -73,7 +73,7 @@ int runInfo(const InfoOptions& o) {
   Scene scene = loadScene(o.scene, o.load);
   double ts = chooseTexelSize(scene, o.discretisation);
   const auto atlasStart = std::chrono::steady_clock::now();
-  Atlas atlas = buildAtlas(scene, ts, 16384, 0, o.discretisation.chartAngle);
+  Atlas atlas = buildAtlas(scene, ts, 16384, 0, o.discretisation.chartAngle, o.discretisation.uv);
   const double atlasSeconds = secondsSince(atlasStart);
   const double u = scene.unitScale;  // printed in the file's units
   glm::dvec3 lo = scene.boundsMin() / u, hi = scene.boundsMax() / u;
@@ -105,8 +105,9 @@ int runInfo(const InfoOptions& o) {
              scene.emittedPower() / (u * u));
   fmt::print("texel size   {:.6g}\nelements     {}\natlas        {} x {}\n", ts / u, atlas.elements, atlas.width,
              atlas.height);
-  fmt::print("charts       {} at --chart-angle {:g} (texel use {:.1f} %)\n", atlas.charts.size(),
-             o.discretisation.chartAngle,
+  fmt::print("charts       {} {} (texel use {:.1f} %)\n", atlas.charts.size(),
+             o.discretisation.uv == UvSource::Input ? std::string("from the input's UV islands (--uv input)")
+                                                    : fmt::format("at --chart-angle {:g}", o.discretisation.chartAngle),
              100.0 * double(atlas.elements) / std::max(1.0, double(atlas.width) * atlas.height));
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);

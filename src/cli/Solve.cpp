@@ -227,7 +227,7 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
   const Discretisation& d = o.discretisation;
-  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle);
+  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle, d.uv);
   SolverState state(scene, atlas);
   const std::unique_ptr<AtlasRun> run = start(state);
   Solver& solver = run->solver();

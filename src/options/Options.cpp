@@ -12,6 +12,7 @@
 #include "gl/Backend.h"
 #include "src/base/DataDir.h"
 #include "src/base/Error.h"
+#include "src/scene/Charts.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/Control.h"
 #include "src/solver/Presets.h"
@@ -149,6 +150,12 @@ std::vector<Flag> sceneAndSolverFlags() {
        "facets), "
        "projected onto one texel grid (docs/design.md#atlas-and-elements)",
        CLI::Range(0.0, 60.0)},
+      {"--uv", "SOURCE",
+       "Where charts' texel grids come from: auto (charts by --chart-angle, projected onto a plane) or input (the "
+       "scene's own lightmap UVs, glTF TEXCOORD_1: each UV island one chart, scaled so --elements and --texel-size "
+       "hold)",
+       oneOf(std::map<std::string, UvSource>{{"auto", UvSource::Auto}, {"input", UvSource::Input}}, "auto|input"),
+       "auto"},
       {"--scenes", "OBJ",
        "OBJ scenes; a relative path not found from here is read from the shipped scenes (docs/install.md)", kScene},
       // The solver.

@@ -54,13 +54,12 @@ int addFloats(tinygltf::Model& m, const std::vector<float>& v, int components, i
 }
 
 // Polygon `id` fanned (a b c, a c d, ...) into `s`: its own vertices, flat normal, TEXCOORD_0
-// its plane coordinates in scene units (for material textures), TEXCOORD_1 the lightmap's.
+// its chart coordinates in scene units (for material textures), TEXCOORD_1 the lightmap's.
 void addPolygon(Streams& s, const Scene& scene, const Atlas& atlas, const Lightmap& map, int id) {
   const ScenePolygon& p = scene.polygons()[std::size_t(id)];
-  const Chart& chart = atlas.charts[atlas.chartOf[std::size_t(id)]];
   const auto first = std::uint32_t(s.position.size() / 3);
   for (const glm::dvec3& v : p.vertices) {
-    const glm::dvec2 plane = chart.frame.project(v), uv = map.uv(atlas, id, atlas.atlasCoord(id, v));
+    const glm::dvec2 plane = atlas.chartCoord(id, v), uv = map.uv(atlas, id, atlas.atlasCoord(id, v));
     const glm::dvec3 at = v / scene.unitScale;  // in the file's units
     s.position.insert(s.position.end(), {float(at.x), float(at.y), float(at.z)});
     s.normal.insert(s.normal.end(), {float(p.normal.x), float(p.normal.y), float(p.normal.z)});

@@ -29,8 +29,8 @@ constexpr std::size_t kMaxCountedElements = std::size_t(1) << 24;
 
 struct ChartShape {
   ChartGroup group;
-  PlaneFrame frame;
-  std::vector<Poly2> parts;  // the group's parts in plane coordinates
+  ChartMapping map;
+  std::vector<Poly2> parts;  // the group's parts in chart coordinates
   glm::dvec2 corner;         // lower-left of the texel grid
   glm::ivec2 size;
 };
@@ -57,12 +57,15 @@ PlaneFrame chartFrame(const ChartGroup& g) {
 ChartShape chartShape(const ChartGroup& g, double ts) {
   ChartShape c;
   c.group = g;
-  c.frame = chartFrame(g);
+  c.map.planar = g.planar;
+  if (g.uv.empty())
+    c.map.frame = chartFrame(g);
+  else
+    c.map.uv = g.uv;
   glm::dvec2 lo(1e300), hi(-1e300);
-  for (const Poly3& part : g.parts) {
-    Poly2& q = c.parts.emplace_back();
-    for (auto& v : part) q.push_back(c.frame.project(v)), lo = glm::min(lo, q.back()), hi = glm::max(hi, q.back());
-  }
+  for (std::size_t k = 0; k < g.parts.size(); ++k)
+    for (glm::dvec2 q : c.parts.emplace_back(c.map.partInChart(g.parts[k], k)))
+      lo = glm::min(lo, q), hi = glm::max(hi, q);
   glm::dvec2 extent = hi - lo;
   glm::dvec2 cells = glm::ceil(extent / ts - 1e-9);
   if (!(cells.x <= kMaxChartSide && cells.y <= kMaxChartSide))
@@ -76,18 +79,12 @@ ChartShape chartShape(const ChartGroup& g, double ts) {
 // The same grid turned a quarter counter-clockwise in its plane (u' = v, v' = -u): cell (i, j)
 // becomes (j, size.x - 1 - i), so the packer may place a chart standing or lying.
 void turnQuarter(ChartShape& c, double ts) {
-  c.frame = {c.frame.origin, c.frame.v, -c.frame.u, c.frame.n};
+  c.map.frame = {c.map.frame.origin, c.map.frame.v, -c.map.frame.u, c.map.frame.n};
   for (Poly2& part : c.parts)
     for (glm::dvec2& q : part) q = glm::dvec2(q.y, -q.x);
+  if (c.map.uvMapped()) c.map.uv = c.parts;
   c.corner = glm::dvec2(c.corner.y, -(c.corner.x + c.size.x * ts));
   c.size = glm::ivec2(c.size.y, c.size.x);
-}
-
-// Chart-plane point q moved along the chart's axis onto the plane of polygon `on` (a planar
-// chart's pieces lie in the frame's plane already).
-glm::dvec3 liftOnto(const PlaneFrame& f, bool planar, const ScenePolygon& on, glm::dvec2 q) {
-  glm::dvec3 p = f.lift(q);
-  return planar ? p : p + f.n * (glm::dot(on.vertices[0] - p, on.normal) / glm::dot(f.n, on.normal));
 }
 
 template <class Fn>  // fn(i, j, part, cut polygon in plane coordinates)
@@ -110,13 +107,23 @@ void forEachCut(const ChartShape& c, double ts, Fn&& fn) {
 
 // One texel's element, summed over its pieces.
 struct ElementSum {
-  double area = 0, largest = 0;
+  double area = 0, largest = 0, chartArea = 0;
   glm::dvec3 centre{0.0}, normal{0.0};
   int pieces = 0, polygon = -1;
   glm::dvec3 firstCentre{0.0};
 };
 
 using VertexNormals = std::vector<std::vector<glm::dvec3>>;  // SmoothNormals.h
+
+// A UV chart's triangles may not overlap: a texel covered more than once would be two places.
+void refuseOverlap(const Scene& scene, const std::vector<ElementSum>& cells, const ChartShape& c, double ts) {
+  for (std::size_t t = 0; t < cells.size(); ++t)
+    if (cells[t].chartArea > (1 + 1e-6) * ts * ts)
+      fail(
+          "{}: --uv input: the UV triangles of polygon {}'s chart overlap ({:.3g} times a texel's area in one texel); "
+          "lightmap UVs must not overlap",
+          scene.path, c.group.polygons.front(), cells[t].chartArea / (ts * ts));
+}
 
 // Every cell's element of chart c (row-major over c.size). A curved chart's pieces weigh in the
 // smooth normal at their centroid (SmoothNormals.h), a planar one's the plane's.
@@ -125,9 +132,11 @@ std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, d
   forEachCut(c, ts, [&](int i, int j, int k, const Poly2& cut) {
     const int poly = c.group.partPolygon[std::size_t(k)];
     const ScenePolygon& on = scene.polygons()[std::size_t(poly)];
-    const double a = signedArea(cut) / (c.group.planar ? 1.0 : glm::dot(c.frame.n, on.normal));
-    const glm::dvec3 centre = liftOnto(c.frame, c.group.planar, on, centroid(cut));
+    const Poly3& part = c.group.parts[std::size_t(k)];
+    const double a = c.map.surfaceArea(part, std::size_t(k), on, signedArea(cut));
+    const glm::dvec3 centre = c.map.toSurface(part, std::size_t(k), on, centroid(cut));
     ElementSum& e = cells[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
+    e.chartArea += signedArea(cut);
     if (e.pieces++ == 0)
       e.firstCentre = centre, e.area = a;
     else
@@ -136,6 +145,7 @@ std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, d
     e.normal += a * (c.group.planar ? on.normal : smoothNormalAt(on, smooth[std::size_t(poly)], centre));
     if (a > e.largest) e.largest = a, e.polygon = poly;
   });
+  if (c.map.uvMapped()) refuseOverlap(scene, cells, c, ts);
   return cells;
 }
 
@@ -231,29 +241,35 @@ void cutChart(const Scene& scene, const ChartShape& shape, const Chart& c, const
     }
 }
 
+// A UV chart's polygons' first parts (Atlas::firstPartOf).
+void indexParts(const Chart& c, std::size_t polygons, std::vector<std::uint32_t>& firstPartOf) {
+  if (!c.uvMapped()) return;
+  firstPartOf.resize(polygons, 0);
+  for (std::size_t k = c.parts.size(); k-- > 0;) firstPartOf[std::size_t(c.partPolygon[k])] = std::uint32_t(k);
+}
+
 Chart makeChart(const ChartShape& s, glm::ivec2 origin) {
   Chart c;
   c.polygon = s.group.polygons.front();
+  static_cast<ChartMapping&>(c) = s.map;
   c.polygons = s.group.polygons;
-  c.planar = s.group.planar;
   c.parts = s.group.parts;
   c.partPolygon = s.group.partPolygon;
   c.origin = origin;
   c.size = s.size;
-  c.frame = s.frame;
   c.corner = s.corner;
   return c;
 }
 
 }  // namespace
 
-Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes, double chartAngle) {
+Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes, double chartAngle, UvSource uv) {
   if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
   const auto& polys = scene.polygons();
   Atlas atlas;
   atlas.texelSize = ts;
   const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
-  const std::vector<ChartGroup> groups = groupCharts(scene, chartAngle);
+  const std::vector<ChartGroup> groups = chartGroups(scene, chartAngle, uv);
   // Charts cover at least the scene's area: far over the texture limit, say so before cutting
   // the scene into more cells than any GPU holds.
   if (double least = scene.totalArea() / (ts * ts); least > double(maxSize) * maxSize)
@@ -267,6 +283,7 @@ Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxByte
   for (size_t id = 0; id < shapes.size(); ++id) {
     atlas.charts.push_back(makeChart(shapes[id], layout.origins[id]));
     for (int p : shapes[id].group.polygons) atlas.chartOf[std::size_t(p)] = std::uint32_t(id);
+    indexParts(atlas.charts.back(), polys.size(), atlas.firstPartOf);
   }
   atlas.width = int(layout.width);
   atlas.height = int(layout.height);
@@ -284,7 +301,7 @@ Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxByte
   return atlas;
 }
 
-double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle) {
+double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle, UvSource uv) {
   if (elements == 0) fail("--elements must be positive");
   if (scene.polygons().empty()) fail("{}: the scene has no faces with area", scene.path);
   double ts = std::sqrt(scene.totalArea() / double(elements));
@@ -294,7 +311,7 @@ double texelSizeForElements(const Scene& scene, std::size_t elements, double cha
     for (auto& v : p.vertices) ts = std::max(ts, glm::length(v - p.vertices.front()) / double(elements));
   // Partial texels add elements; a few fixed-point steps on the real count settle it.
   const std::vector<ChartGroup> groups =
-      elements <= kMaxCountedElements ? groupCharts(scene, chartAngle) : std::vector<ChartGroup>{};
+      elements <= kMaxCountedElements ? chartGroups(scene, chartAngle, uv) : std::vector<ChartGroup>{};
   for (int iter = 0; iter < 4 && elements <= kMaxCountedElements; ++iter) {
     size_t count = 0;
     for (auto& g : groups) count += countElements(chartShape(g, ts), ts);
@@ -304,9 +321,19 @@ double texelSizeForElements(const Scene& scene, std::size_t elements, double cha
   return ts;
 }
 
+glm::dvec2 Atlas::chartCoord(int polygon, const glm::dvec3& p) const {
+  const Chart& c = charts[chartOf[std::size_t(polygon)]];
+  if (!c.uvMapped()) return c.frame.project(p);
+  std::size_t best = firstPartOf[std::size_t(polygon)];  // the polygon's triangle holding p (or nearest)
+  double fit = -1e300;
+  for (std::size_t k = best; k < c.parts.size() && c.partPolygon[k] == polygon; ++k)
+    if (const double f = c.inside(c.parts[k], k, p); f > fit) fit = f, best = k;
+  return c.toChart(c.parts[best], best, p);
+}
+
 glm::dvec2 Atlas::atlasCoord(int polygon, const glm::dvec3& p) const {
   const Chart& c = charts[chartOf[std::size_t(polygon)]];
-  return glm::dvec2(c.origin) + (c.frame.project(p) - c.corner) / texelSize;
+  return glm::dvec2(c.origin) + (chartCoord(polygon, p) - c.corner) / texelSize;
 }
 
 std::vector<Poly3> Atlas::elementShape(const Scene& scene, int x, int y) const {
@@ -323,13 +350,11 @@ std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const 
   glm::dvec2 lo(rect.x - c.origin.x, rect.y - c.origin.y), hi = lo + glm::dvec2(rect.z, rect.w);
   std::vector<Poly3> out;
   for (std::size_t k = 0; k < c.parts.size(); ++k) {
-    Poly2 poly;
-    for (auto& v : c.parts[k]) poly.push_back(c.frame.project(v));
-    Poly2 cut = clipToBox(poly, c.corner + lo * texelSize, c.corner + hi * texelSize);
+    Poly2 cut = clipToBox(c.partInChart(c.parts[k], k), c.corner + lo * texelSize, c.corner + hi * texelSize);
     if (cut.size() < 3 || signedArea(cut) <= kMinCutFraction * texelSize * texelSize) continue;
     const ScenePolygon& on = scene.polygons()[std::size_t(c.partPolygon[k])];
     Poly3& piece = out.emplace_back();
-    for (auto& q : cut) piece.push_back(liftOnto(c.frame, c.planar, on, q));
+    for (auto& q : cut) piece.push_back(c.toSurface(c.parts[k], k, on, q));
   }
   return out;
 }
@@ -385,13 +410,17 @@ std::uint64_t Atlas::layoutHash() const {
     const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
     for (std::size_t i = 0; i < sizeof(value); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
   };
-  for (const Chart& c : charts) add(c.origin), add(c.size), add(c.frame.u), add(c.frame.v), add(c.corner);
+  for (const Chart& c : charts) {
+    add(c.origin), add(c.size), add(c.frame.u), add(c.frame.v), add(c.corner);
+    for (const Poly2& t : c.uv)
+      for (glm::dvec2 q : t) add(q);
+  }
   return h;
 }
 
 double chooseTexelSize(const Scene& scene, const Discretisation& d) {
   if (d.texelSize) return *d.texelSize * scene.unitScale;  // given in the file's units
-  return texelSizeForElements(scene, d.elements.value_or(Discretisation::kDefaultElements), d.chartAngle);
+  return texelSizeForElements(scene, d.elements.value_or(Discretisation::kDefaultElements), d.chartAngle, d.uv);
 }
 
 }  // namespace hemirad

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "src/base/Polygon.h"
+#include "src/scene/ChartMapping.h"
 #include "src/scene/Charts.h"
 #include "src/scene/Scene.h"
 
@@ -20,16 +21,15 @@ constexpr std::uint32_t kNoPolygon = 0xFFFFFFFFu;
 // Cuts smaller than this fraction of a texel are numerical slivers, not elements.
 inline constexpr double kMinCutFraction = 1e-9;
 
-struct Chart {
+// A chart: its frame, planarity and UVs (ChartMapping.h) say how its surface maps to its grid.
+struct Chart : ChartMapping {
   int polygon = 0;            // its seed: the chart's material and object are this polygon's
   std::vector<int> polygons;  // every member (Charts.h)
-  bool planar = true;         // members coplanar: pieces lie in the frame's plane
   std::vector<Poly3> parts;   // what elements are cut from (ChartGroup::parts)
   std::vector<int> partPolygon;
   glm::ivec2 origin{0};  // atlas texel of cell (0, 0)
   glm::ivec2 size{0};    // cells
-  PlaneFrame frame;      // plane coordinates of the chart (n: its projection axis)
-  glm::dvec2 corner{0};  // plane coordinates of cell (0, 0)'s lower-left corner
+  glm::dvec2 corner{0};  // chart coordinates of cell (0, 0)'s lower-left corner
 };
 
 // A block of 2^k x 2^k cells of one chart that shoots as one element (substructuring).
@@ -41,8 +41,10 @@ class Atlas {
  public:
   double texelSize = 0;
   int width = 0, height = 0;
-  std::vector<Chart> charts;            // index = chart id
-  std::vector<std::uint32_t> chartOf;   // per polygon: its chart
+  std::vector<Chart> charts;           // index = chart id
+  std::vector<std::uint32_t> chartOf;  // per polygon: its chart
+  // Per polygon of a UV chart: its first part there (its parts follow it); empty without UV charts.
+  std::vector<std::uint32_t> firstPartOf;
   std::vector<glm::vec4> positionArea;  // per atlas texel: centre xyz, area (0: no element)
   // Per atlas texel: the polygon with the element's largest piece, or kNoPolygon (material and
   // object are per chart, so lookups through it are the element's).
@@ -55,8 +57,10 @@ class Atlas {
   // The chart of texel t, or kNoPolygon.
   std::uint32_t chartAt(std::size_t t) const { return polygonOf[t] == kNoPolygon ? kNoPolygon : chartOf[polygonOf[t]]; }
   // Continuous atlas coordinates of point p on polygon `polygon` (texel (i, j) spans [i, i+1)),
-  // through its chart's frame.
+  // through its chart's mapping.
   glm::dvec2 atlasCoord(int polygon, const glm::dvec3& p) const;
+  // Chart coordinates (scene units, ChartMapping.h) of point p on polygon `polygon`.
+  glm::dvec2 chartCoord(int polygon, const glm::dvec3& p) const;
   // The element of texel (x, y) as its pieces in 3D, one per chart part it cuts (none if no
   // element). Used by outputs, the dense reference and tests.
   std::vector<Poly3> elementShape(const Scene& scene, int x, int y) const;
@@ -77,16 +81,19 @@ class Atlas {
 // Builds the atlas; throws InputError, naming the limit and a texel size that fits, if it would
 // exceed maxSize texels on a side or need more than maxBytes of memory (0: this machine's).
 // chartAngle: degrees (src/scene/Charts.h; kPolygonCharts: a chart per polygon).
+// uv: where the charts' grids come from (Charts.h).
 Atlas buildAtlas(const Scene& scene, double texelSize, int maxSize = 16384, std::size_t maxBytes = 0,
-                 double chartAngle = 0);
+                 double chartAngle = 0, UvSource uv = UvSource::Auto);
 // The texel size that gives about `elements` elements (partial texels counted).
-double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle = 0);
+double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle = 0,
+                            UvSource uv = UvSource::Auto);
 
 // The discretisation the user asked for: a texel size, or about a number of elements.
 struct Discretisation {
   std::optional<double> texelSize;         // scene units
   std::optional<std::size_t> elements;     // or: about this many elements
   double chartAngle = kDefaultChartAngle;  // --chart-angle, degrees (Charts.h)
+  UvSource uv = UvSource::Auto;            // --uv (Charts.h)
   static constexpr std::size_t kDefaultElements = 10000;
 };
 // Texel size from the flags: --texel-size, else --elements, else about 10,000 elements.

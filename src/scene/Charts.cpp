@@ -8,6 +8,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "src/scene/InputUv.h"
 #include "src/scene/Welding.h"
 
 namespace hemirad {
@@ -197,7 +198,7 @@ std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees) {
   std::vector<ChartGroup> out;
   if (angleDegrees < 0) {
     for (std::size_t p = 0; p < polys.size(); ++p)
-      out.push_back({{int(p)}, polys[p].normal, true, {polys[p].vertices}, {int(p)}});
+      out.push_back({{int(p)}, polys[p].normal, true, {polys[p].vertices}, {int(p)}, {}});
     return out;
   }
   const Welding w = weldVertices(scene);
@@ -215,6 +216,10 @@ std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees) {
     out.push_back(std::move(g));
   }
   return out;
+}
+
+std::vector<ChartGroup> chartGroups(const Scene& scene, double angleDegrees, UvSource uv) {
+  return uv == UvSource::Input ? inputUvCharts(scene) : groupCharts(scene, angleDegrees);
 }
 
 }  // namespace hemirad

@@ -31,10 +31,19 @@ struct ChartGroup {
   // that outline (the untessellated face: same grid, same cuts); otherwise every member.
   std::vector<Poly3> parts;
   std::vector<int> partPolygon;  // the member each part lies on (the seed for an outline)
+  // A UV chart's (ChartMapping.h): per part, a triangle, its vertices' chart coordinates (scene
+  // units); a member's parts are consecutive. Empty: the parts are projected along `axis`.
+  std::vector<Poly2> uv;
 };
+
+// --uv: where charts' texel grids come from. Auto: projection charts (groupCharts); Input: the
+// input's lightmap UV islands (src/scene/InputUv.h).
+enum class UvSource { Auto, Input };
 
 // Grows charts in polygon order, breadth first; deterministic. angleDegrees: 0 coplanar,
 // up to kMaxChartAngle; kPolygonCharts: one chart per polygon.
 std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees);
+// The charts for --uv `uv`: groupCharts's for Auto.
+std::vector<ChartGroup> chartGroups(const Scene& scene, double angleDegrees, UvSource uv);
 
 }  // namespace hemirad

@@ -95,6 +95,63 @@ std::vector<glm::dvec3> positions(const tinygltf::Model& m, int index, const std
   return out;
 }
 
+// TEXCOORD_1, the lightmap UVs (--uv input): float, or normalized unsigned byte or short
+// (glTF 2.0, 3.7.2.1); empty if the primitive has none.
+std::vector<glm::dvec2> lightmapUvs(const tinygltf::Model& m, const tinygltf::Primitive& p, std::size_t vertices,
+                                    const std::string& path) {
+  auto it = p.attributes.find("TEXCOORD_1");
+  if (it == p.attributes.end()) return {};
+  View v = accessorView(m, it->second, path, "TEXCOORD_1");
+  const int type = v.componentType;
+  if (v.type != TINYGLTF_TYPE_VEC2 ||
+      (type != TINYGLTF_COMPONENT_TYPE_FLOAT && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+       type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT))
+    fail("{}: TEXCOORD_1 accessor {} is not float, unsigned byte or unsigned short VEC2", path, it->second);
+  if (v.count != vertices) fail("{}: TEXCOORD_1 has {} values for {} vertices", path, v.count, vertices);
+  std::vector<glm::dvec2> out(v.count);
+  for (std::size_t k = 0; k < v.count; ++k)
+    for (int c = 0; c < 2; ++c) {
+      const unsigned char* at = v.data + k * v.stride;
+      double x = 0;
+      if (type == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        float f = 0;
+        std::memcpy(&f, at + 4 * c, 4), x = f;
+      } else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+        std::uint16_t u = 0;
+        std::memcpy(&u, at + 2 * c, 2), x = u / 65535.0;
+      } else {
+        x = at[c] / 255.0;
+      }
+      if (!std::isfinite(x)) fail("{}: TEXCOORD_1 accessor {}: value {} is not a finite number", path, it->second, k);
+      out[k][c] = x;
+    }
+  return out;
+}
+
+// The UVs of the polygons addFace made (from `first` on) out of the fan of vertices `corners`:
+// each vertex's, matched by position (addFace keeps positions, or splits into their triangles).
+void recordUvs(Scene& scene, std::size_t first, const std::vector<std::uint32_t>& corners,
+               const std::vector<glm::dvec3>& points, const std::vector<glm::dvec2>& uv) {
+  scene.lightmapUv.resize(scene.polygons().size());
+  for (std::size_t p = first; p < scene.polygons().size(); ++p) {
+    Poly2 out;
+    for (const glm::dvec3& x : scene.polygons()[p].vertices)
+      for (std::uint32_t c : corners)
+        if (points[c] == x) {
+          out.push_back(uv[c]);
+          break;
+        }
+    if (out.size() == scene.polygons()[p].vertices.size()) scene.lightmapUv[p] = std::move(out);
+  }
+}
+
+// The vertices of the fan of `used` triangles from triangle `first` (fanPolygon's).
+std::vector<std::uint32_t> fanCorners(const std::vector<std::uint32_t>& idx, std::size_t first, std::size_t used) {
+  std::vector<std::uint32_t> out{idx[3 * first], idx[3 * first + 1], idx[3 * first + 2]};
+  for (std::size_t k = 1; k < used; ++k) out.push_back(idx[3 * (first + k) + 2]);
+  return out;
+}
+
 std::vector<std::uint32_t> indices(const tinygltf::Model& m, const tinygltf::Primitive& p, std::size_t vertices,
                                    const std::string& path) {
   std::vector<std::uint32_t> out;
@@ -274,9 +331,12 @@ struct Loader {
     const std::vector<std::uint32_t> idx = triangleList(p.mode, indices(m, p, points.size(), path));
     if (idx.size() % 3) fail("{}: {} indices are not whole triangles", where, idx.size());
     const int mat = material(p.material);
+    const std::vector<glm::dvec2> uv = lightmapUvs(m, p, points.size(), path);
     for (std::size_t t = 0; t < idx.size() / 3;) {
       auto [poly, used] = fanPolygon(points, idx, t);
+      const std::size_t first = scene.polygons().size();
       addFace(scene, poly, mat, object, [&] { return fmt::format("{} triangle {}", where, t); });
+      if (!uv.empty()) recordUvs(scene, first, fanCorners(idx, t, used), points, uv);
       t += used;
     }
   }
@@ -356,6 +416,7 @@ Scene loadGltf(const std::string& path) {
       if (!child[k]) roots.push_back(int(k));
   }
   for (int root : roots) loader.node(root, glm::dmat4(1.0), 0);
+  if (!scene.lightmapUv.empty()) scene.lightmapUv.resize(scene.polygons().size());
   return scene;
 }
 

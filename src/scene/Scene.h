@@ -56,6 +56,9 @@ class Scene {
   // Scene units per file unit: 1, or the power of two normalizeUnits (src/scene/Units.h) applied.
   double unitScale = 1;
   std::string camera;  // the scene file's own camera (glTF) as --camera text; "" for none
+  // The input's lightmap UVs (glTF TEXCOORD_1, for --uv input): per polygon, per vertex; a
+  // polygon without them has none, and a scene without any has an empty list.
+  std::vector<Poly2> lightmapUv;
 
   // Adds a polygon; returns false (and records nothing) if it has no area.
   bool addPolygon(const Poly3& vertices, int material, int object);

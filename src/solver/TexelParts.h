@@ -14,7 +14,8 @@ namespace hemirad {
 struct TexelParts {
   // SSBO_CHARTS: per chart 4 vec4s (plane origin; u axis, w = texel size; v axis; cell (0, 0)'s
   // lower-left corner in plane coordinates (xy) and the chart's atlas origin (zw)), then every
-  // chart's parts' vertices (xyz).
+  // chart's parts' vertices (xyz). A UV chart (src/scene/ChartMapping.h) has zero axes and
+  // texel size, so the prism clip keeps its parts whole, and its parts are its texels' pieces.
   std::vector<glm::vec4> charts;
   // SSBO_TEXEL_PARTS: entries [index[t], index[t + 1]) for atlas texel t (row-major; width x
   // height + 1 offsets into this same array), each a pair: a part's first vertex in `charts`,
