@@ -33,6 +33,7 @@ struct ChartShape {
   std::vector<Poly2> parts;  // the group's parts in plane coordinates
   glm::dvec2 corner;         // lower-left of the texel grid
   glm::ivec2 size;
+  double cellSize = 0;  // the side of its cells (Chart::cellSize)
 };
 
 // The seed's frame turned in its plane to the minimum-area rectangle of the chart's outline
@@ -70,16 +71,17 @@ ChartShape chartShape(const ChartGroup& g, double ts) {
          std::max(extent.x, extent.y), kMaxChartSide, ts);
   c.size = glm::max(glm::ivec2(cells), glm::ivec2(1));
   c.corner = lo - (glm::dvec2(c.size) * ts - extent) * 0.5;
+  c.cellSize = ts;
   return c;
 }
 
 // The same grid turned a quarter counter-clockwise in its plane (u' = v, v' = -u): cell (i, j)
 // becomes (j, size.x - 1 - i), so the packer may place a chart standing or lying.
-void turnQuarter(ChartShape& c, double ts) {
+void turnQuarter(ChartShape& c) {
   c.frame = {c.frame.origin, c.frame.v, -c.frame.u, c.frame.n};
   for (Poly2& part : c.parts)
     for (glm::dvec2& q : part) q = glm::dvec2(q.y, -q.x);
-  c.corner = glm::dvec2(c.corner.y, -(c.corner.x + c.size.x * ts));
+  c.corner = glm::dvec2(c.corner.y, -(c.corner.x + c.size.x * c.cellSize));
   c.size = glm::ivec2(c.size.y, c.size.x);
 }
 
@@ -91,7 +93,8 @@ glm::dvec3 liftOnto(const PlaneFrame& f, bool planar, const ScenePolygon& on, gl
 }
 
 template <class Fn>  // fn(i, j, part, cut polygon in plane coordinates)
-void forEachCut(const ChartShape& c, double ts, Fn&& fn) {
+void forEachCut(const ChartShape& c, Fn&& fn) {
+  const double ts = c.cellSize;
   for (std::size_t k = 0; k < c.parts.size(); ++k) {
     glm::ivec2 lo(0), hi = c.size;
     if (c.parts.size() > 1) {  // only the cells under this part's bounds
@@ -120,9 +123,9 @@ using VertexNormals = std::vector<std::vector<glm::dvec3>>;  // SmoothNormals.h
 
 // Every cell's element of chart c (row-major over c.size). A curved chart's pieces weigh in the
 // smooth normal at their centroid (SmoothNormals.h), a planar one's the plane's.
-std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, double ts, const VertexNormals& smooth) {
+std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, const VertexNormals& smooth) {
   std::vector<ElementSum> cells(std::size_t(c.size.x) * std::size_t(c.size.y));
-  forEachCut(c, ts, [&](int i, int j, int k, const Poly2& cut) {
+  forEachCut(c, [&](int i, int j, int k, const Poly2& cut) {
     const int poly = c.group.partPolygon[std::size_t(k)];
     const ScenePolygon& on = scene.polygons()[std::size_t(poly)];
     const double a = signedArea(cut) / (c.group.planar ? 1.0 : glm::dot(c.frame.n, on.normal));
@@ -139,14 +142,14 @@ std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, d
   return cells;
 }
 
-std::size_t countElements(const ChartShape& c, double ts) {
+std::size_t countElements(const ChartShape& c) {
   std::size_t n = 0;
   if (c.parts.size() == 1) {
-    forEachCut(c, ts, [&](int, int, int, const Poly2&) { ++n; });
+    forEachCut(c, [&](int, int, int, const Poly2&) { ++n; });
     return n;
   }
   std::vector<char> hit(std::size_t(c.size.x) * std::size_t(c.size.y), 0);
-  forEachCut(c, ts, [&](int i, int j, int, const Poly2&) {
+  forEachCut(c, [&](int i, int j, int, const Poly2&) {
     char& h = hit[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
     n += h == 0, h = 1;
   });
@@ -215,7 +218,7 @@ double hostMemoryBytes() {
 
 // Writes chart c's elements into the atlas.
 void cutChart(const Scene& scene, const ChartShape& shape, const Chart& c, const VertexNormals& smooth, Atlas& atlas) {
-  const std::vector<ElementSum> cells = chartElements(scene, shape, atlas.texelSize, smooth);
+  const std::vector<ElementSum> cells = chartElements(scene, shape, smooth);
   for (int j = 0; j < c.size.y; ++j)
     for (int i = 0; i < c.size.x; ++i) {
       const ElementSum& e = cells[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
@@ -242,28 +245,18 @@ Chart makeChart(const ChartShape& s, glm::ivec2 origin) {
   c.size = s.size;
   c.frame = s.frame;
   c.corner = s.corner;
+  c.cellSize = s.cellSize;
   return c;
 }
 
-}  // namespace
-
-Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes, double chartAngle) {
-  if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
-  const auto& polys = scene.polygons();
+// Places the packed shapes and cuts their elements (both entries below).
+Atlas placeCharts(const Scene& scene, std::vector<ChartShape>& shapes, const Layout& layout, double ts,
+                  double chartAngle) {
   Atlas atlas;
   atlas.texelSize = ts;
-  const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
-  const std::vector<ChartGroup> groups = groupCharts(scene, chartAngle);
-  // Charts cover at least the scene's area: far over the texture limit, say so before cutting
-  // the scene into more cells than any GPU holds.
-  if (double least = scene.totalArea() / (ts * ts); least > double(maxSize) * maxSize)
-    failOverLimit(scene, groups, ts, {false, std::sqrt(least), std::sqrt(least), {}, {}}, maxSize, memory);
-  std::vector<ChartShape> shapes = chartShapes(groups, ts);
-  Layout layout = pack(shapes, maxSize);
-  if (!fits(layout, memory)) failOverLimit(scene, groups, ts, layout, maxSize, memory);
   for (std::size_t id = 0; id < shapes.size(); ++id)
-    if (layout.turned[id]) turnQuarter(shapes[id], ts);
-  atlas.chartOf.assign(polys.size(), 0);
+    if (layout.turned[id]) turnQuarter(shapes[id]);
+  atlas.chartOf.assign(scene.polygons().size(), 0);
   for (size_t id = 0; id < shapes.size(); ++id) {
     atlas.charts.push_back(makeChart(shapes[id], layout.origins[id]));
     for (int p : shapes[id].group.polygons) atlas.chartOf[std::size_t(p)] = std::uint32_t(id);
@@ -275,13 +268,48 @@ Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxByte
   atlas.positionArea.assign(texels, glm::vec4(0.0f));
   atlas.polygonOf.assign(texels, kNoPolygon);
   atlas.normalOf.assign(texels, glm::vec3(0.0f));
-  const bool curved = std::any_of(groups.begin(), groups.end(), [](const ChartGroup& g) { return !g.planar; });
+  const bool curved = std::any_of(shapes.begin(), shapes.end(), [](const ChartShape& c) { return !c.group.planar; });
   const VertexNormals smooth = curved ? smoothVertexNormals(scene, chartAngle) : VertexNormals{};
   for (size_t id = 0; id < shapes.size(); ++id) cutChart(scene, shapes[id], atlas.charts[id], smooth, atlas);
-  if (atlas.elements == 0 && !polys.empty())
+  return atlas;
+}
+
+}  // namespace
+
+Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes, double chartAngle) {
+  if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
+  const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
+  const std::vector<ChartGroup> groups = groupCharts(scene, chartAngle);
+  // Charts cover at least the scene's area: far over the texture limit, say so before cutting
+  // the scene into more cells than any GPU holds.
+  if (double least = scene.totalArea() / (ts * ts); least > double(maxSize) * maxSize)
+    failOverLimit(scene, groups, ts, {false, std::sqrt(least), std::sqrt(least), {}, {}}, maxSize, memory);
+  std::vector<ChartShape> shapes = chartShapes(groups, ts);
+  Layout layout = pack(shapes, maxSize);
+  if (!fits(layout, memory)) failOverLimit(scene, groups, ts, layout, maxSize, memory);
+  Atlas atlas = placeCharts(scene, shapes, layout, ts, chartAngle);
+  if (atlas.elements == 0 && !scene.polygons().empty())
     fail("texel size {} leaves no element: every polygon is a sliver under {} of a texel; use a smaller --texel-size",
          ts, kMinCutFraction);
   return atlas;
+}
+
+Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double texelSize, int maxSize,
+                 std::size_t maxBytes, double chartAngle) {
+  std::vector<ChartShape> shapes;
+  for (const ChartSpec& spec : specs) {
+    ChartShape& c = shapes.emplace_back(ChartShape{spec.group, spec.frame, {}, spec.corner, spec.size, spec.cellSize});
+    for (const Poly3& part : spec.group.parts) {
+      Poly2& q = c.parts.emplace_back();
+      for (auto& v : part) q.push_back(c.frame.project(v));
+    }
+  }
+  const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
+  Layout layout = pack(shapes, maxSize);
+  if (!fits(layout, memory))
+    fail("the refined atlas needs {:.0f} x {:.0f} texels, over the GPU's or the memory's limit; use fewer --elements",
+         layout.width, layout.height);
+  return placeCharts(scene, shapes, layout, texelSize, chartAngle);
 }
 
 double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle) {
@@ -297,7 +325,7 @@ double texelSizeForElements(const Scene& scene, std::size_t elements, double cha
       elements <= kMaxCountedElements ? groupCharts(scene, chartAngle) : std::vector<ChartGroup>{};
   for (int iter = 0; iter < 4 && elements <= kMaxCountedElements; ++iter) {
     size_t count = 0;
-    for (auto& g : groups) count += countElements(chartShape(g, ts), ts);
+    for (auto& g : groups) count += countElements(chartShape(g, ts));
     if (count == 0) break;  // only slivers: buildAtlas says so
     ts *= std::sqrt(double(count) / double(elements));
   }
@@ -306,7 +334,7 @@ double texelSizeForElements(const Scene& scene, std::size_t elements, double cha
 
 glm::dvec2 Atlas::atlasCoord(int polygon, const glm::dvec3& p) const {
   const Chart& c = charts[chartOf[std::size_t(polygon)]];
-  return glm::dvec2(c.origin) + (c.frame.project(p) - c.corner) / texelSize;
+  return glm::dvec2(c.origin) + (c.frame.project(p) - c.corner) / c.cellSize;
 }
 
 std::vector<Poly3> Atlas::elementShape(const Scene& scene, int x, int y) const {
@@ -325,8 +353,8 @@ std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const 
   for (std::size_t k = 0; k < c.parts.size(); ++k) {
     Poly2 poly;
     for (auto& v : c.parts[k]) poly.push_back(c.frame.project(v));
-    Poly2 cut = clipToBox(poly, c.corner + lo * texelSize, c.corner + hi * texelSize);
-    if (cut.size() < 3 || signedArea(cut) <= kMinCutFraction * texelSize * texelSize) continue;
+    Poly2 cut = clipToBox(poly, c.corner + lo * c.cellSize, c.corner + hi * c.cellSize);
+    if (cut.size() < 3 || signedArea(cut) <= kMinCutFraction * c.cellSize * c.cellSize) continue;
     const ScenePolygon& on = scene.polygons()[std::size_t(c.partPolygon[k])];
     Poly3& piece = out.emplace_back();
     for (auto& q : cut) piece.push_back(liftOnto(c.frame, c.planar, on, q));
@@ -385,7 +413,10 @@ std::uint64_t Atlas::layoutHash() const {
     const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
     for (std::size_t i = 0; i < sizeof(value); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
   };
-  for (const Chart& c : charts) add(c.origin), add(c.size), add(c.frame.u), add(c.frame.v), add(c.corner);
+  for (const Chart& c : charts) {
+    add(c.origin), add(c.size), add(c.frame.u), add(c.frame.v), add(c.corner);
+    if (c.cellSize != texelSize) add(c.cellSize);  // refined leaves; uniform hashes are as before
+  }
   return h;
 }
 

@@ -10,7 +10,7 @@ namespace {
 // so the texels listed are the elements.
 template <class Fn>
 void forEachCutTexel(const Atlas& atlas, const Chart& c, const Poly3& part, Fn&& fn) {
-  const double ts = atlas.texelSize;
+  const double ts = c.cellSize;
   Poly2 q;
   glm::dvec2 lo(1e300), hi(-1e300);
   for (auto& v : part) q.push_back(c.frame.project(v)), lo = glm::min(lo, q.back()), hi = glm::max(hi, q.back());
@@ -30,7 +30,7 @@ TexelParts texelParts(const Atlas& atlas) {
   TexelParts out;
   for (const Chart& c : atlas.charts) {
     out.charts.push_back(glm::vec4(glm::vec3(c.frame.origin), 0.0f));
-    out.charts.push_back(glm::vec4(glm::vec3(c.frame.u), float(atlas.texelSize)));
+    out.charts.push_back(glm::vec4(glm::vec3(c.frame.u), float(c.cellSize)));
     out.charts.push_back(glm::vec4(glm::vec3(c.frame.v), 0.0f));
     out.charts.push_back(glm::vec4(float(c.corner.x), float(c.corner.y), float(c.origin.x), float(c.origin.y)));
   }
