@@ -125,10 +125,11 @@ TEST_CASE("A checkpoint of the uniform layout is refused by the refined one", "[
   const RefinedLayout refined = refineLayout(scene, tree);
   const Atlas atlas = buildAtlas(refined.scene, refined.specs, base.texelSize);
   auto identity = [](const Atlas& a) {
-    return nlohmann::json{{"atlas", {a.width, a.height}}, {"atlas_layout", fmt::format("{:016x}", a.layoutHash())}};
+    // The same size on both sides: only the layout hash tells them apart.
+    return nlohmann::json{{"atlas", {64, 64}}, {"atlas_layout", fmt::format("{:016x}", a.layoutHash())}};
   };
   CHECK_NOTHROW(checkResumable("same.ckpt", identity(base), identity(base)));
-  CHECK_THROWS_WITH(checkResumable("uniform.ckpt", identity(base), identity(atlas)), Catch::Contains("atlas"));
+  CHECK_THROWS_WITH(checkResumable("uniform.ckpt", identity(base), identity(atlas)), Catch::Contains("atlas_layout"));
 }
 
 TEST_CASE("A closed box solved on a refined layout gives B = E / (1 - rho)", "[gl][adaptive]") {
@@ -151,4 +152,16 @@ TEST_CASE("A closed box solved on a refined layout gives B = E / (1 - rho)", "[g
   REQUIRE(objects.size() == 1);
   INFO(atlas.elements << " elements");
   CHECK(objects[0].mean.x == Approx(2.0).epsilon(0.001));
+}
+
+TEST_CASE("Bad input: an adaptive layout over the texture limit is one error naming the limit and what to lower",
+          "[cpu][adaptive]") {
+  const Scene scene = shadowScene();
+  const Atlas base = buildAtlas(scene, kTexel);
+  LeafTree tree(base, 1);
+  REQUIRE(tree.split(0));
+  const RefinedLayout refined = refineLayout(scene, tree);
+  CHECK_THROWS_WITH(
+      buildAtlas(refined.scene, refined.specs, base.texelSize, 64),
+      Catch::Contains("texel atlas, over the GPU's limit of 64 texels a side") && Catch::Contains("--split-gradient"));
 }

@@ -307,8 +307,10 @@ Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double
   const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
   Layout layout = pack(shapes, maxSize);
   if (!fits(layout, memory))
-    fail("the refined atlas needs {:.0f} x {:.0f} texels, over the GPU's or the memory's limit; use fewer --elements",
-         layout.width, layout.height);
+    fail(
+        "the adaptive layout needs a {:.0f} x {:.0f} texel atlas, over the GPU's limit of {} texels a side or the "
+        "memory's; use fewer --elements, a larger --split-gradient or a smaller --leaf-depth",
+        layout.width, layout.height, maxSize);
   return placeCharts(scene, shapes, layout, texelSize, chartAngle);
 }
 
