@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "src/output/SeamStitch.h"
 #include "src/scene/Leaves.h"
 #include "src/solver/Checkpoint.h"
 #include "src/solver/ProgressiveSolver.h"
@@ -164,4 +165,59 @@ TEST_CASE("Bad input: an adaptive layout over the texture limit is one error nam
   CHECK_THROWS_WITH(
       buildAtlas(refined.scene, refined.specs, base.texelSize, 64),
       Catch::Contains("texel atlas, over the GPU's limit of 64 texels a side") && Catch::Contains("--split-gradient"));
+}
+
+namespace {
+
+// The refined scene's polygon under floor point (x, 0, z), or -1.
+int polygonUnder(const Scene& scene, double x, double z) {
+  for (std::size_t p = 0; p < scene.polygons().size(); ++p) {
+    const Poly3& v = scene.polygons()[p].vertices;
+    if (std::abs(v[0].y) > 1e-9) continue;
+    bool inside = true;
+    for (std::size_t i = 0; i < v.size() && inside; ++i) {
+      const glm::dvec3 a = v[i], b = v[(i + 1) % v.size()];
+      inside = (b.z - a.z) * (x - a.x) - (b.x - a.x) * (z - a.z) >= -1e-12;  // inside: counter-clockwise about +y
+    }
+    if (inside) return int(p);
+  }
+  return -1;
+}
+
+// The largest change between neighbouring lookups 1/64 of a base texel apart along z = z0 (x in
+// [-2, 2)), the lookups Atlas::sample (shaders/camera.frag's twin) makes of `values`.
+double largestStep(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& values, double z0) {
+  double largest = 0, last = -1;
+  for (double x = -1.99; x < 1.99; x += kTexel / 64) {
+    const int p = polygonUnder(scene, x, z0);
+    if (p < 0) continue;
+    const double b = atlas.sample(values, p, atlas.atlasCoord(p, {x, 0, z0})).x;
+    if (last >= 0) largest = std::max(largest, std::abs(b - last));
+    last = b;
+  }
+  return largest;
+}
+
+}  // namespace
+
+TEST_CASE("Lookups across leaves of different density show no step once seams are stitched", "[cpu][adaptive]") {
+  // B = 1 + x / 4 on the floor: a smooth ramp, so any jump between lookups 1/64 of a texel apart
+  // is the layout's, where a coarse tile meets its split neighbour's half-side texels.
+  const Scene scene = shadowScene();
+  const Atlas base = buildAtlas(scene, kTexel);
+  LeafTree tree(base, 2);
+  REQUIRE(tree.split(5));  // a floor tile inside, then one of its quarters
+  REQUIRE(tree.split(tree.nodes()[5].firstChild));
+  const RefinedLayout refined = refineLayout(scene, tree);
+  const Atlas atlas = buildAtlas(refined.scene, refined.specs, base.texelSize);
+  std::vector<glm::vec4> B(atlas.positionArea.size(), glm::vec4(0.0f));
+  for (std::size_t t = 0; t < B.size(); ++t)
+    if (atlas.positionArea[t].w > 0) B[t] = glm::vec4(glm::vec3(1 + atlas.positionArea[t].x / 4), 0);
+  const glm::dvec3 centre = nodeCentre(base, tree.nodes()[5]);
+  const double ramp = kTexel / 64 / 4;  // the ramp's own change between lookups
+  const double raw = largestStep(refined.scene, atlas, B, centre.z);
+  const double stitched = largestStep(refined.scene, atlas, stitchSeams(refined.scene, atlas, B), centre.z);
+  INFO("largest step " << raw << " unstitched, " << stitched << " stitched; the ramp's " << ramp);
+  CHECK(raw > 10 * ramp);
+  CHECK(stitched < 4 * ramp);  // measured 1.8: a kink where the densities meet, no step
 }
