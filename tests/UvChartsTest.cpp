@@ -278,3 +278,10 @@ TEST_CASE("Bad input: --uv input on a scene without lightmap UVs is one error na
                                  {"no-uv.gltf: --uv input needs lightmap UVs (glTF TEXCOORD_1) on every face; 6 of 6 "
                                   "polygons have none"});
 }
+
+TEST_CASE("Bad input: adaptive subdivision with input UVs is one error before the scene is read", "[cli][bad-input]") {
+  test::bad_input::expectRefused(
+      "uv-adaptive",
+      "solve " + test::sourcePath("scenes/cornell/cornell.gltf") + " --uv input --subdivide adaptive --shots 2 --quiet",
+      {"--subdivide adaptive splits projection charts; it cannot take --uv input's charts"});
+}

@@ -75,6 +75,9 @@ void Commands::addSolve() {
   add(s, "--supersample", solve.supersample);
   add(s, "--exposure", solve.exposure);
   add(s, "--ambient", solve.ambient, "off; on for --camera-path frames");
+  add(s, "--subdivide", solve.subdivide.adaptive);
+  add(s, "--leaf-depth", solve.subdivide.maxDepth);
+  add(s, "--split-gradient", solve.subdivide.rule.threshold);
   addSolveOutputs(s);
   addWalkthrough(s);
 }

@@ -12,6 +12,7 @@
 #include "src/base/Error.h"
 #include "src/base/Interrupt.h"
 #include "src/base/OutputPaths.h"
+#include "src/cli/AdaptiveRounds.h"
 #include "src/output/DirectLight.h"
 #include "src/output/GltfWriter.h"
 #include "src/output/ImageFile.h"
@@ -90,6 +91,8 @@ namespace {
 // Everything checkable before a scene is read: the method, writable outputs, flag combinations.
 void checkSolveInputs(const SolveOptions& o) {
   checkSolveOutputs(o, {{"the scene", o.scene}});
+  if (o.subdivide.adaptive && o.discretisation.uv == UvSource::Input)  // leaves split projection charts only
+    throw InputError("--subdivide adaptive splits projection charts; it cannot take --uv input's charts");
   if (o.out.empty() && o.image.empty() && o.atlas.empty() && o.ply.empty() && o.gltf.empty() && o.report.empty() &&
       o.checkpoint.empty() && o.cameraPath.empty())
     warn(
@@ -228,6 +231,11 @@ int AtlasMethod::solve(const SolveOptions& o) const {
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
   const Discretisation& d = o.discretisation;
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle, d.uv);
+  if (o.subdivide.adaptive) {  // from here on, the refined scene and atlas are the solve's
+    AdaptiveLayout adaptive = refineAdaptively(o.subdivide, *this, scene, atlas, camera, double(o.width) / o.height,
+                                               backend->maxTextureSize(), d.chartAngle);
+    if (adaptive.refined) scene = std::move(adaptive.refined->scene), atlas = std::move(*adaptive.atlas);
+  }
   SolverState state(scene, atlas);
   const std::unique_ptr<AtlasRun> run = start(state);
   Solver& solver = run->solver();

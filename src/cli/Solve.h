@@ -10,6 +10,7 @@
 #include "src/scene/Atlas.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/Presets.h"
+#include "src/solver/Subdivide.h"
 #include "src/walk/Walkthrough.h"
 
 namespace hemirad {
@@ -18,6 +19,7 @@ struct SolveOptions {
   std::string scene;
   LoadOptions load;
   Discretisation discretisation;
+  SubdivideOptions subdivide;              // --subdivide, --leaf-depth, --split-gradient
   std::string methodName = "progressive";  // --method
   const MethodUnit* method = nullptr;      // that method, its own flags bound (Commands::settle)
   gl::BackendOptions backend;

@@ -156,6 +156,17 @@ std::vector<Flag> sceneAndSolverFlags() {
        "hold)",
        oneOf(std::map<std::string, UvSource>{{"auto", UvSource::Auto}, {"input", UvSource::Input}}, "auto|input"),
        "auto"},
+      {"--subdivide", "MODE",
+       "Elements: uniform (one texel size) or adaptive (seed 003's quadtree: solve, split the 16 x 16-texel leaves "
+       "where the radiosity's relative change per texel exceeds --split-gradient into four of half the texel side, "
+       "solve again, to --leaf-depth; --elements sets the first round's count; docs/adaptive.md)",
+       oneOf(std::map<std::string, bool>{{"uniform", false}, {"adaptive", true}}, "uniform|adaptive"), "uniform"},
+      {"--leaf-depth", "D", "Adaptive: the quadtree's maximum depth (texels 2^-D of --texel-size a side)",
+       CLI::Range(1, 4)},
+      {"--split-gradient", "G",
+       "Adaptive: a texel is steep where its radiosity changes by more than G of itself per texel (central "
+       "differences over its chart's neighbours); a leaf with 8 steep texels splits",
+       positive},
       {"--scenes", "OBJ",
        "OBJ scenes; a relative path not found from here is read from the shipped scenes (docs/install.md)", kScene},
       // The solver.

@@ -82,7 +82,9 @@ std::vector<Constraint> seamConstraints(const Scene& scene, const Atlas& atlas) 
   for (const SharedEdge& e : sharedEdges(scene)) {
     if (atlas.chartOf[std::size_t(e.p)] == atlas.chartOf[std::size_t(e.q)]) continue;
     if (!alike(scene, scene.polygons()[std::size_t(e.p)], scene.polygons()[std::size_t(e.q)])) continue;
-    const int n = std::max(2, int(std::ceil(2 * glm::length(e.b - e.a) / atlas.texelSize)));
+    const double cell = std::min(atlas.charts[atlas.chartOf[std::size_t(e.p)]].cellSize,
+                                 atlas.charts[atlas.chartOf[std::size_t(e.q)]].cellSize);
+    const int n = std::max(2, int(std::ceil(2 * glm::length(e.b - e.a) / cell)));
     for (int k = 0; k < n; ++k) {
       const glm::dvec3 x = e.a + (e.b - e.a) * ((k + 0.5) / n);
       Constraint c{tapsAt(atlas, e.p, x), tapsAt(atlas, e.q, x)};

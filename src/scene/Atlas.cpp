@@ -33,6 +33,7 @@ struct ChartShape {
   std::vector<Poly2> parts;  // the group's parts in chart coordinates
   glm::dvec2 corner;         // lower-left of the texel grid
   glm::ivec2 size;
+  double cellSize = 0;  // the side of its cells (Chart::cellSize)
 };
 
 // The seed's frame turned in its plane to the minimum-area rectangle of the chart's outline
@@ -73,22 +74,24 @@ ChartShape chartShape(const ChartGroup& g, double ts) {
          std::max(extent.x, extent.y), kMaxChartSide, ts);
   c.size = glm::max(glm::ivec2(cells), glm::ivec2(1));
   c.corner = lo - (glm::dvec2(c.size) * ts - extent) * 0.5;
+  c.cellSize = ts;
   return c;
 }
 
 // The same grid turned a quarter counter-clockwise in its plane (u' = v, v' = -u): cell (i, j)
 // becomes (j, size.x - 1 - i), so the packer may place a chart standing or lying.
-void turnQuarter(ChartShape& c, double ts) {
+void turnQuarter(ChartShape& c) {
   c.map.frame = {c.map.frame.origin, c.map.frame.v, -c.map.frame.u, c.map.frame.n};
   for (Poly2& part : c.parts)
     for (glm::dvec2& q : part) q = glm::dvec2(q.y, -q.x);
   if (c.map.uvMapped()) c.map.uv = c.parts;
-  c.corner = glm::dvec2(c.corner.y, -(c.corner.x + c.size.x * ts));
+  c.corner = glm::dvec2(c.corner.y, -(c.corner.x + c.size.x * c.cellSize));
   c.size = glm::ivec2(c.size.y, c.size.x);
 }
 
 template <class Fn>  // fn(i, j, part, cut polygon in plane coordinates)
-void forEachCut(const ChartShape& c, double ts, Fn&& fn) {
+void forEachCut(const ChartShape& c, Fn&& fn) {
+  const double ts = c.cellSize;
   for (std::size_t k = 0; k < c.parts.size(); ++k) {
     glm::ivec2 lo(0), hi = c.size;
     if (c.parts.size() > 1) {  // only the cells under this part's bounds
@@ -127,9 +130,9 @@ void refuseOverlap(const Scene& scene, const std::vector<ElementSum>& cells, con
 
 // Every cell's element of chart c (row-major over c.size). A curved chart's pieces weigh in the
 // smooth normal at their centroid (SmoothNormals.h), a planar one's the plane's.
-std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, double ts, const VertexNormals& smooth) {
+std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, const VertexNormals& smooth) {
   std::vector<ElementSum> cells(std::size_t(c.size.x) * std::size_t(c.size.y));
-  forEachCut(c, ts, [&](int i, int j, int k, const Poly2& cut) {
+  forEachCut(c, [&](int i, int j, int k, const Poly2& cut) {
     const int poly = c.group.partPolygon[std::size_t(k)];
     const ScenePolygon& on = scene.polygons()[std::size_t(poly)];
     const Poly3& part = c.group.parts[std::size_t(k)];
@@ -145,18 +148,18 @@ std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, d
     e.normal += a * (c.group.planar ? on.normal : smoothNormalAt(on, smooth[std::size_t(poly)], centre));
     if (a > e.largest) e.largest = a, e.polygon = poly;
   });
-  if (c.map.uvMapped()) refuseOverlap(scene, cells, c, ts);
+  if (c.map.uvMapped()) refuseOverlap(scene, cells, c, c.cellSize);
   return cells;
 }
 
-std::size_t countElements(const ChartShape& c, double ts) {
+std::size_t countElements(const ChartShape& c) {
   std::size_t n = 0;
   if (c.parts.size() == 1) {
-    forEachCut(c, ts, [&](int, int, int, const Poly2&) { ++n; });
+    forEachCut(c, [&](int, int, int, const Poly2&) { ++n; });
     return n;
   }
   std::vector<char> hit(std::size_t(c.size.x) * std::size_t(c.size.y), 0);
-  forEachCut(c, ts, [&](int i, int j, int, const Poly2&) {
+  forEachCut(c, [&](int i, int j, int, const Poly2&) {
     char& h = hit[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
     n += h == 0, h = 1;
   });
@@ -225,7 +228,7 @@ double hostMemoryBytes() {
 
 // Writes chart c's elements into the atlas.
 void cutChart(const Scene& scene, const ChartShape& shape, const Chart& c, const VertexNormals& smooth, Atlas& atlas) {
-  const std::vector<ElementSum> cells = chartElements(scene, shape, atlas.texelSize, smooth);
+  const std::vector<ElementSum> cells = chartElements(scene, shape, smooth);
   for (int j = 0; j < c.size.y; ++j)
     for (int i = 0; i < c.size.x; ++i) {
       const ElementSum& e = cells[std::size_t(j) * std::size_t(c.size.x) + std::size_t(i)];
@@ -258,16 +261,40 @@ Chart makeChart(const ChartShape& s, glm::ivec2 origin) {
   c.origin = origin;
   c.size = s.size;
   c.corner = s.corner;
+  c.cellSize = s.cellSize;
   return c;
+}
+
+// Places the packed shapes and cuts their elements (both entries below).
+Atlas placeCharts(const Scene& scene, std::vector<ChartShape>& shapes, const Layout& layout, double ts,
+                  double chartAngle) {
+  Atlas atlas;
+  atlas.texelSize = ts;
+  for (std::size_t id = 0; id < shapes.size(); ++id)
+    if (layout.turned[id]) turnQuarter(shapes[id]);
+  atlas.chartOf.assign(scene.polygons().size(), 0);
+  for (size_t id = 0; id < shapes.size(); ++id) {
+    atlas.charts.push_back(makeChart(shapes[id], layout.origins[id]));
+    for (int p : shapes[id].group.polygons) atlas.chartOf[std::size_t(p)] = std::uint32_t(id);
+    indexParts(atlas.charts.back(), scene.polygons().size(), atlas.firstPartOf);
+  }
+  atlas.width = int(layout.width);
+  atlas.height = int(layout.height);
+
+  size_t texels = size_t(atlas.width) * atlas.height;
+  atlas.positionArea.assign(texels, glm::vec4(0.0f));
+  atlas.polygonOf.assign(texels, kNoPolygon);
+  atlas.normalOf.assign(texels, glm::vec3(0.0f));
+  const bool curved = std::any_of(shapes.begin(), shapes.end(), [](const ChartShape& c) { return !c.group.planar; });
+  const VertexNormals smooth = curved ? smoothVertexNormals(scene, chartAngle) : VertexNormals{};
+  for (size_t id = 0; id < shapes.size(); ++id) cutChart(scene, shapes[id], atlas.charts[id], smooth, atlas);
+  return atlas;
 }
 
 }  // namespace
 
 Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes, double chartAngle, UvSource uv) {
   if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
-  const auto& polys = scene.polygons();
-  Atlas atlas;
-  atlas.texelSize = ts;
   const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
   const std::vector<ChartGroup> groups = chartGroups(scene, chartAngle, uv);
   // Charts cover at least the scene's area: far over the texture limit, say so before cutting
@@ -277,28 +304,31 @@ Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxByte
   std::vector<ChartShape> shapes = chartShapes(groups, ts);
   Layout layout = pack(shapes, maxSize);
   if (!fits(layout, memory)) failOverLimit(scene, groups, ts, layout, maxSize, memory);
-  for (std::size_t id = 0; id < shapes.size(); ++id)
-    if (layout.turned[id]) turnQuarter(shapes[id], ts);
-  atlas.chartOf.assign(polys.size(), 0);
-  for (size_t id = 0; id < shapes.size(); ++id) {
-    atlas.charts.push_back(makeChart(shapes[id], layout.origins[id]));
-    for (int p : shapes[id].group.polygons) atlas.chartOf[std::size_t(p)] = std::uint32_t(id);
-    indexParts(atlas.charts.back(), polys.size(), atlas.firstPartOf);
-  }
-  atlas.width = int(layout.width);
-  atlas.height = int(layout.height);
-
-  size_t texels = size_t(atlas.width) * atlas.height;
-  atlas.positionArea.assign(texels, glm::vec4(0.0f));
-  atlas.polygonOf.assign(texels, kNoPolygon);
-  atlas.normalOf.assign(texels, glm::vec3(0.0f));
-  const bool curved = std::any_of(groups.begin(), groups.end(), [](const ChartGroup& g) { return !g.planar; });
-  const VertexNormals smooth = curved ? smoothVertexNormals(scene, chartAngle) : VertexNormals{};
-  for (size_t id = 0; id < shapes.size(); ++id) cutChart(scene, shapes[id], atlas.charts[id], smooth, atlas);
-  if (atlas.elements == 0 && !polys.empty())
+  Atlas atlas = placeCharts(scene, shapes, layout, ts, chartAngle);
+  if (atlas.elements == 0 && !scene.polygons().empty())
     fail("texel size {} leaves no element: every polygon is a sliver under {} of a texel; use a smaller --texel-size",
          ts, kMinCutFraction);
   return atlas;
+}
+
+Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double texelSize, int maxSize,
+                 std::size_t maxBytes, double chartAngle) {
+  std::vector<ChartShape> shapes;
+  for (const ChartSpec& spec : specs) {
+    ChartShape& c = shapes.emplace_back();
+    c.group = spec.group, c.corner = spec.corner, c.size = spec.size, c.cellSize = spec.cellSize;
+    c.map.frame = spec.frame, c.map.planar = spec.group.planar;
+    for (std::size_t k = 0; k < spec.group.parts.size(); ++k)
+      c.parts.push_back(c.map.partInChart(spec.group.parts[k], k));
+  }
+  const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
+  Layout layout = pack(shapes, maxSize);
+  if (!fits(layout, memory))
+    fail(
+        "the adaptive layout needs a {:.0f} x {:.0f} texel atlas, over the GPU's limit of {} texels a side or the "
+        "memory's; use fewer --elements, a larger --split-gradient or a smaller --leaf-depth",
+        layout.width, layout.height, maxSize);
+  return placeCharts(scene, shapes, layout, texelSize, chartAngle);
 }
 
 double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle, UvSource uv) {
@@ -314,7 +344,7 @@ double texelSizeForElements(const Scene& scene, std::size_t elements, double cha
       elements <= kMaxCountedElements ? chartGroups(scene, chartAngle, uv) : std::vector<ChartGroup>{};
   for (int iter = 0; iter < 4 && elements <= kMaxCountedElements; ++iter) {
     size_t count = 0;
-    for (auto& g : groups) count += countElements(chartShape(g, ts), ts);
+    for (auto& g : groups) count += countElements(chartShape(g, ts));
     if (count == 0) break;  // only slivers: buildAtlas says so
     ts *= std::sqrt(double(count) / double(elements));
   }
@@ -333,7 +363,7 @@ glm::dvec2 Atlas::chartCoord(int polygon, const glm::dvec3& p) const {
 
 glm::dvec2 Atlas::atlasCoord(int polygon, const glm::dvec3& p) const {
   const Chart& c = charts[chartOf[std::size_t(polygon)]];
-  return glm::dvec2(c.origin) + (chartCoord(polygon, p) - c.corner) / texelSize;
+  return glm::dvec2(c.origin) + (chartCoord(polygon, p) - c.corner) / c.cellSize;
 }
 
 std::vector<Poly3> Atlas::elementShape(const Scene& scene, int x, int y) const {
@@ -350,8 +380,8 @@ std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const 
   glm::dvec2 lo(rect.x - c.origin.x, rect.y - c.origin.y), hi = lo + glm::dvec2(rect.z, rect.w);
   std::vector<Poly3> out;
   for (std::size_t k = 0; k < c.parts.size(); ++k) {
-    Poly2 cut = clipToBox(c.partInChart(c.parts[k], k), c.corner + lo * texelSize, c.corner + hi * texelSize);
-    if (cut.size() < 3 || signedArea(cut) <= kMinCutFraction * texelSize * texelSize) continue;
+    Poly2 cut = clipToBox(c.partInChart(c.parts[k], k), c.corner + lo * c.cellSize, c.corner + hi * c.cellSize);
+    if (cut.size() < 3 || signedArea(cut) <= kMinCutFraction * c.cellSize * c.cellSize) continue;
     const ScenePolygon& on = scene.polygons()[std::size_t(c.partPolygon[k])];
     Poly3& piece = out.emplace_back();
     for (auto& q : cut) piece.push_back(c.toSurface(c.parts[k], k, on, q));
@@ -414,6 +444,7 @@ std::uint64_t Atlas::layoutHash() const {
     add(c.origin), add(c.size), add(c.frame.u), add(c.frame.v), add(c.corner);
     for (const Poly2& t : c.uv)
       for (glm::dvec2 q : t) add(q);
+    if (c.cellSize != texelSize) add(c.cellSize);  // refined leaves; uniform hashes are as before
   }
   return h;
 }

@@ -1,7 +1,8 @@
 // The atlas: every chart (a set of polygons sharing one plane frame, src/scene/Charts.h) gets a
-// rectangular grid of square texels of side `texelSize`; the pieces of its polygons inside a
-// texel's prism (along the chart's axis) are one radiosity element, with their true total area
-// (partial texels at edges keep only what lies inside) and its centre at their area centroid.
+// rectangular grid of square texels of side `texelSize` (its own `cellSize` on adaptive leaves,
+// src/scene/Leaves.h); the pieces of its polygons inside a texel's prism (along the chart's axis)
+// are one radiosity element, with their true total area (partial texels at edges keep only what
+// lies inside) and its centre at their area centroid.
 // Each chart's grid lies along its outline's minimum-area rectangle; charts are packed without
 // gutters (src/scene/AtlasPacker.h): every lookup masks by chart, so filtering never mixes charts.
 #pragma once
@@ -30,6 +31,17 @@ struct Chart : ChartMapping {
   glm::ivec2 origin{0};  // atlas texel of cell (0, 0)
   glm::ivec2 size{0};    // cells
   glm::dvec2 corner{0};  // chart coordinates of cell (0, 0)'s lower-left corner
+  double cellSize = 0;   // its cells' side: Atlas::texelSize, finer on refined leaves (src/scene/Leaves.h)
+};
+
+// A projection chart whose grid the caller lays (refined leaves, src/scene/Leaves.h): cut as
+// buildAtlas cuts.
+struct ChartSpec {
+  ChartGroup group;
+  PlaneFrame frame;
+  glm::dvec2 corner{0};
+  glm::ivec2 size{0};
+  double cellSize = 0;
 };
 
 // A block of 2^k x 2^k cells of one chart that shoots as one element (substructuring).
@@ -39,7 +51,7 @@ struct ShooterBlock {
 
 class Atlas {
  public:
-  double texelSize = 0;
+  double texelSize = 0;  // the base cell side (every chart's in a uniform atlas)
   int width = 0, height = 0;
   std::vector<Chart> charts;           // index = chart id
   std::vector<std::uint32_t> chartOf;  // per polygon: its chart
@@ -84,6 +96,9 @@ class Atlas {
 // uv: where the charts' grids come from (Charts.h).
 Atlas buildAtlas(const Scene& scene, double texelSize, int maxSize = 16384, std::size_t maxBytes = 0,
                  double chartAngle = 0, UvSource uv = UvSource::Auto);
+// The atlas of charts laid by the caller; texelSize: the base side (Atlas::texelSize).
+Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double texelSize, int maxSize = 16384,
+                 std::size_t maxBytes = 0, double chartAngle = 0);
 // The texel size that gives about `elements` elements (partial texels counted).
 double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle = 0,
                             UvSource uv = UvSource::Auto);

@@ -41,6 +41,8 @@
   X(SSBO_VPLS, 23)             /* vpl.glsl */                                                            \
   X(SSBO_PATH_ENDS, 24)        /* vpl_trace.comp */                                                      \
   X(SSBO_REFERENCE_SUMS, 25)   /* reference.comp: per pixel its batch's path sums */                     \
+  X(SSBO_LEAF_OF, 26)          /* gradient.comp: per texel its quadtree leaf (src/scene/Leaves.h) */     \
+  X(SSBO_LEAF_COUNTS, 27)      /* gradient.comp: per leaf its texels over the gradient threshold */      \
   X(SSBO_PROBE_IN, 0)          /* the *_probe.comp test kernels: inputs */                               \
   X(SSBO_PROBE_OUT, 1)         /* and outputs */                                                         \
   X(SSBO_PROBE_POINTS, 2)      /* projection_probe.comp: item-buffer points */                           \

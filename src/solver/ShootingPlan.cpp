@@ -43,13 +43,15 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
     const bool emitter = scene.materials[scene.polygons()[std::size_t(c.polygon)].material].emissive();
     plan.chartLevel.push_back(shootLevel != kAutoShootLevel
                                   ? shootLevel
-                                  : levelFor(extent * (emitter ? kEmitterSide : kShooterSide), atlas.texelSize));
+                                  : levelFor(extent * (emitter ? kEmitterSide : kShooterSide), c.cellSize));
   }
+  double finest = atlas.texelSize;  // refined leaves see at their own cells' scale
+  for (const Chart& c : atlas.charts) finest = std::min(finest, c.cellSize);
   const int divisor = projection == Projection::Hemicube ? kHemicubeDivisor : 1;
   plan.itemResolution =
       itemResolution != kAutoItemResolution
           ? itemResolution
-          : std::max(kMinResolution, powerOfTwoAtLeast(kPixelsPerElement * extent / atlas.texelSize) / divisor);
+          : std::max(kMinResolution, powerOfTwoAtLeast(kPixelsPerElement * extent / finest) / divisor);
   return plan;
 }
 

@@ -10,7 +10,7 @@ namespace {
 // the cut: Atlas's own cut (forEachCut), so the texels listed are the elements.
 template <class Fn>
 void forEachCut(const Atlas& atlas, const Chart& c, const Poly2& q, Fn&& fn) {
-  const double ts = atlas.texelSize;
+  const double ts = c.cellSize;
   glm::dvec2 lo(1e300), hi(-1e300);
   for (glm::dvec2 v : q) lo = glm::min(lo, v), hi = glm::max(hi, v);
   const glm::ivec2 from = glm::clamp(glm::ivec2(glm::floor((lo - c.corner) / ts)) - 1, glm::ivec2(0), c.size);
@@ -50,7 +50,7 @@ TexelParts texelParts(const Atlas& atlas) {
       continue;
     }
     out.charts.push_back(glm::vec4(glm::vec3(c.frame.origin), 0.0f));
-    out.charts.push_back(glm::vec4(glm::vec3(c.frame.u), float(atlas.texelSize)));
+    out.charts.push_back(glm::vec4(glm::vec3(c.frame.u), float(c.cellSize)));
     out.charts.push_back(glm::vec4(glm::vec3(c.frame.v), 0.0f));
     out.charts.push_back(glm::vec4(float(c.corner.x), float(c.corner.y), float(c.origin.x), float(c.origin.y)));
   }

@@ -1,0 +1,58 @@
+#include "src/cli/AdaptiveRounds.h"
+
+#include <fmt/format.h>
+#include <chrono>
+#include <numeric>
+
+namespace hemirad {
+
+namespace {
+
+// One round: solve `atlas` to the method's stop rule and count each leaf's steep texels.
+std::vector<unsigned> solveAndCount(const SubdivideOptions& o, const AtlasMethod& method, const Scene& scene,
+                                    const Atlas& atlas, const std::vector<int>& baseChart, const LeafTree& tree,
+                                    const Camera& camera, double aspect, AdaptiveRound& round) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolverState state(scene, atlas);
+  const std::unique_ptr<AtlasRun> run = method.start(state);
+  run->look(camera, aspect);
+  round.shots = advanceToStop(run->solver(), {}).shots;
+  const std::vector<glm::vec4> B = state.readRadiosity();
+  const std::vector<unsigned> counts =
+      GradientPass().count(state, leafOfTexel(atlas, baseChart, tree), tree.nodes().size(), float(o.rule.threshold),
+                           darkestLuminance(atlas, B, o.rule));
+  round.elements = atlas.elements;
+  round.leaves = tree.leafCount();
+  round.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return counts;
+}
+
+}  // namespace
+
+AdaptiveLayout refineAdaptively(const SubdivideOptions& o, const AtlasMethod& method, const Scene& scene,
+                                const Atlas& base, const Camera& camera, double aspect, int maxTextureSize,
+                                double chartAngle) {
+  AdaptiveLayout out;
+  LeafTree tree(base, o.maxDepth);
+  std::vector<int> baseChart(base.charts.size());
+  std::iota(baseChart.begin(), baseChart.end(), 0);
+  for (int depth = 0; depth < o.maxDepth; ++depth) {
+    AdaptiveRound& round = out.rounds.emplace_back();
+    const Scene& s = out.refined ? out.refined->scene : scene;
+    const Atlas& a = out.atlas ? *out.atlas : base;
+    const std::vector<unsigned> counts = solveAndCount(o, method, s, a, baseChart, tree, camera, aspect, round);
+    round.split = splitSteepLeaves(tree, counts, o.rule);
+    fmt::print(stderr, "hemirad: adaptive round {}: {} elements, {} leaves, {} shots in {:.0f} ms; {} leaves split\n",
+               depth, round.elements, round.leaves, round.shots, round.ms, round.split);
+    if (round.split == 0) break;
+    RefinedLayout next = refineLayout(scene, tree);
+    out.atlas =
+        std::make_unique<Atlas>(buildAtlas(next.scene, next.specs, base.texelSize, maxTextureSize, 0, chartAngle));
+    baseChart = next.specChart;
+    out.refined = std::move(next);
+  }
+  out.leaves = tree.leafCount();
+  return out;
+}
+
+}  // namespace hemirad

@@ -1,0 +1,54 @@
+// Adaptive subdivision's refinement step (issue 31, seed 003 section 39.3.2; the layout is
+// src/scene/Leaves.h): after a solve, shaders/gradient.comp counts per leaf the texels whose
+// radiosity changes by more than `threshold` of their own per cell; leaves with `count` such
+// texels or more split. Cells halve at each depth, so a smooth gradient's change per cell halves
+// too and stops splitting, while a shadow edge or a contact keeps its jump and splits to the
+// maximum depth.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "gl/Objects.h"
+#include "src/scene/Leaves.h"
+#include "src/solver/SolverState.h"
+
+namespace hemirad {
+
+struct SplitRule {
+  double threshold = 0.1;  // relative luminance change per cell (--split-gradient)
+  // Texels over it that split a leaf: a line across a 16-cell leaf flags 16 to 32.
+  unsigned count = kLeafCells / 2;
+  // Luminance under which changes count as this floor's: darkFraction of the area-mean B.
+  double darkFraction = 0.01;
+};
+
+struct SubdivideOptions {
+  bool adaptive = false;  // --subdivide adaptive
+  int maxDepth = 2;       // --leaf-depth
+  SplitRule rule;
+};
+
+// The relative-change floor: rule.darkFraction of the area-weighted mean luminance of B.
+float darkestLuminance(const Atlas& atlas, const std::vector<glm::vec4>& B, const SplitRule& rule);
+
+// The GPU pass (needs a current GL context).
+class GradientPass {
+ public:
+  GradientPass();
+  // Per tree node, its texels over the threshold (leafOf: leafOfTexel of state.atlas).
+  std::vector<unsigned> count(const SolverState& state, const std::vector<std::int32_t>& leafOf, std::size_t nodes,
+                              float threshold, float darkest) const;
+
+ private:
+  gl::Program program_;
+};
+
+// The same count on the CPU from a B readback (the pass's twin; tests).
+std::vector<unsigned> countSteepTexels(const Atlas& atlas, const std::vector<glm::vec4>& B,
+                                       const std::vector<std::int32_t>& leafOf, std::size_t nodes, float threshold,
+                                       float darkest);
+
+// Splits every leaf with counts >= rule.count (below the maximum depth); returns how many split.
+std::size_t splitSteepLeaves(LeafTree& tree, const std::vector<unsigned>& counts, const SplitRule& rule);
+
+}  // namespace hemirad
