@@ -14,6 +14,22 @@
 
 using namespace hemirad;
 
+namespace {
+
+struct Shipped {
+  Scene scene;
+  Atlas atlas;
+};
+
+// A shipped scene and its atlas of about `elements` elements.
+Shipped shippedScene(const std::string& path, std::size_t elements) {
+  Scene scene = loadScene(test::sourcePath(path));
+  Atlas atlas = buildAtlas(scene, texelSizeForElements(scene, elements));
+  return {std::move(scene), std::move(atlas)};
+}
+
+}  // namespace
+
 TEST_CASE("Exact reference: unoccluded pairs get the exact contour form factor, hidden ones zero", "[cpu]") {
   // Floor and ceiling with a blocker: a floor element under the blocker cannot see the ceiling
   // element above it; elements clear of it see their shooter unoccluded (bound 0).
@@ -49,8 +65,7 @@ TEST_CASE("Exact reference: unoccluded pairs get the exact contour form factor, 
 
 TEST_CASE("Cornell box: item-buffer visibility agreement rises with the item-mesh level", "[heavy][gl]") {
   test::backend();
-  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
-  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 10000));
+  auto [s, atlas] = shippedScene("scenes/cornell/cornell.obj", 10000);
   ValidateOptions o;
   o.levels = {0, 2, 4};
   Validation v = validate(s, atlas, o);
@@ -76,8 +91,7 @@ TEST_CASE("Cornell box: item-buffer visibility agreement rises with the item-mes
 
 TEST_CASE("Hemicube baseline: straight edges stay straight, so it agrees well without subdivision", "[heavy][gl]") {
   test::backend();
-  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
-  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 10000));
+  auto [s, atlas] = shippedScene("scenes/cornell/cornell.obj", 10000);
   ValidateOptions o;
   o.levels = {0};
   Validation hemisphere = validate(s, atlas, o);
@@ -94,8 +108,7 @@ TEST_CASE(
     "better with the item-mesh level",
     "[heavy][gl]") {
   test::backend();
-  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
-  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2500));
+  auto [s, atlas] = shippedScene("scenes/cornell/cornell.obj", 2500);
   ValidateOptions o;
   o.levels = {0, 3};
   o.itemResolutions = {256};
@@ -166,8 +179,7 @@ TEST_CASE(
     "(orthographic L4, hemicube L0)",
     "[heavy][gl]") {
   test::backend();
-  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
-  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2500));
+  auto [s, atlas] = shippedScene("scenes/cornell/cornell.obj", 2500);
   SolverState state(s, atlas);
   // The item buffers the bench uses: orthographic (seed 003's) at mesh level 4, 512^2 (the default
   // resolution) and 256^2 (--item-res auto at 10k); the hemicube at level 0, 256^2 and 128^2.
@@ -262,6 +274,8 @@ TEST_CASE("validate's level table prints small form-factor errors in significant
   CHECK(std::stod(row.at(10)) == Approx(s.ffRelErrorMax).epsilon(0.01));
 }
 
+namespace {
+
 // F from the unit emitter square to the receiver one unit above it, the half-size blocker half way
 // between (scenes/analytic/blocked_squares.obj), by Monte Carlo over both squares: a segment
 // between them crosses the blocker's plane at its midpoint. Standard error ~1e-4 at 1e6 pairs.
@@ -280,13 +294,14 @@ double blockedSquaresF() {
   return sum / n;
 }
 
+}  // namespace
+
 TEST_CASE(
     "validate's object form factor over every shooter element is within 2 % of the true F of the blocked squares, "
     "and a sample of shooters is named as one",
     "[gl]") {
   test::backend();
-  Scene s = loadScene(test::sourcePath("scenes/analytic/blocked_squares.obj"));
-  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 300));
+  auto [s, atlas] = shippedScene("scenes/analytic/blocked_squares.obj", 300);
   ValidateOptions o;
   o.levels = {0};
   o.itemResolutions = {128};
@@ -312,8 +327,7 @@ TEST_CASE(
 
 TEST_CASE("validate --item-res auto checks the item buffer a solve plans, not one of zero pixels", "[gl]") {
   test::backend();
-  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
-  Atlas atlas = buildAtlas(s, texelSizeForElements(s, 2000));
+  auto [s, atlas] = shippedScene("scenes/cornell/cornell.obj", 2000);
   ValidateOptions o;
   o.levels = {0};
   o.itemResolutions = {kAutoItemResolution};
