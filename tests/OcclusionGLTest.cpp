@@ -32,7 +32,7 @@ double receiverB(const std::string& flags) {
 TEST_CASE(
     "Every item-buffer projection and stochastic iteration hide the blocker: the blocked squares' receiver "
     "within 0.1 % (progressive) and 2.5 % (stochastic) of element-by-element shooting",
-    "[gl]") {
+    "[heavy][gl]") {  // CLI solves (~15 s under ASan): optimized only
   const double reference = receiverB("--preset reference --item-res 256 --converge 0.9999");
   const double unblocked = 0.5 * 0.19982;  // rho E F, Howell C-11
   INFO("element by element " << reference << ", unblocked " << unblocked);

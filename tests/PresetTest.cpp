@@ -65,7 +65,7 @@ TEST_CASE("The default solve is the fast plan and matches element-by-element sho
 }
 
 TEST_CASE("The seed003 preset reproduces the old default bitwise: seed 003's item buffer and level-1 shooting",
-          "[cli][preset]") {
+          "[heavy][cli][preset]") {  // CLI runs without memory-safety stakes: optimized only
   const std::string common = "--elements 1500 --shots 64";
   const nlohmann::json preset = presetSolve(common + " --preset seed003");
   const nlohmann::json explicitFlags =
@@ -84,7 +84,7 @@ TEST_CASE("The seed003 preset reproduces the old default bitwise: seed 003's ite
 }
 
 TEST_CASE("Explicit flags override a preset, given before or after it, and the report names what was overridden",
-          "[cli][preset]") {
+          "[heavy][cli][preset]") {
   const std::string common = "--elements 1500 --shots 32";
   const nlohmann::json after = presetSolve(common + " --preset seed003 --item-res 256 --shoot-level 2");
   const nlohmann::json before = presetSolve(common + " --item-res 256 --shoot-level 2 --preset seed003");
@@ -116,7 +116,7 @@ TEST_CASE("Explicit flags override a preset, given before or after it, and the r
 TEST_CASE(
     "Every command that solves by progressive refinement takes --preset, and without it shows the fast plan as "
     "its default",
-    "[cli][preset]") {
+    "[heavy][cli][preset]") {
   for (const char* command : {"solve", "bench", "view", "experiment", "compare-methods"}) {
     test::Run help = test::hemirad(std::string(command) + " --help");
     INFO(command << "\n" << help.output);

@@ -9,7 +9,7 @@ namespace {
 // The cells (i, j) of chart c that part q (chart coordinates) cuts with more than a sliver, with
 // the cut: Atlas's own cut (forEachCut), so the texels listed are the elements.
 template <class Fn>
-void forEachCut(const Atlas& atlas, const Chart& c, const Poly2& q, Fn&& fn) {
+void forEachCut(const Chart& c, const Poly2& q, Fn&& fn) {
   const double ts = c.cellSize;
   glm::dvec2 lo(1e300), hi(-1e300);
   for (glm::dvec2 v : q) lo = glm::min(lo, v), hi = glm::max(hi, v);
@@ -33,7 +33,7 @@ using Cuts = std::vector<std::pair<std::size_t, glm::uvec2>>;  // texel, (first 
 // them whole.
 void addUvPieces(const Atlas& atlas, const Chart& c, Cuts& cuts, TexelParts& out) {
   for (std::size_t k = 0; k < c.parts.size(); ++k)
-    forEachCut(atlas, c, c.uv[k], [&](int i, int j, const Poly2& cut) {
+    forEachCut(c, c.uv[k], [&](int i, int j, const Poly2& cut) {
       cuts.emplace_back(texelOf(atlas, c, i, j), glm::uvec2(unsigned(out.charts.size()), unsigned(cut.size())));
       for (glm::dvec2 q : cut) out.charts.push_back(glm::vec4(glm::vec3(liftTriangle(c.parts[k], c.uv[k], q)), 1.0f));
     });
@@ -62,7 +62,7 @@ TexelParts texelParts(const Atlas& atlas) {
       const Poly3& part = c.parts[k];
       const glm::uvec2 range(unsigned(out.charts.size()), unsigned(part.size()));
       for (auto& v : part) out.charts.push_back(glm::vec4(glm::vec3(v), 1.0f));
-      forEachCut(atlas, c, c.partInChart(part, k),
+      forEachCut(c, c.partInChart(part, k),
                  [&](int i, int j, const Poly2&) { cuts.emplace_back(texelOf(atlas, c, i, j), range); });
     }
   }

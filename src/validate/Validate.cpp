@@ -143,6 +143,21 @@ void compareSolution(const Scene& scene, const Atlas& atlas, const cpu::ExactVis
   v.solution = errors;
 }
 
+// Every pair of objects the reference's shooters reach from: reference and GPU F over them.
+std::vector<ObjectFormFactor> objectFormFactors(const Scene& scene, const Atlas& atlas, const ObjectSums& exact,
+                                                const ObjectSums& gpu) {
+  std::vector<std::size_t> population(scene.objects.size(), 0);
+  for (std::size_t t : chooseShooters(atlas, std::nullopt))
+    ++population[std::size_t(scene.polygons()[atlas.polygonOf[t]].object)];
+  std::vector<ObjectFormFactor> out;
+  for (size_t a = 0; a < scene.objects.size(); ++a)
+    for (size_t b = 0; b < scene.objects.size(); ++b)
+      if (exact.shooterArea[a] > 0)
+        out.push_back({scene.objects[a].name, scene.objects[b].name, exact.formFactor(a, b), exact.shooters[a],
+                       population[a], gpu.formFactor(a, b)});
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::size_t> chooseShooters(const Atlas& atlas, std::optional<std::size_t> count) {
@@ -210,14 +225,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
   v.figureShooter = shooters[figureIndex];
   v.figureExact = reference[figureIndex];
   if (o.solution) compareSolution(scene, atlas, exact.visibility(), o, v);
-  std::vector<std::size_t> population(objects, 0);
-  for (std::size_t t : chooseShooters(atlas, std::nullopt)) ++population[objectOf(t)];
-  for (size_t a = 0; a < objects; ++a)
-    for (size_t b = 0; b < objects; ++b) {
-      if (exactSums.shooterArea[a] <= 0) continue;
-      v.objectFormFactors.push_back({scene.objects[a].name, scene.objects[b].name, exactSums.formFactor(a, b),
-                                     exactSums.shooters[a], population[a], gpuSums.formFactor(a, b)});
-    }
+  v.objectFormFactors = objectFormFactors(scene, atlas, exactSums, gpuSums);
   return v;
 }
 
