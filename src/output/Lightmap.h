@@ -2,7 +2,8 @@
 // stb_rect_pack (src/output/ChartPacker.h; a chart may be placed transposed), each inside a
 // gutter of dilated texels (the nearest element's B copied outward), so plain bilinear sampling
 // (GL_LINEAR, CLAMP_TO_EDGE) at a polygon's edge reads its own values, never black nor another
-// chart. On the lightmap's border the gutter is cut away: clamping repeats the chart's own edge.
+// chart. On the lightmap's border the gutter is cut away (when every chart has one): clamping repeats
+// the chart's own edge.
 // One lightmap texel per element, as in the atlas; rows run from the image's top, as glTF's v does.
 // A chart one cell wide (or high) has no gutter across that side: its coordinates there are its
 // cells' centre line, so bilinear sampling reads its one column (row) alone, which holds the
