@@ -10,6 +10,10 @@ namespace hemirad {
 
 namespace {
 
+// Per axis: the chart is one cell across there, so its lightmap coordinate is the cells' centre
+// line and it needs no gutter on that axis (Lightmap.h).
+glm::bvec2 oneCellAcross(const Chart& c) { return glm::equal(c.size, glm::ivec2(1)); }
+
 // Fills every empty texel of one chart's padded rectangle (size `size`, `value` per texel,
 // `filled` marks) level by level outward from the elements: each takes the mean of its filled
 // edge neighbours, else of its filled corner neighbours, so the nearest elements' B reaches it.
@@ -89,8 +93,7 @@ glm::dvec2 Lightmap::coord(const Atlas& atlas, int polygon, glm::dvec2 atlasCoor
   const std::size_t chart = atlas.chartOf[std::size_t(polygon)];
   const Chart& c = atlas.charts[chart];
   glm::dvec2 local = atlasCoord - glm::dvec2(c.origin);
-  for (int k = 0; k < 2; ++k)
-    if (c.size[k] == 1) local[k] = 0.5;  // one cell across: its centre line (no gutter there)
+  local = glm::mix(local, glm::dvec2(0.5), oneCellAcross(c));
   return (transposed[chart] ? glm::dvec2(local.y, local.x) : local) + glm::dvec2(origins[chart]);
 }
 
@@ -106,7 +109,7 @@ Lightmap buildLightmap(const Atlas& atlas, const std::vector<glm::vec4>& B, cons
   std::vector<glm::ivec2> padded;
   bool everyGutter = true;  // only then may the packer cut the border's gutters away
   for (const Chart& c : atlas.charts) {
-    map.gutters.push_back(glm::ivec2(c.size.x > 1 ? g : 0, c.size.y > 1 ? g : 0));
+    map.gutters.push_back(glm::mix(glm::ivec2(g), glm::ivec2(0), oneCellAcross(c)));
     padded.push_back(c.size + 2 * map.gutters.back());
     everyGutter = everyGutter && map.gutters.back() == glm::ivec2(g);
   }

@@ -191,10 +191,10 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
   double worstError = -1;
   std::size_t figureIndex = 0;  // into `shooters`
   for (Projection projection : o.projections)
-    for (int asked : o.itemResolutions)
+    for (int asked : o.itemResolutions) {
+      // auto: what a solve with this projection plans (kAutoItemResolution is no resolution).
+      const int resolution = planShooting(scene, atlas, 0, asked, projection).itemResolution;
       for (int level : o.levels) {
-        // auto: what a solve with this projection plans (kAutoItemResolution is no resolution).
-        const int resolution = planShooting(scene, atlas, 0, asked, projection).itemResolution;
         const bool first = v.levels.empty(),
                    figureConfig = projection == o.projections[0] && asked == o.itemResolutions[0];
         FormFactorProbe probe(state, level, resolution, projection);
@@ -222,6 +222,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
             v.figureGpu[1] = std::move(gpu);
         }
       }
+    }
   v.figureShooter = shooters[figureIndex];
   v.figureExact = reference[figureIndex];
   if (o.solution) compareSolution(scene, atlas, exact.visibility(), o, v);
