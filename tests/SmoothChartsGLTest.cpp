@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 
+#include "src/output/Renderer.h"
 #include "src/output/SeamStitch.h"
 #include "tests/support/Support.h"
 
@@ -183,4 +184,30 @@ TEST_CASE("A floor cut into two charts jumps at the seam, and stitching the seam
   for (std::size_t t = 0; t < b.B.size(); ++t)
     if (b.atlas.polygonOf[t] != kNoPolygon && std::abs(b.atlas.positionArea[t].x - 1.0) > 2 * texel)
       CHECK(stitched[t] == b.B[t]);
+}
+
+TEST_CASE("Live views (viewer, walkthroughs) show B with its seams stitched, refreshed at every render",
+          "[gl][charts]") {
+  const Scene two = splitFloor(true);
+  test::backend();
+  const Atlas atlas = buildAtlas(two, 0.07);
+  SolverState state(two, atlas);
+  ProgressiveSettings p;
+  p.shootLevel = 0, p.itemResolution = 64, p.projection = Projection::Hemicube, p.itemSubdivision = 0;
+  ProgressiveSolver solver(state, p);
+  solver.advance(8);
+  const Camera camera{{1.0, 1.6, 0.5}, {1.0, 0.0, 0.5}, {0, 0, -1}, 60.0};
+  Renderer live(state), plain(state), fixed(state);
+  live.stitchLive();
+  auto renderBoth = [&] {
+    fixed.show(stitchSeams(two, atlas, state.readRadiosity()));
+    return std::pair{live.render(camera, 48, 48, 1), fixed.render(camera, 48, 48, 1)};
+  };
+  const auto [first, firstStitched] = renderBoth();
+  CHECK(first.rgb == firstStitched.rgb);
+  CHECK(first.rgb != plain.render(camera, 48, 48, 1).rgb);  // the seam is there to stitch
+  solver.advance(64);                                       // B moves on: the live view follows it
+  const auto [later, laterStitched] = renderBoth();
+  CHECK(later.rgb == laterStitched.rgb);
+  CHECK(later.rgb != first.rgb);
 }

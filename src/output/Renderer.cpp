@@ -47,11 +47,17 @@ glm::vec3 Renderer::ambientTerm() {
 }
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample) {
+  if (stitcher_) show((*stitcher_)(state_.readRadiosity()));
   return render(camera, width, height, supersample, shown());
 }
 
+void Renderer::stitchLive() {
+  auto stitcher = std::make_unique<SeamStitcher>(state_.scene, state_.atlas);
+  if (!stitcher->empty()) stitcher_ = std::move(stitcher);
+}
+
 void Renderer::show(const std::vector<glm::vec4>& values) {
-  shown_ = std::make_unique<gl::Texture>(GL_RGBA32F, state_.atlas.width, state_.atlas.height);
+  if (!shown_) shown_ = std::make_unique<gl::Texture>(GL_RGBA32F, state_.atlas.width, state_.atlas.height);
   shown_->upload(GL_RGBA, GL_FLOAT, values.data());
 }
 

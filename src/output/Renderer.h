@@ -7,6 +7,7 @@
 #include "gl/Objects.h"
 #include "src/output/DirectLight.h"
 #include "src/output/Image.h"
+#include "src/output/SeamStitch.h"
 #include "src/scene/Camera.h"
 #include "src/solver/CameraMesh.h"
 #include "src/solver/SolverState.h"
@@ -28,6 +29,10 @@ class Renderer {
   // From now on render() shows these values (atlas order) instead of B: B with its chart seams
   // stitched (src/output/SeamStitch.h); the ambient term still applies.
   void show(const std::vector<glm::vec4>& values);
+  // Live views (the viewer, walkthroughs, animations): from now on each render() shows the
+  // current B with its chart seams stitched (src/output/SeamStitch.h), read back and stitched
+  // per call. Off, render() shows B (or what show() gave) exactly.
+  void stitchLive();
   // `--direct per-pixel`: from now on render() shows E + each pixel's direct light, computed
   // exactly (shaders/direct.glsl), + the shown values, which must then be the indirect part
   // (src/solver/DirectSplit.h). The renderer keeps `direct`.
@@ -47,6 +52,7 @@ class Renderer {
   CameraMesh mesh_;
   bool ambient_ = false;
   std::unique_ptr<gl::Texture> shown_;
+  std::unique_ptr<SeamStitcher> stitcher_;  // stitchLive(), where the layout has seams
 };
 
 }  // namespace hemirad

@@ -14,14 +14,8 @@ namespace {
 // the texels several constraints share (a texel's 2 x 2 neighbourhood holds a few).
 constexpr int kSweeps = 32;
 
-// A sample point's taps on one chart: the bilinear texels of that chart, weights normalised
-// over them (Atlas::sample's blend).
-struct Taps {
-  std::array<std::size_t, 4> texel{};
-  std::array<double, 4> weight{};
-  int count = 0;
-  double norm2 = 0;  // sum of squared weights
-};
+using Taps = SeamStitcher::Taps;
+using Constraint = SeamStitcher::Constraint;
 
 Taps tapsAt(const Atlas& atlas, int polygon, glm::dvec3 p) {
   const std::uint32_t chart = atlas.chartOf[std::size_t(polygon)];
@@ -42,10 +36,6 @@ Taps tapsAt(const Atlas& atlas, int polygon, glm::dvec3 p) {
     t.weight[std::size_t(k)] /= sum, t.norm2 += t.weight[std::size_t(k)] * t.weight[std::size_t(k)];
   return t;
 }
-
-struct Constraint {
-  Taps a, b;
-};
 
 bool alike(const Scene& scene, const ScenePolygon& p, const ScenePolygon& q) {
   const Material &m = scene.materials[p.material], &n = scene.materials[q.material];
@@ -111,14 +101,19 @@ void shift(const Taps& t, glm::dvec3 delta, std::vector<glm::vec4>& values) {
 
 }  // namespace
 
-std::vector<glm::vec4> stitchSeams(const Scene& scene, const Atlas& atlas, std::vector<glm::vec4> values) {
-  const std::vector<Constraint> constraints = seamConstraints(scene, atlas);
-  for (int sweep = 0; sweep < kSweeps && !constraints.empty(); ++sweep)
-    for (const Constraint& c : constraints) {
+SeamStitcher::SeamStitcher(const Scene& scene, const Atlas& atlas) : constraints_(seamConstraints(scene, atlas)) {}
+
+std::vector<glm::vec4> SeamStitcher::operator()(std::vector<glm::vec4> values) const {
+  for (int sweep = 0; sweep < kSweeps && !constraints_.empty(); ++sweep)
+    for (const Constraint& c : constraints_) {
       const glm::dvec3 half = 0.5 * (sampleOf(c.b, values) - sampleOf(c.a, values));
       shift(c.a, half, values), shift(c.b, -half, values);
     }
   return values;
+}
+
+std::vector<glm::vec4> stitchSeams(const Scene& scene, const Atlas& atlas, std::vector<glm::vec4> values) {
+  return SeamStitcher(scene, atlas)(std::move(values));
 }
 
 }  // namespace hemirad

@@ -6,6 +6,7 @@
 // is shown and exported (camera images, PLY, lightmaps): the solution's elements, the report's
 // means and the radiosity hash keep the solved values.
 #pragma once
+#include <array>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -14,9 +15,34 @@
 
 namespace hemirad {
 
-// Per-texel `values` (atlas order) with every seam stitched. A seam is an edge shared by two
-// polygons of different charts whose materials reflect and emit alike and whose normals lie
-// within kMaxChartAngle of each other (a sharper crease is a feature, kept).
+// A seam is an edge shared by two polygons of different charts whose materials reflect and emit
+// alike and whose normals lie within kMaxChartAngle of each other (a sharper crease is a feature,
+// kept). The seams' sample points are found once per layout, so live views (the viewer,
+// walkthroughs, animations: Renderer::stitchLive) stitch every frame at the cost of the sweeps.
+class SeamStitcher {
+ public:
+  SeamStitcher(const Scene& scene, const Atlas& atlas);
+  // Per-texel `values` (atlas order) with every seam stitched.
+  std::vector<glm::vec4> operator()(std::vector<glm::vec4> values) const;
+  bool empty() const { return constraints_.empty(); }
+
+  // A sample point's taps on one chart: the bilinear texels of that chart, weights normalised
+  // over them (Atlas::sample's blend).
+  struct Taps {
+    std::array<std::size_t, 4> texel{};
+    std::array<double, 4> weight{};
+    int count = 0;
+    double norm2 = 0;  // sum of squared weights
+  };
+  struct Constraint {  // one sample point of a seam, as each side looks it up
+    Taps a, b;
+  };
+
+ private:
+  std::vector<Constraint> constraints_;
+};
+
+// SeamStitcher(scene, atlas)(values), for one use.
 std::vector<glm::vec4> stitchSeams(const Scene& scene, const Atlas& atlas, std::vector<glm::vec4> values);
 
 }  // namespace hemirad

@@ -132,6 +132,7 @@ void workProgressive(const ViewerOptions& o, const Scene& scene, ViewerLink& lin
       settings.algorithm = c.algorithm;
       solver = std::make_unique<ProgressiveSolver>(*state, settings);
       renderer = std::make_unique<Renderer>(*state);
+      renderer->stitchLive();
       status = {};
       batch = 1;
       solveFrames = 0;

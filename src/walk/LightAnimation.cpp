@@ -10,6 +10,7 @@
 #include "src/base/Error.h"
 #include "src/output/ImageFile.h"
 #include "src/output/Renderer.h"
+#include "src/output/SeamStitch.h"
 #include "src/scene/Camera.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/walk/LightPath.h"
@@ -70,7 +71,9 @@ int runAnimation(AnimationOptions o) {
     const SolveStatus status = advanceToStop(solver, {});
     carried = {state.readRadiosity(), state.readDeltaB(), solver.saveState()};
     const double error = relativeRmsError(scene, atlas, carried.B, reference(scene, atlas, o));
-    const Image view = Renderer(state).render(camera, o.width, o.height, 1);
+    Renderer renderer(state);
+    renderer.show(stitchSeams(scene, atlas, carried.B));  // seams stitched, as solve's images
+    const Image view = renderer.render(camera, o.width, o.height, 1);
     if (f == 0) exposure = exposureScale(view, 0);
     writePng(fmt::format("{}/frame_{:04d}.png", o.framesDir, f), view, exposure);
     csv += fmt::format("{},{:.4f},{},{:.6g},{:016x}\n", f, time, status.shots, error, radiosityHash(atlas, carried.B));

@@ -8,6 +8,7 @@
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
 #include "src/output/Progress.h"
+#include "src/output/SeamStitch.h"
 
 namespace hemirad {
 
@@ -22,6 +23,7 @@ ConvergedViews::ConvergedViews(const Scene& scene, const Atlas& atlas, Progressi
   const SolveStatus status = advanceToStop(solver, {}, [&](const SolveStatus& s) { bar.update(s); });
   bar.finish();
   shots_ = status.shots;
+  renderer_.show(stitchSeams(scene, atlas, state_.readRadiosity()));  // frames compare stitched with stitched
 }
 
 namespace {
@@ -49,6 +51,7 @@ std::vector<FrameRecord> walk(ProgressiveSolver& solver, SolverState& state, con
   if (!o.framesDir.empty() && !o.writeFrame) throw std::logic_error("walk: a frames folder without a frame writer");
   if (!o.framesDir.empty()) std::filesystem::create_directories(o.framesDir);
   Renderer renderer(state);
+  renderer.stitchLive();  // frames show seams stitched, as solve's images do
   const double aspect = double(o.width) / o.height;
   const int frames = int(std::floor(path.duration() * o.fps + 1e-9)) + 1;
   std::vector<FrameRecord> records;
