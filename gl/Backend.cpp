@@ -19,6 +19,10 @@ std::string glString(GLenum e) {
 
 std::string RenderBackend::renderer() const { return glString(GL_RENDERER); }
 std::string RenderBackend::version() const { return glString(GL_VERSION); }
+bool RenderBackend::software() const {
+  const std::string r = renderer();
+  return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos;
+}
 void RenderBackend::finish() const { glFinish(); }
 int RenderBackend::maxTextureSize() const {
   GLint size = 0;

@@ -31,6 +31,8 @@ class RenderBackend {
   virtual std::string name() const = 0;  // "osmesa" or "egl"
   std::string renderer() const;          // GL_RENDERER
   std::string version() const;           // GL_VERSION
+  // A CPU rasterizer (Mesa's llvmpipe or softpipe): no clocks that ramp, no device memory.
+  bool software() const;
   // Blocks until the GPU has finished all submitted work.
   void finish() const;
   int maxTextureSize() const;  // GL_MAX_TEXTURE_SIZE

@@ -1,9 +1,12 @@
 #include "src/bench/Bench.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <ctime>
 #include <fstream>
 #include <functional>
@@ -44,7 +47,8 @@ struct BenchRow {
   int shootersPerPass = 1;
   unsigned shots = 0;
   double convergence = 0, solveMs = 0, msPerShot = 0;
-  PassTimings split;  // ms per shot, synchronised
+  double warmUpMs = 0;  // the untimed passes before the timed run (warmUp)
+  PassTimings split;    // ms per shot, synchronised
   double itemTrianglesPerSecond = 0, itemPixelsPerSecond = 0, gatherUpdatesPerSecond = 0;
   std::uint64_t hash = 0;                // of the converged B: equal across runs on one backend
   std::vector<ObjectRadiosity> objects;  // for comparing backends (--compare)
@@ -63,16 +67,41 @@ double runToStop(gl::RenderBackend& backend, ProgressiveSolver& solver, SolveSta
   return msSince(t0);
 }
 
-// A few untimed passes first: drivers compile shaders and page buffers in at their first use,
-// which would otherwise land in the first row's time.
-void warmUp(gl::RenderBackend& backend, const Scene& scene, const Atlas& atlas, ProgressiveSettings settings,
-            const Camera& camera) {
-  SolverState state(scene, atlas);
-  settings.stop = {2u * unsigned(settings.shootersPerPass), 0};
-  ProgressiveSolver solver(state, settings);
-  if (solver.viewDriven()) solver.look(camera, 1.0);
-  SolveStatus status;
-  runToStop(backend, solver, status);
+// Untimed passes first, until they run at a steady pace: drivers compile shaders and page buffers
+// in at their first use, and a GPU left idle while the CPU built the row's atlas has clocked down
+// (H200: 1,980 to 345 MHz within 3 s of idling, and up to ~1.2 s back up under load, in steps; a
+// 1M-element row started there took 3x as long, docs/bench/h200-2026-12-04b.md). So chunks of
+// passes of at least kChunkMs each run until one's time a shot is within kSteady of the one before,
+// after at least kWarmUpMs on a hardware GPU (a CPU rasterizer has no clocks to ramp) and at most
+// kWarmUpMaxMs.
+constexpr double kChunkMs = 50, kSteady = 0.05, kWarmUpMs = 1500, kWarmUpMaxMs = 4000;
+
+double warmUp(gl::RenderBackend& backend, const Scene& scene, const Atlas& atlas, ProgressiveSettings settings,
+              const Camera& camera) {
+  const auto t0 = Clock::now();
+  const double least = backend.software() ? 0 : kWarmUpMs;
+  settings.stop = {};  // no stop rule: passes until the pace is steady
+  const unsigned batch = 4 * unsigned(settings.shootersPerPass);
+  double last = 0, pace = 0;  // ms a shot of the chunk before and of the last one
+  auto warming = [&] {
+    const double ms = msSince(t0);
+    return ms < kWarmUpMaxMs && (ms < least || last == 0 || std::abs(pace - last) > kSteady * last);
+  };
+  while (warming()) {  // a fresh solve whenever one runs out of light
+    SolverState state(scene, atlas);
+    ProgressiveSolver solver(state, settings);
+    if (solver.viewDriven()) solver.look(camera, 1.0);
+    SolveStatus status;
+    while (!status.done && warming()) {
+      backend.finish();
+      const auto c0 = Clock::now();
+      unsigned shots = 0;
+      for (; !status.done && (shots == 0 || msSince(c0) < kChunkMs); shots += batch) status = solver.advance(batch);
+      backend.finish();
+      last = pace, pace = msSince(c0) / shots;
+    }
+  }
+  return msSince(t0);
 }
 
 BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& atlas, int shootersPerPass,
@@ -87,7 +116,7 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   settings.timings = gl::TimerMode::Off;  // the timed run pays for no queries
   // View-driven algorithms look from the scene's camera (SCENE.camera), square.
   const Camera camera = resolveCamera(scene, std::nullopt);
-  warmUp(backend, scene, atlas, settings, camera);
+  row.warmUpMs = warmUp(backend, scene, atlas, settings, camera);
   backend.finish();
   const std::optional<double> freeBefore = backend.freeMemoryMiB();
   const std::size_t allocatedBefore = gl::allocatedBytes();
@@ -253,6 +282,7 @@ nlohmann::json rowJson(const BenchRow& r) {
           {"shots", r.shots},
           {"convergence", r.convergence},
           {"time_to_converge_ms", r.solveMs},
+          {"warm_up_ms", r.warmUpMs},
           {"ms_per_shot", r.msPerShot},
           {"gpu_memory_mib", r.gpuMemoryMiB ? nlohmann::json(*r.gpuMemoryMiB) : nlohmann::json()},
           {"gpu_allocated_bytes", r.allocatedBytes},
