@@ -208,3 +208,32 @@ TEST_CASE("Bad reference and compare input is one error line and a nonzero exit 
   oneError("compare " + analyticScene("analytic.mtl") + " " + large + " --scene " + furnace,
            "compare reads linear EXR images");
 }
+
+TEST_CASE(
+    "The lean hemirad-bench writes hemirad reference's image as PFM: the same pixels, rows bottom up as PFM keeps "
+    "them",
+    "[gl][reference][cli][heavy]") {
+  const std::string out = test::tempPath("lean"), flags = " --spp 32 --batches 4 --width 24 --height 16 --seed 3";
+  const std::string scene = analyticScene("perpendicular_squares.obj");
+  const test::Run full = test::hemirad("reference " + scene + flags + " --out " + out + ".exr");
+  const test::Run lean =
+      test::shell("\"$(dirname \"$HEMIRAD\")/hemirad-bench\" reference " + scene + flags + " --out " + out + ".pfm");
+  INFO(full.output << lean.output);
+  REQUIRE(full.exitCode == 0);
+  REQUIRE(lean.exitCode == 0);
+  const Image exr = readImage(out + ".exr");
+  std::istringstream pfm(fileBytes(out + ".pfm"));
+  std::string magic;
+  int width = 0, height = 0;
+  double scale = 0;
+  pfm >> magic >> width >> height >> scale;
+  pfm.get();  // the one whitespace byte before the floats
+  REQUIRE(magic == "PF");
+  REQUIRE((width == 24 && height == 16 && scale == -1.0));  // -1: little-endian
+  std::vector<float> rows(exr.rgb.size());
+  pfm.read(reinterpret_cast<char*>(rows.data()), std::streamsize(rows.size() * sizeof(float)));
+  REQUIRE(pfm.gcount() == std::streamsize(rows.size() * sizeof(float)));
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < 3 * width; ++x)
+      REQUIRE(rows[std::size_t((height - 1 - y) * 3 * width + x)] == exr.rgb[std::size_t(y * 3 * width + x)]);
+}

@@ -48,6 +48,9 @@ struct BenchRow {
   unsigned shots = 0;
   double convergence = 0, solveMs = 0, msPerShot = 0;
   double warmUpMs = 0;  // the untimed passes before the timed run (warmUp)
+  // Of solveMs, the time the CPU waited for the GPU at status readbacks (the only sync): near all
+  // of it, the GPU bounds the solve; near none, the CPU's submission of the passes does.
+  double waitMs = 0;
   PassTimings split;    // ms per shot, synchronised
   double itemTrianglesPerSecond = 0, itemPixelsPerSecond = 0, gatherUpdatesPerSecond = 0;
   std::uint64_t hash = 0;                // of the converged B: equal across runs on one backend
@@ -134,6 +137,7 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   row.shots = status.shots;
   row.convergence = status.convergence;
   row.msPerShot = row.shots ? row.solveMs / row.shots : 0;
+  row.waitMs = solver.timings().readback;
   row.itemTriangles = solver.itemTriangles();
   row.itemPixels = solver.itemPixels();
   row.shooterBlocks = solver.shooterBlocks();
@@ -283,6 +287,7 @@ nlohmann::json rowJson(const BenchRow& r) {
           {"convergence", r.convergence},
           {"time_to_converge_ms", r.solveMs},
           {"warm_up_ms", r.warmUpMs},
+          {"gpu_wait_ms", r.waitMs},
           {"ms_per_shot", r.msPerShot},
           {"gpu_memory_mib", r.gpuMemoryMiB ? nlohmann::json(*r.gpuMemoryMiB) : nlohmann::json()},
           {"gpu_allocated_bytes", r.allocatedBytes},

@@ -273,26 +273,7 @@ void Commands::addReference() {
       "reference",
       "Path-trace the camera view unbiased, in B units as solve's --out, with per-pixel standard errors "
       "from independent batches (docs/reference.md)");
-  ReferenceOptions& o = reference;
-  r->add_option("scene", o.scene, "Wavefront OBJ (materials from its MTL) or glTF 2.0 (.gltf, .glb)")
-      ->required()
-      ->type_name("SCENE")
-      ->transform(
-          CLI::Validator([](std::string& path) { return path = findScene(path), std::string(); }, "", "shipped"))
-      ->check(CLI::ExistingFile);
-  add(r, "--emission", o.load.emission);
-  add(r, "--spp", o.settings.samples);
-  add(r, "--batches", o.settings.batches);
-  add(r, "--seed", o.settings.seed);
-  add(r, "--camera", o.camera);
-  add(r, "--width", o.settings.width);
-  add(r, "--height", o.settings.height);
-  add(r, "--out", o.out)->required();
-  add(r, "--stderr", o.standardError);
-  add(r, "--image", o.image);
-  add(r, "--exposure", o.exposure);
-  add(r, "--backend", o.backend.kind);
-  add(r, "--gpu", o.backend.gpu);
+  addReferenceFlags(r, reference, imageFileWriters());
 }
 
 void Commands::addCompare() {
@@ -357,7 +338,7 @@ int Commands::run() {
     return runMethodComparison(comparison);
   }
   if (*vplErrorCmd) return runVplError(vplError);
-  if (*referenceCmd) return runReference(reference);
+  if (*referenceCmd) return runReference(reference, imageFileWriters());
   if (*compareCmd) return runCompare(compare);
   if (*animateCmd) {
     animation.stochastic.timings = gl::TimerMode::Off;

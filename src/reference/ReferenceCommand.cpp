@@ -2,16 +2,12 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <filesystem>
-
-#include <unistd.h>
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
 #include "src/base/OutputPaths.h"
 #include "src/output/ImageFile.h"
-#include "src/reference/BatchStatistics.h"
 #include "src/reference/ErrorTable.h"
 #include "src/reference/PixelRegions.h"
 #include "src/scene/Camera.h"
@@ -19,13 +15,6 @@
 namespace hemirad {
 
 namespace {
-
-std::vector<OutputPath> referenceOutputs(const ReferenceOptions& o) {
-  std::vector<OutputPath> outputs{{"--out", o.out, {".exr", ".png"}}};
-  if (!o.standardError.empty()) outputs.push_back({"--stderr", o.standardError, {".exr"}});
-  if (!o.image.empty()) outputs.push_back({"--image", o.image, {".png"}});
-  return outputs;
-}
 
 Image readSized(const std::string& path, const std::string& what, int width, int height) {
   Image image = readImage(path);
@@ -37,40 +26,7 @@ Image readSized(const std::string& path, const std::string& what, int width, int
 
 }  // namespace
 
-int runReference(const ReferenceOptions& o) {
-  checkReferenceSettings(o.settings);  // bad flags fail before the scene is read
-  checkOutputs(referenceOutputs(o), {{"the scene", o.scene}});
-  const Scene scene = loadScene(o.scene, o.load);
-  validateSolvable(scene);
-  checkOutputs(referenceOutputs(o), scene.sources);
-  const Camera camera = resolveCamera(scene, o.camera);
-  auto backend = gl::createBackend(o.backend);
-  const auto t0 = std::chrono::steady_clock::now();
-  PathTracer tracer(scene);
-  const ReferenceSettings& s = o.settings;
-  BatchStatistics statistics(s.width, s.height, s.samples / s.batches);
-  const bool terminal = isatty(STDERR_FILENO);  // a batch counter for long runs, never in logs
-  tracer.render(camera, s, [&](const std::vector<glm::vec4>& sums) {
-    statistics.add(sums);
-    if (terminal) fmt::print(stderr, "\rhemirad: reference: batch {} of {}", statistics.batches(), s.batches);
-  });
-  if (terminal) fmt::print(stderr, "\n");
-  const ReferenceEstimate e = statistics.estimate();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  OutputBatch outputs;
-  const double scale = exposureScale(e.mean, o.exposure);
-  outputs.add("--out", o.out, encodeRender(o.out, e.mean, scale));
-  if (!o.standardError.empty()) outputs.add("--stderr", o.standardError, encodeExr(e.standardError));
-  if (!o.image.empty()) outputs.add("--image", o.image, encodePng(e.mean, scale));
-  outputs.commit();
-  fmt::print(stderr,
-             "hemirad: reference: {} x {} px, {} paths per pixel ({} batches of {}, seed {}) in {:.2f} s on {}; mean B "
-             "{:.6g}, mean standard error {:.4g} ({:.3f} % of it)\n",
-             s.width, s.height, s.samples, s.batches, s.samples / s.batches, s.seed, seconds, backend->renderer(),
-             e.meanLuminance, e.meanStandardError,
-             e.meanLuminance > 0 ? 100 * e.meanStandardError / e.meanLuminance : 0.0);
-  return 0;
-}
+ReferenceWriters imageFileWriters() { return {{".exr", ".png"}, {".exr"}, {".png"}, encodeRender, encodeExr}; }
 
 int runCompare(const CompareOptions& o) {
   for (const std::string& path : {o.a, o.b, o.standardError})  // a PNG holds tone-mapped, not linear, light

@@ -1,25 +1,15 @@
-// `hemirad reference` and `hemirad compare` (issue 31, docs/reference.md): an unbiased path-traced
-// image of a scene's camera view with its per-pixel standard error, and the error table of one
-// image against another per region of that view.
+// `hemirad reference`'s image formats and `hemirad compare` (issue 31, docs/reference.md): the
+// error table of one image against another (an unbiased reference: src/reference/ReferenceRun.h)
+// per region of the scene's camera view.
 #pragma once
 #include <optional>
 #include <string>
 
 #include "gl/Backend.h"
-#include "src/reference/PathTracer.h"
+#include "src/reference/ReferenceRun.h"
 #include "src/scene/SceneLoader.h"
 
 namespace hemirad {
-
-struct ReferenceOptions {
-  std::string scene;
-  LoadOptions load;
-  ReferenceSettings settings;
-  std::optional<std::string> camera;
-  std::string out, standardError, image;  // --out (mean, .exr or .png), --stderr (.exr), --image (.png)
-  double exposure = 0;
-  gl::BackendOptions backend;
-};
 
 struct CompareOptions {
   std::string a, b;   // A is judged against B (the reference)
@@ -32,7 +22,8 @@ struct CompareOptions {
   double errorRange = 0.1;    // the error map's full colour
 };
 
-int runReference(const ReferenceOptions& options);
+// hemirad's image formats for `reference`: EXR or PNG (--out), EXR (--stderr), PNG (--image).
+ReferenceWriters imageFileWriters();
 int runCompare(const CompareOptions& options);
 
 }  // namespace hemirad
