@@ -33,5 +33,10 @@ layout(std430, binding = SSBO_CONTROL) buffer Control {
   uint importanceCount;     //    (importance-driven solves) shooter[K, K + importanceCount)
   uint importanceShots;     // importance shots so far
   Shooter shooter[SHOOTER_SLOTS];
+  // TRANSFER_SPLIT (gather.comp), per radiosity shooter of the pass, in 2^-24 of its shot power
+  // (integers: atomic sums in any order give the same bits): what its near receivers took less
+  // than its uniform light gives them, and what that light gives them.
+  int nearDeficit[SHOOTER_SLOTS];
+  int nearShare[SHOOTER_SLOTS];
   float history[];          // convergence after k shots, k = 0..shots (per pass: see select.comp)
 } control;

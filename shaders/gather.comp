@@ -20,6 +20,7 @@
 #include "bvh.glsl"
 #include "bvh_segment.glsl"
 #include "refine_near.glsl"
+#include "transfer_split.glsl"
 #endif
 #ifdef PERSPECTIVE
 #include "perspective.glsl"
@@ -48,6 +49,11 @@ void main() {
 #endif
   vec4 received = vec4(0.0);
   vec4 keep = vec4(1.0);  // 0 in the channels this texel's own block shoots this pass
+#ifdef REFINE_NEAR
+  const bool firstPhase = splitPhase == 0u;  // a shooter's own dB is reset once, in the first
+#else
+  const bool firstPhase = true;
+#endif
   for (uint s = 0u; s < control.shootersPerPass + control.importanceCount; ++s) {
     if (!activeShooter(s)) continue;
     vec4 shot = control.shooter[s].shot;
@@ -56,23 +62,24 @@ void main() {
     if (deferred) shot = vec4(snapshot[(view.z - 1u) * blockCount + b].rgb - snapshot[(entering - 1u) * blockCount + b].rgb, 0.0);
 #endif
     if (inShooterBlock(s, t, polygon)) {  // (a deferred pass shoots table entries, not the block's dB)
-      if (!deferred) keep *= s < control.shootersPerPass ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(1.0, 1.0, 1.0, 0.0);
+      if (!deferred && firstPhase) keep *= s < control.shootersPerPass ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(1.0, 1.0, 1.0, 0.0);
       continue;
     }
     if (s < control.shootersPerPass && !receivesRadiosity) continue;
     bool facing;
     float visible;
 #ifdef REFINE_NEAR
-    // A radiosity shot (not a stored entry's delivery) near its receiver: visibility part by part.
+    // Near-shooter refinement (transfer_split.glsl): a radiosity shot (not a stored entry's
+    // delivery) near its receiver in phase 0, part by part; every other pair in phase 1.
     vec3 x = texelFetch(atlasPositionArea, t, 0).xyz;
-    float F;
-    if (s < control.shootersPerPass && !deferred && nearNode(control.shooter[s].shape, x)) {
-      vec3 nr = texelFetch(atlasNormal, t, 0).xyz;
-      F = unoccludedFormFactor(s, x, nr);
-      if (F > 0.0) F *= visibleShare(control.shooter[s].shape, x, nr, polygon);
-    } else {
-      F = shooterFormFactor(s, t, polygon, facing, visible);
+    bool near = s < control.shootersPerPass && !deferred && nearNode(control.shooter[s].shape, x);
+    if (near != (splitPhase == 0u)) continue;
+    if (near) {
+      received.rgb += nearTransfer(s, t, x, polygon);
+      continue;
     }
+    float F = shooterFormFactor(s, t, polygon, facing, visible);
+    if (s < control.shootersPerPass && !deferred) F *= farScale(s);
 #else
     float F = shooterFormFactor(s, t, polygon, facing, visible);
 #endif

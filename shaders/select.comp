@@ -78,6 +78,7 @@ void main() {
   describeNode(slot, node, block);
   describeUnshot(slot, node, importanceShooters);
   control.shooter[slot].power = rankPower[l];
+  control.nearDeficit[slot] = 0, control.nearShare[slot] = 0;
 #ifdef PERSPECTIVE
   if (!importanceShooters) shotSoFar[rankIndex[l]] += control.shooter[slot].shot;  // one writer per block
 #endif

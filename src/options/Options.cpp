@@ -193,8 +193,9 @@ std::vector<Flag> sceneAndSolverFlags() {
        "scene wide (emitters 1/16)",
        autoOr(kAutoShootLevel, 0, 8)},
       {"--refine-near", "K",
-       "A receiver nearer a shooter block than K times the block's side gets the block's quadrants' light one by one, "
-       "each from its own origin with exact visibility (hierarchical radiosity's link refinement; 0: off)",
+       "A receiver nearer a shooter block than K times the block's side gets the block's quadrants' own light one by "
+       "one, each from its own origin with exact visibility, and the far receivers what the near ones took less, so "
+       "the shot is conserved (hierarchical radiosity's link refinement; 0: off; 4: preset refined)",
        CLI::Range(0.0, 16.0)},
       {"--direct", "MODE",
        "Camera images' direct light: looked up in the elements like the rest (atlas), or computed per pixel, exactly "
@@ -203,11 +204,10 @@ std::vector<Flag> sceneAndSolverFlags() {
        names({"atlas", "per-pixel"}), "atlas"},
       {"--preset", "NAME",
        "Start the item buffer and shooters from a named plan (docs/cli.md#presets): fast (the default: hemicube at "
-       "item-mesh level 0, planned shooter blocks and resolution), seed003 (seed 003's orthographic hemisphere, L3, "
-       "512^2, level-1 shooting: the default before issue 30, bitwise) or reference (element-by-element shooting, "
-       "hemicube 1024^2); --hemisphere, --item-subdiv, --item-res, --shoot-level and --refine-near given beside it "
-       "override its "
-       "values",
+       "item-mesh level 0, planned shooter blocks and resolution), refined (fast, refined near its shooters: "
+       "--refine-near 4), seed003 (seed 003's orthographic hemisphere, L3, 512^2, level-1 shooting: the default "
+       "before issue 30, bitwise) or reference (element-by-element shooting, hemicube 1024^2); --hemisphere, "
+       "--item-subdiv, --item-res, --shoot-level and --refine-near given beside it override its values",
        presetChoice(), std::string(kDefaultPreset)},
       {"--algorithm", "NAME",
        "Progressive shooter choice: progressive; importance: shooters ranked by unshot power x importance from "

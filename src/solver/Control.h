@@ -23,7 +23,8 @@ struct ControlBlock {
   float targetConvergence, emittedPower, convergence, unshotPower;
   std::uint32_t historyCapacity, shootersPerPass, importanceCount, importanceShots;
   ShooterRecord shooter[kShooterSlots];
+  std::int32_t nearDeficit[kShooterSlots], nearShare[kShooterSlots];  // TRANSFER_SPLIT's sums (gather.comp)
 };
-static_assert(sizeof(ControlBlock) == 48 + 80 * kShooterSlots);
+static_assert(sizeof(ControlBlock) == 48 + 88 * kShooterSlots);
 
 }  // namespace hemirad

@@ -32,8 +32,11 @@ struct Preset {
 
 // The exact fast plan: hemicube item buffers at item-mesh level 0 (straight edges, so exact),
 // planned shooter blocks and resolution. Near-shooter refinement (--refine-near) is not in it: it
-// halves the blocks' error for 2-7x the time on llvmpipe (docs/design.md#near-shooter-refinement).
+// costs 2-3x the time on the H200 (docs/design.md#near-shooter-refinement).
 inline constexpr ItemPlan kFastPlan{Projection::Hemicube, 0, kAutoItemResolution, kAutoShootLevel, 0.0};
+// The fast plan with near-shooter refinement (visibility and transfer, conserving) within 4 block
+// sides: every Cornell object within 0.2 % of element-by-element shooting.
+inline constexpr ItemPlan kRefinedPlan{Projection::Hemicube, 0, kAutoItemResolution, kAutoShootLevel, 4.0};
 // Seed 003's configuration, the default until issue 30: orthographic hemisphere, L3, 512^2, level 1.
 inline constexpr ItemPlan kSeed003Plan{Projection::Orthographic, 3, 512, 1, 0.0};
 // Element-by-element shooting with a large exact item buffer: the reference the others are measured against.

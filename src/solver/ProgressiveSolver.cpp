@@ -257,9 +257,13 @@ void ProgressiveSolver::gatherPass(Receivers receivers) {
     bvhTriangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
   }
   gather_.use();
-  gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
-                        gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));
-  gl::barrier(kAllBarriers);
+  const unsigned phases = refinesNear() ? 2 : 1;  // transfer_split.glsl: near pairs, then far ones
+  for (unsigned phase = 0; phase < phases; ++phase) {
+    if (phases == 2) gather_.set("splitPhase", phase);
+    gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
+                          gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));
+    gl::barrier(kAllBarriers);
+  }
 }
 
 SolveStatus ProgressiveSolver::advance(unsigned shots) {

@@ -57,7 +57,7 @@ TEST_CASE("Bad input: a bad preset name is one error line naming the presets, ex
   std::string obj = writeScene("preset", kQuad + "f 1 2 3 4\n");
   for (std::string name : {"fastest", "Seed003", "''"})
     expectRefused("preset", solve(obj) + " --preset " + name,
-                  {"--preset", "is not a preset; the presets are fast, seed003, reference (the default: fast)"});
+                  {"--preset", "is not a preset; the presets are fast, refined, seed003, reference (the default: fast)"});
   expectRefused("preset", solve(obj) + " --method stochastic --preset seed003",
                 {"--preset is for --method progressive, not stochastic"});
 }

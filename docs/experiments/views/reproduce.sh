@@ -2,7 +2,7 @@
 # Issue 19's measurement, as a new user makes it: four_boxes with its own camera, 200 shots of
 # each algorithm, the camera image compared with a converged solve (0.999). RMS of the tone-mapped
 # PNG (--image, each image auto-exposed, as the issue did) and of the linear render (--out .exr,
-# the same quantity for all), each with the ambient term on (the default) and off.
+# the same quantity for all), each with the ambient term on (the preview's) and off (solve's default).
 # Usage: docs/experiments/views/reproduce.sh [SCENE] [SHOTS]   (B=hemirad binary, default build/hemirad)
 set -eu
 B=${B:-build/hemirad}
