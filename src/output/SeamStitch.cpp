@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "src/scene/Contacts.h"
 #include "src/scene/Welding.h"
 
 namespace hemirad {
@@ -76,12 +77,25 @@ std::vector<SharedEdge> sharedEdges(const Scene& scene) {
   return out;
 }
 
+// Whether edge a-b runs along a crease (a discontinuity line, Scene::creases): light jumps there.
+bool onCrease(const Scene& scene, glm::dvec3 a, glm::dvec3 b) {
+  const double tolerance = kContactTolerance * glm::length(scene.boundsMax() - scene.boundsMin());
+  auto near = [&](const std::array<glm::dvec3, 2>& c, glm::dvec3 x) {
+    const glm::dvec3 d = c[1] - c[0];
+    const double t = std::clamp(glm::dot(x - c[0], d) / glm::dot(d, d), 0.0, 1.0);
+    return glm::length(x - (c[0] + t * d)) <= tolerance;
+  };
+  return std::any_of(scene.creases.begin(), scene.creases.end(),
+                     [&](const std::array<glm::dvec3, 2>& c) { return near(c, a) && near(c, b); });
+}
+
 // Points every half texel along each seam, each tied to both sides' taps.
 std::vector<Constraint> seamConstraints(const Scene& scene, const Atlas& atlas) {
   std::vector<Constraint> out;
   for (const SharedEdge& e : sharedEdges(scene)) {
     if (atlas.chartOf[std::size_t(e.p)] == atlas.chartOf[std::size_t(e.q)]) continue;
     if (!alike(scene, scene.polygons()[std::size_t(e.p)], scene.polygons()[std::size_t(e.q)])) continue;
+    if (onCrease(scene, e.a, e.b)) continue;
     const double cell = std::min(atlas.charts[atlas.chartOf[std::size_t(e.p)]].cellSize,
                                  atlas.charts[atlas.chartOf[std::size_t(e.q)]].cellSize);
     const int n = std::max(2, int(std::ceil(2 * glm::length(e.b - e.a) / cell)));

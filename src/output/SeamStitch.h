@@ -16,7 +16,8 @@ namespace hemirad {
 
 // Per-texel `values` (atlas order) with every seam stitched. A seam is an edge shared by two
 // polygons of different charts whose materials reflect and emit alike and whose normals lie
-// within kMaxChartAngle of each other (a sharper crease is a feature, kept).
+// within kMaxChartAngle of each other (a sharper crease is a feature, kept), unless it runs
+// along one of the scene's creases (contact lines, src/scene/ContactCuts.h).
 std::vector<glm::vec4> stitchSeams(const Scene& scene, const Atlas& atlas, std::vector<glm::vec4> values);
 
 }  // namespace hemirad
