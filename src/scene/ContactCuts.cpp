@@ -116,19 +116,26 @@ int pieceRoot(std::vector<int>& parent, int i) {
   return i;
 }
 
-bool inside(const Poly2& p, glm::dvec2 x) {
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (sideOf(p[i], p[(i + 1) % p.size()], x) < 0) return false;
-  return true;
+// +1 (left) or -1 (right) if piece p has a stretch of boundary along line l, else 0.
+int sideAlong(const Poly2& p, const ContactLine& l, double tolerance) {
+  const double len = glm::length(l.b - l.a);
+  const glm::dvec2 u = (l.b - l.a) / len, n(-u.y, u.x);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const glm::dvec2 p0 = p[i] - l.a, p1 = p[(i + 1) % p.size()] - l.a;
+    if (std::abs(glm::dot(p0, n)) > tolerance || std::abs(glm::dot(p1, n)) > tolerance) continue;
+    const double a = glm::dot(p0, u), b = glm::dot(p1, u);
+    if (std::min(len, std::max(a, b)) - std::max(0.0, std::min(a, b)) > tolerance)
+      return glm::dot(centroid(p) - l.a, n) > 0 ? 1 : -1;
+  }
+  return 0;
 }
 
 // Per piece, its component: pieces joined off the contact lines. Should a line's two sides still
-// end up in one component (a line with free ends, a blade standing on the floor), every piece
-// is its own, so nothing straddles the line.
+// end up in one component (a line with free ends: a blade standing on the floor, a footprint
+// only partly within the contact distance), the pieces along that line are charts of their own,
+// so no chart holds both sides of it.
 std::vector<int> components(const std::vector<Piece>& pieces, const std::vector<const ContactLine*>& lines,
                             double tolerance) {
-  std::vector<int> parent(pieces.size());
-  std::iota(parent.begin(), parent.end(), 0);
   std::vector<glm::dvec4> box;  // lo x, lo y, hi x, hi y, grown by the tolerance
   for (const Piece& p : pieces) {
     glm::dvec2 lo(1e300), hi(-1e300);
@@ -138,24 +145,31 @@ std::vector<int> components(const std::vector<Piece>& pieces, const std::vector<
   auto meet = [&](std::size_t i, std::size_t j) {
     return box[i].x <= box[j].z && box[j].x <= box[i].z && box[i].y <= box[j].w && box[j].y <= box[i].w;
   };
-  for (std::size_t i = 0; i < pieces.size(); ++i)
-    for (std::size_t j = i + 1; j < pieces.size(); ++j)
-      if (meet(i, j) && joined(pieces[i].shape, pieces[j].shape, lines, tolerance))
-        parent[std::size_t(pieceRoot(parent, int(i)))] = pieceRoot(parent, int(j));
-  auto pieceAt = [&](glm::dvec2 x) {
+  std::vector<int> parent(pieces.size());
+  std::vector<char> alone(pieces.size(), 0);
+  auto join = [&] {
+    std::iota(parent.begin(), parent.end(), 0);
     for (std::size_t i = 0; i < pieces.size(); ++i)
-      if (inside(pieces[i].shape, x)) return int(i);
-    return -1;
+      for (std::size_t j = i + 1; j < pieces.size() && !alone[i]; ++j)
+        if (!alone[j] && meet(i, j) && joined(pieces[i].shape, pieces[j].shape, lines, tolerance))
+          parent[std::size_t(pieceRoot(parent, int(i)))] = pieceRoot(parent, int(j));
   };
+  join();
+  bool rejoin = false;
   for (const ContactLine* l : lines) {
-    const glm::dvec2 mid = 0.5 * (l->a + l->b), d = glm::normalize(l->b - l->a),
-                     off = 8 * tolerance * glm::dvec2(-d.y, d.x);
-    const int a = pieceAt(mid + off), b = pieceAt(mid - off);
-    if (a >= 0 && b >= 0 && pieceRoot(parent, a) == pieceRoot(parent, b)) {
-      std::iota(parent.begin(), parent.end(), 0);
-      break;
+    std::vector<int> along, left, right;
+    const glm::dvec2 lo = glm::min(l->a, l->b) - tolerance, hi = glm::max(l->a, l->b) + tolerance;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      if (hi.x < box[i].x || box[i].z < lo.x || hi.y < box[i].y || box[i].w < lo.y) continue;
+      if (const int side = sideAlong(pieces[i].shape, *l, tolerance); side != 0)
+        along.push_back(int(i)), (side > 0 ? left : right).push_back(pieceRoot(parent, int(i)));
     }
+    const bool shared = std::any_of(left.begin(), left.end(),
+                                    [&](int r) { return std::find(right.begin(), right.end(), r) != right.end(); });
+    if (shared)
+      for (int i : along) alone[std::size_t(i)] = 1, rejoin = true;
   }
+  if (rejoin) join();
   std::vector<int> out(pieces.size());
   for (std::size_t i = 0; i < pieces.size(); ++i) out[i] = pieceRoot(parent, int(i));
   return out;
