@@ -94,6 +94,8 @@ void checkSolveInputs(const SolveOptions& o) {
   checkSolveOutputs(o, {{"the scene", o.scene}});
   if (o.subdivide.adaptive && o.discretisation.uv == UvSource::Input)  // leaves split projection charts only
     throw InputError("--subdivide adaptive splits projection charts; it cannot take --uv input's charts");
+  if (o.discontinuities && o.discretisation.uv == UvSource::Input)  // contact cuts split projection charts only
+    throw InputError("--discontinuities contact cuts projection charts; it cannot take --uv input's charts");
   if (o.out.empty() && o.image.empty() && o.atlas.empty() && o.ply.empty() && o.gltf.empty() && o.report.empty() &&
       o.checkpoint.empty() && o.cameraPath.empty())
     warn(
