@@ -171,6 +171,21 @@ TEST_CASE("Only touching polygons cut: a block 10 cm over the floor does not, a 
   CHECK_FALSE(cutAlongContacts(floating, atlas, findContacts(floating, atlas, contactDistance(floating))));
 }
 
+TEST_CASE("A contact less than a texel across is found but not cut", "[cpu][discontinuity]") {
+  Scene s;
+  const int grey = test::material(s, 0.5, 0.0);
+  s.addPolygon(test::rectangle({-2, 0, -2}, Z, X, 4, 4), grey, s.addObject("floor"));
+  addBox(s, {0.01, 0, 0.02}, 0.2, 0.2, grey, s.addObject("foot"));
+  for (double texel : {0.25, 0.1}) {
+    const Atlas atlas = buildAtlas(s, texel);
+    const std::vector<ContactLine> lines = findContacts(s, atlas, contactDistance(s));
+    CHECK(lines.size() == 4);
+    const std::optional<ContactLayout> cut = cutAlongContacts(s, atlas, lines);
+    INFO("texel " << texel);
+    CHECK(bool(cut) == (texel < 0.2));  // kMinContactCells: the 0.2-wide foot against the cell
+  }
+}
+
 TEST_CASE("Contact cuts leave a scene without contacts as it is, hash for hash", "[heavy][cli][discontinuity]") {
   auto hashOf = [](const std::string& flags) {
     const std::string report = test::tempPath("disc" + std::to_string(std::hash<std::string>{}(flags)) + ".json");

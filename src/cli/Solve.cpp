@@ -202,16 +202,18 @@ void cutAtContacts(Scene& scene, Atlas& atlas, int maxTextureSize, double chartA
   std::optional<ContactLayout> cut = cutAlongContacts(scene, atlas, lines);
   const double cutMs = msSince(t0) - findMs;
   if (!cut) {
-    fmt::print(stderr, "hemirad: discontinuities: no contact line cuts a chart (found in {:.0f} ms)\n", findMs);
+    fmt::print(stderr, "hemirad: discontinuities: {} contact lines found in {:.0f} ms; none cuts a chart\n",
+               lines.size(), findMs);
     return;
   }
   const std::size_t before = atlas.elements;
   atlas = buildAtlas(cut->scene, cut->specs, atlas.texelSize, maxTextureSize, 0, chartAngle);
   scene = std::move(cut->scene);
-  fmt::print(stderr,
-             "hemirad: discontinuities: {} contact lines (found in {:.0f} ms) cut {} charts into {} pieces ({:.0f} "
-             "ms): {} elements, {} uncut\n",
-             cut->lines, findMs, cut->charts, cut->pieces, cutMs, atlas.elements, before);
+  fmt::print(
+      stderr,
+      "hemirad: discontinuities: {} contact lines found in {:.0f} ms; {} of them cut {} charts into {} pieces in "
+      "{:.0f} ms: {} elements, {} uncut\n",
+      lines.size(), findMs, cut->lines, cut->charts, cut->pieces, cutMs, atlas.elements, before);
 }
 
 // The report's description of the run: what every atlas method has, then the method's own.

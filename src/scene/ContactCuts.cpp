@@ -175,6 +175,36 @@ std::vector<int> components(const std::vector<Piece>& pieces, const std::vector<
   return out;
 }
 
+// The lines of chart c that belong to a chain (lines meeting end to end) at least kMinContactCells
+// cells across: a contact smaller than a cell (a chair leg's round foot under coarse texels) is
+// left to its texel, not cut into pieces of a few percent of a cell each.
+std::vector<const ContactLine*> largeContacts(const std::vector<const ContactLine*>& lines, double cell,
+                                              double tolerance) {
+  std::vector<int> parent(lines.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<std::pair<glm::dvec2, int>> ends;  // every endpoint and its line, by x
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    ends.push_back({lines[i]->a, int(i)}), ends.push_back({lines[i]->b, int(i)});
+  std::sort(ends.begin(), ends.end(), [](const auto& x, const auto& y) { return x.first.x < y.first.x; });
+  for (std::size_t i = 0; i < ends.size(); ++i)
+    for (std::size_t j = i + 1; j < ends.size() && ends[j].first.x - ends[i].first.x <= tolerance; ++j)
+      if (glm::length(ends[j].first - ends[i].first) <= tolerance)
+        parent[std::size_t(pieceRoot(parent, ends[i].second))] = pieceRoot(parent, ends[j].second);
+  std::vector<glm::dvec4> extent(lines.size(), glm::dvec4(1e300, 1e300, -1e300, -1e300));
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    glm::dvec4& e = extent[std::size_t(pieceRoot(parent, int(i)))];
+    const glm::dvec2 lo = glm::min(glm::min(lines[i]->a, lines[i]->b), glm::dvec2(e.x, e.y));
+    const glm::dvec2 hi = glm::max(glm::max(lines[i]->a, lines[i]->b), glm::dvec2(e.z, e.w));
+    e = glm::dvec4(lo, hi);
+  }
+  std::vector<const ContactLine*> out;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const glm::dvec4& e = extent[std::size_t(pieceRoot(parent, int(i)))];
+    if (std::max(e.z - e.x, e.w - e.y) >= kMinContactCells * cell) out.push_back(lines[i]);
+  }
+  return out;
+}
+
 // One chart of the pieces in component `root`, on the receiver's grid lattice.
 void addComponent(const Scene& scene, const Chart& c, const std::vector<Piece>& pieces, const std::vector<int>& comp,
                   int root, ContactLayout& out) {
@@ -210,6 +240,7 @@ std::optional<ContactLayout> cutAlongContacts(const Scene& scene, const Atlas& a
   for (const ContactLine& l : lines) byChart[std::size_t(l.chart)].push_back(&l);
   for (std::size_t c = 0; c < atlas.charts.size(); ++c) {
     const Chart& chart = atlas.charts[c];
+    byChart[c] = largeContacts(byChart[c], chart.cellSize, tolerance);
     std::vector<Piece> pieces;
     if (!byChart[c].empty()) pieces = cutPieces(chart, byChart[c], tolerance);
     if (pieces.size() <= chart.parts.size()) {  // nothing cut

@@ -18,6 +18,10 @@
 
 namespace hemirad {
 
+// Contacts (chains of lines meeting end to end) less than this many of the receiver's cells
+// across are not cut: their straddling texels cover a few percent of a cell of floor.
+inline constexpr double kMinContactCells = 1;
+
 struct ContactLayout {
   Scene scene;  // its `creases` hold the contact lines (seam stitching keeps them sharp)
   std::vector<ChartSpec> specs;
