@@ -257,8 +257,7 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   const Discretisation& d = o.discretisation;
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle, d.uv);
   if (o.discontinuities) cutAtContacts(scene, atlas, backend->maxTextureSize(), d.chartAngle);
-  if (o.subdivide
-          .adaptive) {  // on the cut layout, if any  // from here on, the refined scene and atlas are the solve's
+  if (o.subdivide.adaptive) {  // from here on, the refined (cut, if any) scene and atlas are the solve's
     AdaptiveLayout adaptive = refineAdaptively(o.subdivide, *this, scene, atlas, camera, double(o.width) / o.height,
                                                backend->maxTextureSize(), d.chartAngle);
     if (adaptive.refined) scene = std::move(adaptive.refined->scene), atlas = std::move(*adaptive.atlas);
