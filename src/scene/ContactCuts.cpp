@@ -23,8 +23,8 @@ double sideOf(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
 
 // Convex p cut by the line through a, b; false (nothing cut) if either side is thinner than `tolerance`.
 bool splitPiece(const Poly2& p, glm::dvec2 a, glm::dvec2 b, double tolerance, Poly2& left, Poly2& right) {
-  std::vector<double> s;
-  for (glm::dvec2 v : p) s.push_back(sideOf(a, b, v));
+  std::vector<double> s;  // a vertex within rounding of the line is on it: no near-duplicate vertex beside it
+  for (glm::dvec2 v : p) s.push_back(std::abs(sideOf(a, b, v)) <= 1e-3 * tolerance ? 0.0 : sideOf(a, b, v));
   if (*std::max_element(s.begin(), s.end()) <= tolerance || *std::min_element(s.begin(), s.end()) >= -tolerance)
     return false;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -73,7 +73,7 @@ std::vector<Piece> cutPieces(const Chart& c, const std::vector<const ContactLine
   return pieces;
 }
 
-// Length of [lo, hi] that no interval of `cover` (sorted by start) covers.
+// Length of [lo, hi] that no interval of `cover` covers.
 double uncovered(double lo, double hi, std::vector<glm::dvec2> cover) {
   std::sort(cover.begin(), cover.end(), [](glm::dvec2 x, glm::dvec2 y) { return x.x < y.x; });
   double free = 0, at = lo;
