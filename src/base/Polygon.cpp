@@ -147,4 +147,27 @@ PlaneFrame planeFrame(const Poly3& p, const glm::dvec3& normal) {
   return f;
 }
 
+bool clipSegment(const Poly2& poly, glm::dvec2 a, glm::dvec2 b, double inset, double& t0, double& t1) {
+  t0 = 0, t1 = 1;
+  const glm::dvec2 d = b - a;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const glm::dvec2 p = poly[i], e = poly[(i + 1) % poly.size()] - p;
+    const double len = glm::length(e);
+    if (!(len > 0)) continue;
+    const glm::dvec2 inward(-e.y / len, e.x / len);
+    const double fa = glm::dot(a - p, inward) - inset, fd = glm::dot(d, inward);
+    if (fd == 0) {
+      if (fa < 0) return false;
+      continue;
+    }
+    const double t = -fa / fd;
+    if (fd > 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t1 <= t0) return false;
+  }
+  return true;
+}
+
 }  // namespace hemirad

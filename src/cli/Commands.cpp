@@ -76,6 +76,7 @@ void Commands::addSolve() {
   add(s, "--exposure", solve.exposure);
   add(s, "--ambient", solve.ambient, "off; on for --camera-path frames");
   add(s, "--subdivide", solve.subdivide.adaptive);
+  add(s, "--discontinuities", solve.discontinuities);
   add(s, "--leaf-depth", solve.subdivide.maxDepth);
   add(s, "--split-gradient", solve.subdivide.rule.threshold);
   addSolveOutputs(s);

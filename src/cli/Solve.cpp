@@ -23,6 +23,7 @@
 #include "src/output/SeamStitch.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/Camera.h"
+#include "src/scene/ContactCuts.h"
 #include "src/solver/Checkpoint.h"
 #include "src/solver/DirectSplit.h"
 
@@ -93,6 +94,8 @@ void checkSolveInputs(const SolveOptions& o) {
   checkSolveOutputs(o, {{"the scene", o.scene}});
   if (o.subdivide.adaptive && o.discretisation.uv == UvSource::Input)  // leaves split projection charts only
     throw InputError("--subdivide adaptive splits projection charts; it cannot take --uv input's charts");
+  if (o.discontinuities && o.discretisation.uv == UvSource::Input)  // contact cuts split projection charts only
+    throw InputError("--discontinuities contact cuts projection charts; it cannot take --uv input's charts");
   if (o.out.empty() && o.image.empty() && o.atlas.empty() && o.ply.empty() && o.gltf.empty() && o.report.empty() &&
       o.checkpoint.empty() && o.cameraPath.empty())
     warn(
@@ -191,6 +194,28 @@ std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene
   return "";
 }
 
+// --discontinuities contact: the scene and its atlas cut along the D0 lines (src/scene/ContactCuts.h).
+void cutAtContacts(Scene& scene, Atlas& atlas, int maxTextureSize, double chartAngle) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<ContactLine> lines = findContacts(scene, atlas, contactDistance(scene));
+  const double findMs = msSince(t0);
+  std::optional<ContactLayout> cut = cutAlongContacts(scene, atlas, lines);
+  const double cutMs = msSince(t0) - findMs;
+  if (!cut) {
+    fmt::print(stderr, "hemirad: discontinuities: {} contact lines found in {:.0f} ms; none cuts a chart\n",
+               lines.size(), findMs);
+    return;
+  }
+  const std::size_t before = atlas.elements;
+  atlas = buildAtlas(cut->scene, cut->specs, atlas.texelSize, maxTextureSize, 0, chartAngle);
+  scene = std::move(cut->scene);
+  fmt::print(
+      stderr,
+      "hemirad: discontinuities: {} contact lines found in {:.0f} ms; {} of them cut {} charts into {} pieces in "
+      "{:.0f} ms: {} elements, {} uncut\n",
+      lines.size(), findMs, cut->lines, cut->charts, cut->pieces, cutMs, atlas.elements, before);
+}
+
 // The report's description of the run: what every atlas method has, then the method's own.
 RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, const Atlas& atlas, AtlasRun& method) {
   RunInfo run;
@@ -231,7 +256,8 @@ int AtlasMethod::solve(const SolveOptions& o) const {
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
   const Discretisation& d = o.discretisation;
   Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle, d.uv);
-  if (o.subdivide.adaptive) {  // from here on, the refined scene and atlas are the solve's
+  if (o.discontinuities) cutAtContacts(scene, atlas, backend->maxTextureSize(), d.chartAngle);
+  if (o.subdivide.adaptive) {  // from here on, the refined (cut, if any) scene and atlas are the solve's
     AdaptiveLayout adaptive = refineAdaptively(o.subdivide, *this, scene, atlas, camera, double(o.width) / o.height,
                                                backend->maxTextureSize(), d.chartAngle);
     if (adaptive.refined) scene = std::move(adaptive.refined->scene), atlas = std::move(*adaptive.atlas);

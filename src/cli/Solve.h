@@ -20,6 +20,7 @@ struct SolveOptions {
   LoadOptions load;
   Discretisation discretisation;
   SubdivideOptions subdivide;              // --subdivide, --leaf-depth, --split-gradient
+  bool discontinuities = false;            // --discontinuities contact
   std::string methodName = "progressive";  // --method
   const MethodUnit* method = nullptr;      // that method, its own flags bound (Commands::settle)
   gl::BackendOptions backend;

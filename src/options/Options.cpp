@@ -161,6 +161,12 @@ std::vector<Flag> sceneAndSolverFlags() {
        "where the radiosity's relative change per texel exceeds --split-gradient into four of half the texel side, "
        "solve again, to --leaf-depth; --elements sets the first round's count; docs/adaptive.md)",
        oneOf(std::map<std::string, bool>{{"uniform", false}, {"adaptive", true}}, "uniform|adaptive"), "uniform"},
+      {"--discontinuities", "MODE",
+       "Discontinuity meshing: contact cuts every planar chart along the outlines of polygons touching it (edges "
+       "within 1e-3 of the scene's diagonal in front of its plane: a block on the floor, a lamp just under the "
+       "ceiling), each side its own chart, so no element straddles lit and unlit parts; off: no cuts "
+       "(docs/adaptive.md#discontinuity-meshing-d0)",
+       oneOf(std::map<std::string, bool>{{"off", false}, {"contact", true}}, "contact|off"), "off"},
       {"--leaf-depth", "D", "Adaptive: the quadtree's maximum depth (texels 2^-D of --texel-size a side)",
        CLI::Range(1, 4)},
       {"--split-gradient", "G",

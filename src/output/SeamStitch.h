@@ -17,7 +17,8 @@ namespace hemirad {
 
 // A seam is an edge shared by two polygons of different charts whose materials reflect and emit
 // alike and whose normals lie within kMaxChartAngle of each other (a sharper crease is a feature,
-// kept). The seams' sample points are found once per layout, so live views (the viewer,
+// kept), unless it runs along one of the scene's creases (contact lines, src/scene/ContactCuts.h).
+// The seams' sample points are found once per layout, so live views (the viewer,
 // walkthroughs, animations: Renderer::stitchLive) stitch every frame at the cost of the sweeps.
 class SeamStitcher {
  public:

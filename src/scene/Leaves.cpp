@@ -100,8 +100,9 @@ ChartSpec specOf(const Chart& c, ChartGroup group, glm::ivec4 rect, int depth) {
           glm::ivec2((rect.z - rect.x) / units, (rect.w - rect.y) / units), c.cellSize / double(1 << depth)};
 }
 
-// Chart c as it is, its polygons copied into the refined scene.
-ChartSpec unchanged(const Scene& scene, const Chart& c, Scene& refined) {
+}  // namespace
+
+ChartSpec copyChart(const Scene& scene, const Chart& c, Scene& refined) {
   ChartGroup g;
   std::map<int, int> renamed;
   for (int p : c.polygons) {
@@ -117,17 +118,8 @@ ChartSpec unchanged(const Scene& scene, const Chart& c, Scene& refined) {
   return {std::move(g), c.frame, c.corner, c.size, c.cellSize};
 }
 
-Scene emptyLike(const Scene& s) {
-  Scene out;
-  out.path = s.path, out.materials = s.materials, out.objects = s.objects, out.warnings = s.warnings;
-  out.emissionKey = s.emissionKey, out.sources = s.sources, out.unitScale = s.unitScale, out.camera = s.camera;
-  return out;
-}
-
-}  // namespace
-
 RefinedLayout refineLayout(const Scene& scene, const LeafTree& tree) {
-  RefinedLayout out{emptyLike(scene), {}, {}};
+  RefinedLayout out{sceneLike(scene), {}, {}};
   const Atlas& base = tree.base();
   const auto& nodes = tree.nodes();
   std::vector<char> split(base.charts.size(), 0);
@@ -136,7 +128,7 @@ RefinedLayout refineLayout(const Scene& scene, const LeafTree& tree) {
   for (std::size_t c = 0; c < base.charts.size(); ++c) {
     const Chart& chart = base.charts[c];
     if (!split[c]) {
-      out.specs.push_back(unchanged(scene, chart, out.scene)), out.specChart.push_back(int(c));
+      out.specs.push_back(copyChart(scene, chart, out.scene)), out.specChart.push_back(int(c));
       continue;
     }
     ChartGroup tiles;  // the unsplit tiles: the chart's own grid

@@ -54,6 +54,8 @@ struct RefinedLayout {
   std::vector<int> specChart;  // per spec: the base chart it lies on
 };
 
+// Chart c as it is, its polygons copied into `into` (renumbered): a spec that grids them as c does.
+ChartSpec copyChart(const Scene& scene, const Chart& c, Scene& into);
 // The scene cut along the tree's leaves and the charts that grid it (see above). A chart with no
 // split leaf keeps its polygons, parts and grid as they are.
 RefinedLayout refineLayout(const Scene& scene, const LeafTree& tree);

@@ -34,6 +34,14 @@ bool Scene::addPolygon(const Poly3& vertices, int material, int object) {
   return true;
 }
 
+Scene sceneLike(const Scene& s) {
+  Scene out;
+  out.path = s.path, out.materials = s.materials, out.objects = s.objects, out.warnings = s.warnings;
+  out.emissionKey = s.emissionKey, out.sources = s.sources, out.unitScale = s.unitScale, out.camera = s.camera;
+  out.creases = s.creases;
+  return out;
+}
+
 int Scene::addMaterial(Material m) {
   materials.push_back(std::move(m));
   return int(materials.size()) - 1;

@@ -3,6 +3,7 @@
 // plane data for the atlas and the GPU.
 #pragma once
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <array>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -59,6 +60,9 @@ class Scene {
   // The input's lightmap UVs (glTF TEXCOORD_1, for --uv input): per polygon, per vertex; a
   // polygon without them has none, and a scene without any has an empty list.
   std::vector<Poly2> lightmapUv;
+  // Discontinuity lines (D0 contact lines, src/scene/ContactCuts.h): edges along them are where
+  // the light jumps, so seam stitching leaves them be.
+  std::vector<std::array<glm::dvec3, 2>> creases;
 
   // Adds a polygon; returns false (and records nothing) if it has no area.
   bool addPolygon(const Poly3& vertices, int material, int object);
@@ -79,6 +83,9 @@ class Scene {
   OpenMesh::FPropHandleT<int> polygonProp_, materialProp_, objectProp_;
   bool propsAdded_ = false;
 };
+
+// A scene with `s`'s materials, objects and everything else but no polygons (for cut layouts).
+Scene sceneLike(const Scene& s);
 
 // Rec. 709 luminance weights, for every luminance on both sides (shaders get them as LUMINANCE).
 inline constexpr double kLuminanceWeights[3] = {0.2126, 0.7152, 0.0722};
