@@ -146,7 +146,7 @@ TEST_CASE(
 TEST_CASE(
     "On the Cornell box the per-pixel image and the atlas image agree in surface interiors: the direct/indirect split "
     "neither loses nor adds light",
-    "[gl][direct]") {
+    "[gl][direct][heavy]") {
   const std::string cornell = test::sourcePath("scenes/cornell/cornell.obj");
   const std::string common =
       "solve " + cornell + " --elements 1000 --converge 0.99 --width 64 --height 64 --ambient off --quiet";
@@ -169,7 +169,7 @@ TEST_CASE(
   CHECK_THAT(text, Contains("\"direct\": \"per-pixel\"") && Contains("\"direct_ms\""));
 }
 
-TEST_CASE("Per-pixel direct light is deterministic: the same solve writes the same bytes", "[gl][direct]") {
+TEST_CASE("Per-pixel direct light is deterministic: the same solve writes the same bytes", "[gl][direct][heavy]") {
   const std::string path = test::sourcePath("scenes/analytic/parallel_squares.obj");
   const std::string a = test::tempPath("direct_a.exr"), b = test::tempPath("direct_b.exr");
   const std::string common =

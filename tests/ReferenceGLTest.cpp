@@ -142,7 +142,7 @@ TEST_CASE(
 
 TEST_CASE(
     "A reference's bytes are fixed by its seed: the same seed writes identical files, another seed different ones",
-    "[gl][reference][cli]") {
+    "[gl][reference][cli][heavy]") {
   auto run = [](unsigned seed, const std::string& name) {
     const std::string out = test::tempPath(name);
     const test::Run r = test::hemirad("reference " + analyticScene("furnace.obj") +

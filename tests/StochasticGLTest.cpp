@@ -183,7 +183,7 @@ TEST_CASE("Stochastic iteration: a closed box of emitting grey walls (rho 0.5) c
 TEST_CASE(
     "Stochastic iteration on curved charts: a closed tessellated sphere of emitting grey facets samples texels "
     "across polygons and agrees with progressive refinement on the same atlas",
-    "[gl][charts]") {
+    "[gl][charts][heavy]") {
   // 16 x 8 facets facing in, every one emitting 1 with rho 0.5; at --chart-angle 30 a chart spans
   // several facets and many texels span two or more (their shapes: up to 16 convex pieces).
   Scene s;

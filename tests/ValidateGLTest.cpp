@@ -299,7 +299,7 @@ double blockedSquaresF() {
 TEST_CASE(
     "validate's object form factor over every shooter element is within 2 % of the true F of the blocked squares, "
     "and a sample of shooters is named as one",
-    "[gl]") {
+    "[gl][heavy]") {
   test::backend();
   auto [s, atlas] = shippedScene("scenes/analytic/blocked_squares.obj", 300);
   ValidateOptions o;
