@@ -22,7 +22,8 @@ Scene shapes() {
 
 // shapes() and charts over many polygons: a square wall of 6 x 6 quads cut into triangles, an
 // L of coplanar quads (a concave union: its chart keeps the quads as parts) and a cylinder of
-// 24 x 3 quads (curved: one chart per 30 degrees at --chart-angle 30).
+// 24 x 3 quads (curved: one chart per 30 degrees at --chart-angle 30 under --uv projection, a few
+// LSCM charts under --uv auto).
 Scene charted() {
   Scene s = shapes();
   int m = test::material(s, 0.5, 0.0), o = s.addObject("charted");
@@ -52,10 +53,11 @@ std::vector<double> chartAreas(const Scene& s, const Atlas& a) {
 }
 }  // namespace
 
-TEST_CASE("Charts join coplanar neighbours at angle 0 and curved ones at 30 degrees, one material and object each",
-          "[cpu]") {
+TEST_CASE(
+    "Projection charts join coplanar neighbours at angle 0 and curved ones at 30 degrees, one material and object each",
+    "[cpu]") {
   Scene s = charted();
-  const Atlas flat = buildAtlas(s, 0.05), curved = buildAtlas(s, 0.05, 16384, 0, 30);
+  const Atlas flat = buildAtlas(s, 0.05), curved = buildAtlas(s, 0.05, 16384, 0, 30, UvSource::Projection);
   // shapes' 3 polygons, the wall (one merged outline), the L (3 parts), 24 x 3 cylinder quads.
   CHECK(flat.charts.size() == 3 + 1 + 1 + 24);
   CHECK(curved.charts.size() < 3 + 1 + 1 + 24 / 2);

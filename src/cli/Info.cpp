@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 
@@ -105,9 +106,12 @@ int runInfo(const InfoOptions& o) {
              scene.emittedPower() / (u * u));
   fmt::print("texel size   {:.6g}\nelements     {}\natlas        {} x {}\n", ts / u, atlas.elements, atlas.width,
              atlas.height);
+  const auto lscm =
+      std::count_if(atlas.charts.begin(), atlas.charts.end(), [](const Chart& c) { return c.uvMapped(); });
   fmt::print("charts       {} {} (texel use {:.1f} %)\n", atlas.charts.size(),
-             o.discretisation.uv == UvSource::Input ? std::string("from the input's UV islands (--uv input)")
-                                                    : fmt::format("at --chart-angle {:g}", o.discretisation.chartAngle),
+             o.discretisation.uv == UvSource::Input
+                 ? std::string("from the input's UV islands (--uv input)")
+                 : fmt::format("at --chart-angle {:g}, {} of them LSCM", o.discretisation.chartAngle, lscm),
              100.0 * double(atlas.elements) / std::max(1.0, double(atlas.width) * atlas.height));
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);

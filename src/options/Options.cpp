@@ -151,10 +151,15 @@ std::vector<Flag> sceneAndSolverFlags() {
        "projected onto one texel grid (docs/design.md#atlas-and-elements)",
        CLI::Range(0.0, 60.0)},
       {"--uv", "SOURCE",
-       "Where charts' texel grids come from: auto (charts by --chart-angle, projected onto a plane) or input (the "
-       "scene's own lightmap UVs, glTF TEXCOORD_1: each UV island one chart, scaled so --elements and --texel-size "
-       "hold)",
-       oneOf(std::map<std::string, UvSource>{{"auto", UvSource::Auto}, {"input", UvSource::Input}}, "auto|input"),
+       "Where charts' texel grids come from: auto (charts by --chart-angle; flat ones projected onto their plane, "
+       "smooth curved surfaces of up to 90 degrees of normals unrolled by a conformal map, LSCM, where it is "
+       "one-to-one and little distorted), projection (every chart projected along its first polygon's normal, "
+       "curved ones within --chart-angle of it) or input (the scene's own lightmap UVs, glTF TEXCOORD_1: each UV "
+       "island one chart, scaled so --elements and --texel-size hold)",
+       oneOf(
+           std::map<std::string, UvSource>{
+               {"auto", UvSource::Auto}, {"input", UvSource::Input}, {"projection", UvSource::Projection}},
+           "auto|projection|input"),
        "auto"},
       {"--subdivide", "MODE",
        "Elements: uniform (one texel size) or adaptive (seed 003's quadtree: solve, split the 16 x 16-texel leaves "

@@ -317,7 +317,7 @@ Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double
   for (const ChartSpec& spec : specs) {
     ChartShape& c = shapes.emplace_back();
     c.group = spec.group, c.corner = spec.corner, c.size = spec.size, c.cellSize = spec.cellSize;
-    c.map.frame = spec.frame, c.map.planar = spec.group.planar;
+    c.map.frame = spec.frame, c.map.planar = spec.group.planar, c.map.uv = spec.group.uv;
     for (std::size_t k = 0; k < spec.group.parts.size(); ++k)
       c.parts.push_back(c.map.partInChart(spec.group.parts[k], k));
   }

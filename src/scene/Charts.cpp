@@ -6,9 +6,11 @@
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <optional>
 #include <unordered_map>
 
 #include "src/scene/InputUv.h"
+#include "src/scene/Lscm.h"
 #include "src/scene/Welding.h"
 
 namespace hemirad {
@@ -178,7 +180,7 @@ ChartGroup growChart(const Scene& scene, const std::vector<std::vector<int>>& ne
     g.polygons.push_back(p);
     members.add(scene.polygons()[std::size_t(p)].vertices);
     for (int q : neighbours[std::size_t(p)]) {
-      if (taken[std::size_t(q)] || !joins(scene, seed, q, cosAngle)) continue;
+      if (taken[std::size_t(q)] == 1 || !joins(scene, seed, q, cosAngle)) continue;
       const bool coplanar = glm::dot(scene.polygons()[std::size_t(q)].normal, g.axis) > cosPlanar &&
                             std::abs(glm::dot(scene.polygons()[std::size_t(q)].vertices[0] - f.origin, g.axis)) <=
                                 1e-9 * (1 + glm::length(scene.polygons()[std::size_t(q)].vertices[0] - f.origin));
@@ -191,9 +193,87 @@ ChartGroup growChart(const Scene& scene, const std::vector<std::vector<int>>& ne
   return g;
 }
 
+// The polygons a conformal chart from `seed` would hold: breadth first across welded edges, the
+// untaken neighbours of the seed's material and object whose normal lies within `cosAngle` of the
+// member they join (a smooth surface) and within `cosSpread` of the seed's (a map of bounded
+// distortion), none marked `refused`.
+std::vector<int> smoothRegion(const Scene& scene, const std::vector<std::vector<int>>& neighbours, int seed,
+                              double cosAngle, double cosSpread, const std::vector<char>& taken,
+                              std::vector<int>& stamp) {
+  const auto& polys = scene.polygons();
+  const int mark = ++stamp.back();  // the last entry counts calls: members carry this call's mark
+  std::vector<int> region{seed};
+  stamp[std::size_t(seed)] = mark;
+  for (std::size_t i = 0; i < region.size(); ++i) {
+    const ScenePolygon& p = polys[std::size_t(region[i])];
+    for (int q : neighbours[std::size_t(region[i])]) {
+      const ScenePolygon& o = polys[std::size_t(q)];
+      if (taken[std::size_t(q)] || stamp[std::size_t(q)] == mark || !joins(scene, seed, q, cosSpread) ||
+          !(glm::dot(o.normal, p.normal) > cosAngle))
+        continue;
+      stamp[std::size_t(q)] = mark;
+      region.push_back(q);
+    }
+  }
+  return region;
+}
+
+// `region` as one LSCM chart (src/scene/Lscm.h): its polygons fanned into triangles over their
+// welded vertices; nothing when the map is refused.
+std::optional<ChartGroup> conformalChart(const Scene& scene, const Welding& w, const std::vector<int>& region) {
+  std::unordered_map<int, int> local;
+  std::vector<glm::dvec3> positions;
+  std::vector<std::array<int, 3>> triangles;
+  for (int p : region) {
+    const std::vector<int>& ids = w.ids[std::size_t(p)];
+    auto id = [&](std::size_t i) {
+      auto [it, added] = local.emplace(ids[i], int(positions.size()));
+      if (added) positions.push_back(w.position[std::size_t(ids[i])]);
+      return it->second;
+    };
+    for (std::size_t k = 1; k + 1 < ids.size(); ++k) triangles.push_back({id(0), id(k), id(k + 1)});
+  }
+  LscmMap map = lscmMap(positions, triangles);
+  if (map.outcome != LscmOutcome::Mapped) return std::nullopt;
+  ChartGroup g;
+  g.polygons = region;
+  g.axis = scene.polygons()[std::size_t(region.front())].normal;
+  g.planar = false;
+  g.uv = std::move(map.uv);
+  for (int m : region) {
+    const Poly3& v = scene.polygons()[std::size_t(m)].vertices;
+    for (std::size_t k = 1; k + 1 < v.size(); ++k)
+      g.parts.push_back({v[0], v[k], v[k + 1]}), g.partPolygon.push_back(m);
+  }
+  return g;
+}
+
+// The LSCM chart grown from `seed`: the smooth region within each of kLscmSpreads in turn until
+// one maps; nothing when the region is flat (a projection chart, bit for bit as before) or no
+// spread maps (the region's polygons are then refused: projection charts, as before LSCM).
+std::optional<ChartGroup> lscmChart(const Scene& scene, const Welding& w,
+                                    const std::vector<std::vector<int>>& neighbours, int seed, double angle,
+                                    std::vector<char>& taken, std::vector<int>& stamp) {
+  const glm::dvec3 axis = scene.polygons()[std::size_t(seed)].normal;
+  std::vector<int> region;
+  for (double spread : kLscmSpreads) {
+    region = smoothRegion(scene, neighbours, seed, std::cos(angle), std::cos(spread * M_PI / 180), taken, stamp);
+    const bool curved = std::any_of(region.begin(), region.end(), [&](int p) {
+      return !(glm::dot(scene.polygons()[std::size_t(p)].normal, axis) > std::cos(kCoplanarRadians));
+    });
+    if (!curved) return std::nullopt;
+    if (auto g = conformalChart(scene, w, region)) {
+      for (int p : region) taken[std::size_t(p)] = 1;
+      return g;
+    }
+  }
+  for (int p : region) taken[std::size_t(p)] = 2;  // refused: seeds and joins projection charts only
+  return std::nullopt;
+}
+
 }  // namespace
 
-std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees) {
+std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees, ChartMap map) {
   const auto& polys = scene.polygons();
   std::vector<ChartGroup> out;
   if (angleDegrees < 0) {
@@ -204,9 +284,15 @@ std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees) {
   const Welding w = weldVertices(scene);
   const auto neighbours = edgeNeighbours(w);
   const double angle = std::min(angleDegrees, kMaxChartAngle) * M_PI / 180;
-  std::vector<char> taken(polys.size(), 0);
+  std::vector<char> taken(polys.size(), 0);  // 1: in a chart; 2: refused by LSCM, free for projection
+  std::vector<int> stamp(polys.size() + 1, 0);
   for (std::size_t p = 0; p < polys.size(); ++p) {
-    if (taken[p]) continue;
+    if (taken[p] == 1) continue;
+    if (map == ChartMap::Lscm && angle > 0 && taken[p] == 0)
+      if (auto g = lscmChart(scene, w, neighbours, int(p), angle, taken, stamp)) {
+        out.push_back(std::move(*g));
+        continue;
+      }
     ChartGroup g = growChart(scene, neighbours, int(p), angle, taken);
     Poly3 outline = g.planar && g.polygons.size() > 1 ? mergedOutline(scene, w, g.polygons, g.axis) : Poly3{};
     if (!outline.empty())
@@ -219,7 +305,8 @@ std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees) {
 }
 
 std::vector<ChartGroup> chartGroups(const Scene& scene, double angleDegrees, UvSource uv) {
-  return uv == UvSource::Input ? inputUvCharts(scene) : groupCharts(scene, angleDegrees);
+  if (uv == UvSource::Input) return inputUvCharts(scene);
+  return groupCharts(scene, angleDegrees, uv == UvSource::Projection ? ChartMap::Projection : ChartMap::Lscm);
 }
 
 }  // namespace hemirad

@@ -23,6 +23,18 @@ inline constexpr double kMaxChartAngle = 60;
 // (docs/bench/h200-2026-12-03b.md); flat scenes (the Cornell box) are bitwise unchanged.
 inline constexpr double kDefaultChartAngle = 30;
 
+// How a curved chart maps to its texel grid. Lscm: a smooth region (neighbours' normals within
+// the chart angle of each other) of up to kLscmSpreads of normal spread is one chart under its
+// conformal map (src/scene/Lscm.h) when that map is a one-to-one, little distorted disc, so a sphere
+// or cylinder is a few charts, not one per ~30 degrees; elsewhere, and always under Projection,
+// charts are projected along their seed's normal. Flat charts are projections under both.
+enum class ChartMap { Lscm, Projection };
+// An LSCM chart's normals lie within this many degrees of its seed's; a region whose map is
+// refused (src/scene/Lscm.h: distorted, or too ragged to fill its texel grid) is grown again
+// within the next. A hemisphere maps whole (kMaxLscmAreaDistortion); past 90 degrees a sphere's
+// conformal map distorts steeply.
+inline constexpr double kLscmSpreads[] = {90, 60, 40, 25};
+
 struct ChartGroup {
   std::vector<int> polygons;  // members in growth order; polygons[0] is the seed
   glm::dvec3 axis{0.0};       // the seed's normal: the projection direction
@@ -36,13 +48,14 @@ struct ChartGroup {
   std::vector<Poly2> uv;
 };
 
-// --uv: where charts' texel grids come from. Auto: projection charts (groupCharts); Input: the
-// input's lightmap UV islands (src/scene/InputUv.h).
-enum class UvSource { Auto, Input };
+// --uv: where charts' texel grids come from. Auto: charts by --chart-angle, curved ones under LSCM
+// (groupCharts, ChartMap::Lscm); Projection: every chart projected (ChartMap::Projection); Input:
+// the input's lightmap UV islands (src/scene/InputUv.h).
+enum class UvSource { Auto, Input, Projection };
 
 // Grows charts in polygon order, breadth first; deterministic. angleDegrees: 0 coplanar,
 // up to kMaxChartAngle; kPolygonCharts: one chart per polygon.
-std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees);
+std::vector<ChartGroup> groupCharts(const Scene& scene, double angleDegrees, ChartMap map = ChartMap::Lscm);
 // The charts for --uv `uv`: groupCharts's for Auto.
 std::vector<ChartGroup> chartGroups(const Scene& scene, double angleDegrees, UvSource uv);
 
