@@ -25,7 +25,7 @@ nlohmann::json presetSolve(const std::string& flags) {
   return test::readJson(report);
 }
 
-double luminance(const nlohmann::json& rgb) {
+double jsonLuminance(const nlohmann::json& rgb) {
   return 0.2126 * rgb[0].get<double>() + 0.7152 * rgb[1].get<double>() + 0.0722 * rgb[2].get<double>();
 }
 
@@ -59,7 +59,7 @@ TEST_CASE(
     for (const auto& f : solved["objects"])
       for (const auto& r : reference["objects"])
         if (f["name"] == r["name"] && f["name"] != "light") {
-          const double a = luminance(f["mean_radiosity"]), b = luminance(r["mean_radiosity"]);
+          const double a = jsonLuminance(f["mean_radiosity"]), b = jsonLuminance(r["mean_radiosity"]);
           UNSCOPED_INFO(solved["preset"].get<std::string>()
                         << " " << f["name"].get<std::string>() << ": " << a << ", element by element " << b << " ("
                         << (a / b - 1) * 100 << " %)");
