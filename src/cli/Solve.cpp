@@ -230,7 +230,7 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
   const Discretisation& d = o.discretisation;
-  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle, d.uv);
+  Atlas atlas = buildAtlas(scene, d, backend->maxTextureSize());
   if (o.subdivide.adaptive) {  // from here on, the refined scene and atlas are the solve's
     AdaptiveLayout adaptive = refineAdaptively(o.subdivide, *this, scene, atlas, camera, double(o.width) / o.height,
                                                backend->maxTextureSize(), d.chartAngle);
