@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 
 #include "src/base/Error.h"
 #include "src/scene/Atlas.h"
@@ -274,9 +275,10 @@ TEST_CASE("Lightmap UVs that overlap, fold or collapse are refused with one erro
 
 TEST_CASE("Bad input: --uv input on a scene without lightmap UVs is one error naming the file", "[cli][bad-input]") {
   const std::string gltf = writeGltf(uvCube(0.5, 1.0), "no-uv", false);
-  test::bad_input::expectRefused("uv-input", "solve " + gltf + " --uv input --shots 2 --quiet",
-                                 {"no-uv.gltf: --uv input needs lightmap UVs (glTF TEXCOORD_1) on every face; 6 of 6 "
-                                  "polygons have none"});
+  test::bad_input::expectRefused(
+      "uv-input", "solve " + gltf + " --uv input --shots 2 --quiet",
+      {"no-uv.gltf: --uv input needs lightmap UVs (glTF TEXCOORD_1, OBJ vt) on every face; 6 of 6 "
+       "polygons have none"});
 }
 
 TEST_CASE("Bad input: adaptive subdivision with input UVs is one error before the scene is read", "[cli][bad-input]") {
@@ -284,4 +286,35 @@ TEST_CASE("Bad input: adaptive subdivision with input UVs is one error before th
       "uv-adaptive",
       "solve " + test::sourcePath("scenes/cornell/cornell.gltf") + " --uv input --subdivide adaptive --shots 2 --quiet",
       {"--subdivide adaptive splits projection charts; it cannot take --uv input's charts"});
+}
+
+TEST_CASE(
+    "An OBJ's vt are its lightmap UVs under --uv input: two quads sharing UVs along their edge are one island, a "
+    "third with its own UVs another, and a face without vt is refused naming its polygon",
+    "[cpu]") {
+  const std::string mtl = test::tempPath("vt.mtl"), obj = test::tempPath("vt.obj");
+  std::ofstream(mtl) << "newmtl grey\nKd 0.5 0.5 0.5\n";
+  // A 2 x 1 floor of two quads (UVs 0..2 x 0..1, shared along x = 1) and a 1 x 1 wall at x = 3
+  // (UVs 5..6, its own island), every UV at twice the position's scale.
+  const std::string body =
+      "mtllib vt.mtl\nusemtl grey\nv 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 0 -1\nv 1 0 -1\nv 2 0 -1\n"
+      "v 3 0 0\nv 3 1 0\nv 3 1 -1\nv 3 0 -1\n"
+      "vt 0 0\nvt 2 0\nvt 4 0\nvt 0 2\nvt 2 2\nvt 4 2\nvt 10 0\nvt 12 0\nvt 12 2\nvt 10 2\n"
+      "f 1/1 2/2 5/5 4/4\nf 2/2 3/3 6/6 5/5\nf 7/7 8/8 9/9 10/10\n";
+  std::ofstream(obj) << body;
+  const Scene s = loadScene(obj);
+  REQUIRE(s.lightmapUv.size() == 3);
+  CHECK(s.lightmapUv[1] == Poly2{{2, 0}, {4, 0}, {4, 2}, {2, 2}});
+  const std::vector<ChartGroup> charts = inputUvCharts(s);
+  REQUIRE(charts.size() == 2);
+  CHECK(charts[0].polygons == std::vector<int>{0, 1});
+  CHECK(charts[1].polygons == std::vector<int>{2});
+  double surface = 0, mapped = 0;  // one scale for the scene: chart area is surface area
+  for (const ChartGroup& g : charts)
+    for (std::size_t k = 0; k < g.parts.size(); ++k) surface += area(g.parts[k]), mapped += signedArea(g.uv[k]);
+  CHECK(mapped == Approx(surface).epsilon(1e-12));
+  std::ofstream(obj) << body << "v 0 1 0\nf 1 2 11\n";  // a triangle without vt
+  CHECK_THROWS_WITH(inputUvCharts(loadScene(obj)),
+                    Catch::Contains("--uv input needs lightmap UVs (glTF TEXCOORD_1, OBJ vt) on every face; 1 of 4 "
+                                    "polygons have none (the first: polygon 3)"));
 }

@@ -72,9 +72,9 @@ void printTexelUse(const Atlas& atlas, double atlasSeconds) {
 
 int runInfo(const InfoOptions& o) {
   Scene scene = loadScene(o.scene, o.load);
-  double ts = chooseTexelSize(scene, o.discretisation);
-  const auto atlasStart = std::chrono::steady_clock::now();
-  Atlas atlas = buildAtlas(scene, ts, 16384, 0, o.discretisation.chartAngle, o.discretisation.uv);
+  const auto atlasStart = std::chrono::steady_clock::now();  // the texel size's search included
+  Atlas atlas = buildAtlas(scene, o.discretisation, 16384);
+  const double ts = atlas.texelSize;
   const double atlasSeconds = secondsSince(atlasStart);
   const double u = scene.unitScale;  // printed in the file's units
   glm::dvec3 lo = scene.boundsMin() / u, hi = scene.boundsMax() / u;

@@ -255,7 +255,7 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
   const Discretisation& d = o.discretisation;
-  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, d), backend->maxTextureSize(), 0, d.chartAngle, d.uv);
+  Atlas atlas = buildAtlas(scene, d, backend->maxTextureSize());
   if (o.discontinuities) cutAtContacts(scene, atlas, backend->maxTextureSize(), d.chartAngle);
   if (o.subdivide.adaptive) {  // from here on, the refined (cut, if any) scene and atlas are the solve's
     AdaptiveLayout adaptive = refineAdaptively(o.subdivide, *this, scene, atlas, camera, double(o.width) / o.height,

@@ -154,8 +154,8 @@ std::vector<Flag> sceneAndSolverFlags() {
        "Where charts' texel grids come from: auto (charts by --chart-angle; flat ones projected onto their plane, "
        "smooth curved surfaces of up to 90 degrees of normals unrolled by a conformal map, LSCM, where it is "
        "one-to-one and little distorted), projection (every chart projected along its first polygon's normal, "
-       "curved ones within --chart-angle of it) or input (the scene's own lightmap UVs, glTF TEXCOORD_1: each UV "
-       "island one chart, scaled so --elements and --texel-size hold)",
+       "curved ones within --chart-angle of it) or input (the scene's own lightmap UVs, glTF TEXCOORD_1 or an OBJ's "
+       "vt: each UV island one chart, scaled so --elements and --texel-size hold)",
        oneOf(
            std::map<std::string, UvSource>{
                {"auto", UvSource::Auto}, {"input", UvSource::Input}, {"projection", UvSource::Projection}},

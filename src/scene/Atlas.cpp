@@ -291,12 +291,10 @@ Atlas placeCharts(const Scene& scene, std::vector<ChartShape>& shapes, const Lay
   return atlas;
 }
 
-}  // namespace
-
-Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes, double chartAngle, UvSource uv) {
-  if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
+// The atlas of `groups` at texel size ts (buildAtlas's).
+Atlas atlasOfGroups(const Scene& scene, const std::vector<ChartGroup>& groups, double ts, int maxSize,
+                    std::size_t maxBytes, double chartAngle) {
   const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
-  const std::vector<ChartGroup> groups = chartGroups(scene, chartAngle, uv);
   // Charts cover at least the scene's area: far over the texture limit, say so before cutting
   // the scene into more cells than any GPU holds.
   if (double least = scene.totalArea() / (ts * ts); least > double(maxSize) * maxSize)
@@ -309,6 +307,46 @@ Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxByte
     fail("texel size {} leaves no element: every polygon is a sliver under {} of a texel; use a smaller --texel-size",
          ts, kMinCutFraction);
   return atlas;
+}
+
+// texelSizeForElements's start: the area's square root, or a sliver's length over `elements`.
+double firstTexelSize(const Scene& scene, std::size_t elements) {
+  if (elements == 0) fail("--elements must be positive");
+  if (scene.polygons().empty()) fail("{}: the scene has no faces with area", scene.path);
+  double ts = std::sqrt(scene.totalArea() / double(elements));
+  // A thin sliver gets at least one element per texel of its length: start where its length
+  // alone gives no more than `elements`, or the first count below walks billions of cells.
+  for (auto& p : scene.polygons())
+    for (auto& v : p.vertices) ts = std::max(ts, glm::length(v - p.vertices.front()) / double(elements));
+  return ts;
+}
+
+// Partial texels add elements; a few fixed-point steps on the real count of `groups` settle it.
+double settledTexelSize(const std::vector<ChartGroup>& groups, std::size_t elements, double ts) {
+  for (int iter = 0; iter < 4 && elements <= kMaxCountedElements; ++iter) {
+    size_t count = 0;
+    for (auto& g : groups) count += countElements(chartShape(g, ts));
+    if (count == 0) break;  // only slivers: buildAtlas says so
+    ts *= std::sqrt(double(count) / double(elements));
+  }
+  return ts;
+}
+
+}  // namespace
+
+Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes, double chartAngle, UvSource uv) {
+  if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
+  return atlasOfGroups(scene, chartGroups(scene, chartAngle, uv), ts, maxSize, maxBytes, chartAngle);
+}
+
+Atlas buildAtlas(const Scene& scene, const Discretisation& d, int maxSize, std::size_t maxBytes) {
+  if (d.texelSize) return buildAtlas(scene, chooseTexelSize(scene, d), maxSize, maxBytes, d.chartAngle, d.uv);
+  const std::size_t elements = d.elements.value_or(Discretisation::kDefaultElements);
+  const double first = firstTexelSize(scene, elements);
+  const std::vector<ChartGroup> groups = chartGroups(scene, d.chartAngle, d.uv);
+  const double ts = settledTexelSize(groups, elements, first);
+  if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
+  return atlasOfGroups(scene, groups, ts, maxSize, maxBytes, d.chartAngle);
 }
 
 Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double texelSize, int maxSize,
@@ -332,23 +370,9 @@ Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double
 }
 
 double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle, UvSource uv) {
-  if (elements == 0) fail("--elements must be positive");
-  if (scene.polygons().empty()) fail("{}: the scene has no faces with area", scene.path);
-  double ts = std::sqrt(scene.totalArea() / double(elements));
-  // A thin sliver gets at least one element per texel of its length: start where its length
-  // alone gives no more than `elements`, or the first count below walks billions of cells.
-  for (auto& p : scene.polygons())
-    for (auto& v : p.vertices) ts = std::max(ts, glm::length(v - p.vertices.front()) / double(elements));
-  // Partial texels add elements; a few fixed-point steps on the real count settle it.
-  const std::vector<ChartGroup> groups =
-      elements <= kMaxCountedElements ? chartGroups(scene, chartAngle, uv) : std::vector<ChartGroup>{};
-  for (int iter = 0; iter < 4 && elements <= kMaxCountedElements; ++iter) {
-    size_t count = 0;
-    for (auto& g : groups) count += countElements(chartShape(g, ts));
-    if (count == 0) break;  // only slivers: buildAtlas says so
-    ts *= std::sqrt(double(count) / double(elements));
-  }
-  return ts;
+  const double ts = firstTexelSize(scene, elements);
+  if (elements > kMaxCountedElements) return ts;
+  return settledTexelSize(chartGroups(scene, chartAngle, uv), elements, ts);
 }
 
 glm::dvec2 Atlas::chartCoord(int polygon, const glm::dvec3& p) const {

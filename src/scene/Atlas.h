@@ -113,5 +113,8 @@ struct Discretisation {
 };
 // Texel size from the flags: --texel-size, else --elements, else about 10,000 elements.
 double chooseTexelSize(const Scene& scene, const Discretisation& d);
+// The atlas the flags ask for, at chooseTexelSize's texel size: its charts grown once for both
+// (growing them, LSCM's solves included, is most of an atlas's time on real_400k).
+Atlas buildAtlas(const Scene& scene, const Discretisation& d, int maxSize, std::size_t maxBytes = 0);
 
 }  // namespace hemirad

@@ -19,7 +19,7 @@ void requireUvs(const Scene& scene) {
     if (p >= scene.lightmapUv.size() || scene.lightmapUv[p].size() != polys[p].vertices.size()) ++missing, first = p;
   if (missing)
     fail(
-        "{}: --uv input needs lightmap UVs (glTF TEXCOORD_1) on every face; {} of {} polygons have none "
+        "{}: --uv input needs lightmap UVs (glTF TEXCOORD_1, OBJ vt) on every face; {} of {} polygons have none "
         "(the first: polygon {}); use --uv auto",
         scene.path, missing, polys.size(), first);
 }

@@ -1,4 +1,5 @@
-// --uv input (issue 29): charts from the input's own lightmap UVs (glTF TEXCOORD_1). Each UV
+// --uv input (issue 29): charts from the input's own lightmap UVs (glTF TEXCOORD_1; an OBJ's
+// texture coordinates, `vt`, which are its only UVs). Each UV
 // island (triangles of one material and object joined by edges whose both ends share position
 // and UV) is one chart, laid as the input lays it: its UVs times one scale for the whole scene,
 // sqrt(surface area / UV area), so a UV length is on average the surface length it covers and

@@ -263,6 +263,42 @@ Poly3 facePolygon(const tinyobj::attrib_t& attrib, const tinyobj::mesh_t& mesh, 
   return poly;
 }
 
+// A face's `n` vertices' positions and texture coordinates (OBJ `vt`), paired; empty when a
+// vertex has none.
+std::vector<std::pair<glm::dvec3, glm::dvec2>> faceUvs(const tinyobj::attrib_t& attrib, const tinyobj::mesh_t& mesh,
+                                                       size_t offset, size_t n, const FaceSite& where) {
+  const size_t uvCount = attrib.texcoords.size() / 2;
+  std::vector<std::pair<glm::dvec3, glm::dvec2>> out;
+  for (size_t k = 0; k < n; ++k) {
+    const tinyobj::index_t i = mesh.indices[offset + k];
+    if (i.texcoord_index < 0) return {};
+    if (size_t(i.texcoord_index) >= uvCount)
+      fail("{}: face refers to texture coordinate {} but the file has {}", where(), i.texcoord_index + 1, uvCount);
+    const auto vi = size_t(i.vertex_index);  // checked by facePolygon
+    out.push_back(
+        {{attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]},
+         {attrib.texcoords[2 * size_t(i.texcoord_index)], attrib.texcoords[2 * size_t(i.texcoord_index) + 1]}});
+  }
+  return out;
+}
+
+// The OBJ's texture coordinates as lightmap UVs (--uv input) of the polygons addFace made from
+// `first` on: each vertex's, matched by position (addFace keeps positions, or splits into its
+// triangles), as the glTF loader's TEXCOORD_1.
+void recordObjUvs(Scene& scene, std::size_t first, const std::vector<std::pair<glm::dvec3, glm::dvec2>>& corners) {
+  scene.lightmapUv.resize(scene.polygons().size());
+  for (std::size_t p = first; p < scene.polygons().size(); ++p) {
+    Poly2 out;
+    for (const glm::dvec3& x : scene.polygons()[p].vertices)
+      for (const auto& [at, uv] : corners)
+        if (at == x) {
+          out.push_back(uv);
+          break;
+        }
+    if (out.size() == scene.polygons()[p].vertices.size()) scene.lightmapUv[p] = std::move(out);
+  }
+}
+
 }  // namespace
 
 // The file as it is, in its own units.
@@ -311,9 +347,13 @@ static Scene readSceneFile(const std::string& path, const LoadOptions& options) 
         }
         material = defaultMaterial;
       }
+      const std::size_t first = scene.polygons().size();
       addFace(scene, poly, material, object, where);
+      if (auto uv = faceUvs(reader.GetAttrib(), shape.mesh, offset - n, n, where); !uv.empty())
+        recordObjUvs(scene, first, uv);
     }
   }
+  if (!scene.lightmapUv.empty()) scene.lightmapUv.resize(scene.polygons().size());
   return scene;
 }
 

@@ -243,8 +243,7 @@ int runValidate(const ValidateOptions& o) {
   if (scene.polygons().empty()) fail("{}: the scene has no faces with area", o.scene);
   Camera camera = resolveCamera(scene, o.camera);
   auto backend = gl::createBackend(o.backend);
-  Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize(), 0,
-                           o.discretisation.chartAngle, o.discretisation.uv);
+  Atlas atlas = buildAtlas(scene, o.discretisation, backend->maxTextureSize());
   auto t0 = std::chrono::steady_clock::now();
   Validation v = validate(scene, atlas, o);
   double totalMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

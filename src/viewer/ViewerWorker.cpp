@@ -96,8 +96,7 @@ void workProgressive(const ViewerOptions& o, const Scene& scene, ViewerLink& lin
   auto backend = gl::createBackend(o.backend);
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
-  const Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), backend->maxTextureSize(), 0,
-                                 o.discretisation.chartAngle, o.discretisation.uv);
+  const Atlas atlas = buildAtlas(scene, o.discretisation, backend->maxTextureSize());
   // Declared after the backend: destroyed while its context is still current.
   std::unique_ptr<SolverState> state;
   std::unique_ptr<ProgressiveSolver> solver;

@@ -49,7 +49,7 @@ int runAnimation(AnimationOptions o) {
   const Camera camera = resolveCamera(base, o.camera);
   auto backend = gl::createBackend(o.backend);
   const Discretisation& d = o.discretisation;
-  const Atlas baseAtlas = buildAtlas(base, chooseTexelSize(base, d), backend->maxTextureSize(), 0, d.chartAngle, d.uv);
+  const Atlas baseAtlas = buildAtlas(base, d, backend->maxTextureSize());
   std::filesystem::create_directories(o.framesDir);
   const unsigned frames = unsigned(std::floor(path.duration() * o.fps + 1e-9)) + 1;
   std::string csv = "frame,time,iterations,relative_rms_error,radiosity_hash\n";
