@@ -132,7 +132,7 @@ TEST_CASE(
     INFO(command << "\n" << help.output);
     CHECK(help.exitCode == 0);
     CHECK_THAT(help.output, Contains("--preset"));
-    CHECK_THAT(help.output, Contains("fast|seed003|reference"));
+    CHECK_THAT(help.output, Contains("fast|refined|seed003|reference"));
   }
   for (const char* command : {"solve", "bench", "view"}) {
     test::Run help = test::hemirad(std::string(command) + " --help");
