@@ -98,7 +98,7 @@ TEST_CASE(
 TEST_CASE(
     "Per-pixel direct light behind a hard occluder: umbra black, lit pixels exact, the penumbra the exact form factor "
     "to the lamp's visible part within the grid's step, and sharper than the atlas's",
-    "[gl][direct]") {
+    "[gl][direct][heavy]") {
   const std::string path = occluderScene();
   const std::string view = "eye=0.5,0.5,0.6 target=0.5,0.5,1 up=0,1,0 fov=90";  // between occluder and receiver
   const std::string elements = "--elements 100 --converge 0.999";               // elements ~0.3 wide, the penumbra 0.2

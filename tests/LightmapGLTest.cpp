@@ -269,7 +269,7 @@ TEST_CASE("A flat-lit box shows no darker edges or corners, in hemirad's render 
 TEST_CASE(
     "The Cornell box's .glb reloads with every element in its own texel and renders as hemirad's image under "
     "GL_LINEAR",
-    "[gl][cli]") {
+    "[gl][cli][heavy]") {
   const std::string dir = test::tempPath("cornell-glb"), obj = test::sourcePath("scenes/cornell/cornell.obj");
   std::filesystem::create_directories(dir);
   test::Run run = test::hemirad("solve " + obj +

@@ -325,7 +325,7 @@ TEST_CASE(
   CHECK(sampled.elements == all.elements);
 }
 
-TEST_CASE("validate --item-res auto checks the item buffer a solve plans, not one of zero pixels", "[gl]") {
+TEST_CASE("validate --item-res auto checks the item buffer a solve plans, not one of zero pixels", "[gl][heavy]") {
   test::backend();
   auto [s, atlas] = shippedScene("scenes/cornell/cornell.obj", 2000);
   ValidateOptions o;

@@ -51,7 +51,7 @@ float maxDifference(const Image& a, const Image& b) {
 
 }  // namespace
 
-TEST_CASE("The viewer under Xvfb shows the same picture as solve after the same shots", "[viewer]") {
+TEST_CASE("The viewer under Xvfb shows the same picture as solve after the same shots", "[viewer][heavy]") {
   const std::string common = kViewerScene + " --elements 1500 --width 160 --height 120";
   // The viewer previews with the ambient term; a solve's images leave it out unless asked.
   const auto [a, b] = viewAndSolve(common + " --frame-shots 8 --frame-count 5", common + " --shots 40 --ambient on",
