@@ -1,7 +1,5 @@
 #include "src/bench/Bench.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
 
 #include <algorithm>
