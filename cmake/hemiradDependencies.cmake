@@ -3,7 +3,7 @@
 find_package(OpenMesh REQUIRED)
 find_package(tinyobjloader REQUIRED)
 find_package(TinyGLTF REQUIRED)
-find_package(OpenImageIO REQUIRED)
+find_package(OpenEXR REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(fmt REQUIRED)
@@ -14,9 +14,5 @@ find_package(Eigen3 3.3 REQUIRED)  # CGAL's FindEigen3; for its LSCM (src/scene/
 include(CGAL_Eigen3_support)
 find_package(TBB REQUIRED)
 find_package(PkgConfig REQUIRED)
-pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)  # stb_rect_pack (libstb-dev)
+pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)  # stb_rect_pack, stb_image(_write) (libstb-dev)
 
-# Debian's OpenImageIO target names /usr/include/opencv4, which does not exist.
-get_target_property(_oiio_inc OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
-list(FILTER _oiio_inc EXCLUDE REGEX "opencv4")
-set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_inc}")

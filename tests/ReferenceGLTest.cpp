@@ -206,7 +206,7 @@ TEST_CASE("Bad reference and compare input is one error line and a nonzero exit 
   writeExr(large, Image{8, 8, std::vector<float>(192, 1.0f)});
   oneError("compare " + small + " " + large + " --scene " + furnace, "is 8 x 8 pixels, the images compared 4 x 4");
   oneError("compare " + analyticScene("analytic.mtl") + " " + large + " --scene " + furnace,
-           "compare reads linear EXR images");
+           "compare reads linear EXR or PFM images");
 }
 
 TEST_CASE(
@@ -236,4 +236,5 @@ TEST_CASE(
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < 3 * width; ++x)
       REQUIRE(rows[std::size_t((height - 1 - y) * 3 * width + x)] == exr.rgb[std::size_t(y * 3 * width + x)]);
+  CHECK(readImage(out + ".pfm").rgb == exr.rgb);  // and compare reads it back as the EXR
 }

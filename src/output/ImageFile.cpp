@@ -1,58 +1,126 @@
 #include "src/output/ImageFile.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfVersion.h>
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cstdlib>
-#include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
+#include "src/output/Pfm.h"
 
 namespace hemirad {
 
 namespace {
-// The file's bytes, encoded in memory: the format is chosen by name, not by a path's extension
-// (/dev/stdout or a FIFO has none), and nothing reaches the disk unchecked.
-std::string encode(const char* format, const OIIO::ImageSpec& spec, const void* pixels) {
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  auto out = OIIO::ImageOutput::create(format);
-  if (!out || !out->supports("ioproxy")) fail("no {} image writer that writes to memory", format);
-  if (!out->set_ioproxy(&memory) || !out->open(std::string("memory.") + format, spec) ||
-      !out->write_image(spec.format, pixels) || !out->close())
-    fail("cannot encode {}: {}", format, out->geterror());
-  return {bytes.begin(), bytes.end()};
+// OpenEXR's output stream into memory: nothing reaches the disk unchecked (AtomicFile does that).
+class MemoryStream : public Imf::OStream {
+ public:
+  MemoryStream() : Imf::OStream("memory.exr") {}
+  void write(const char c[], int n) override {
+    if (position_ + std::size_t(n) > bytes.size()) bytes.resize(position_ + std::size_t(n));
+    std::copy(c, c + n, bytes.begin() + std::ptrdiff_t(position_));
+    position_ += std::size_t(n);
+  }
+  std::uint64_t tellp() override { return position_; }
+  void seekp(std::uint64_t pos) override { position_ = std::size_t(pos); }
+  std::string bytes;
+
+ private:
+  std::size_t position_ = 0;
+};
+
+// The three float channels of `rgb` (rows top to bottom) as OpenEXR slices.
+Imf::FrameBuffer rgbSlices(float* rgb, int width) {
+  Imf::FrameBuffer frame;
+  const std::size_t pixel = 3 * sizeof(float), row = pixel * std::size_t(width);
+  const char* names[3] = {"R", "G", "B"};
+  for (int c = 0; c < 3; ++c)
+    frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(rgb + c), pixel, row));
+  return frame;
+}
+
+void appendBytes(void* context, void* data, int size) {
+  static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+}
+
+std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail("{}: cannot read image: no such file or no permission", path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+Image readExr(const std::string& path) {
+  try {
+    Imf::InputFile in(path.c_str());
+    const Imath::Box2i window = in.header().dataWindow();
+    Image img{window.max.x - window.min.x + 1, window.max.y - window.min.y + 1, {}};
+    img.rgb.assign(std::size_t(img.width) * img.height * 3, 0.0f);
+    // The slices' origin is the data window's corner (OpenEXR addresses them absolutely).
+    float* origin = img.rgb.data() - (std::ptrdiff_t(window.min.y) * img.width + window.min.x) * 3;
+    in.setFrameBuffer(rgbSlices(origin, img.width));
+    in.readPixels(window.min.y, window.max.y);
+    return img;
+  } catch (const std::exception& e) {
+    fail("{}: cannot read EXR image: {}", path, e.what());
+  }
+}
+
+Image readStb(const std::string& path, const std::string& bytes) {
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = int(std::min<std::size_t>(bytes.size(), INT32_MAX));
+  int w = 0, h = 0, channels = 0;
+  Image img;
+  auto fill = [&](auto* pixels, float maxValue) {
+    if (!pixels) fail("{}: cannot read image: {}", path, stbi_failure_reason());
+    img = {w, h, std::vector<float>(std::size_t(w) * h * 3)};
+    for (std::size_t i = 0; i < img.rgb.size(); ++i) img.rgb[i] = float(pixels[i]) / maxValue;
+    stbi_image_free(pixels);
+  };
+  if (stbi_is_hdr_from_memory(data, size))
+    fill(stbi_loadf_from_memory(data, size, &w, &h, &channels, 3), 1.0f);
+  else if (stbi_is_16_bit_from_memory(data, size))
+    fill(stbi_load_16_from_memory(data, size, &w, &h, &channels, 3), 65535.0f);
+  else
+    fill(stbi_load_from_memory(data, size, &w, &h, &channels, 3), 255.0f);
+  return img;
 }
 }  // namespace
 
-// OpenEXR stamps the write time into the header unless told a time: none, or the reproducible
-// build convention's SOURCE_DATE_EPOCH, so the same image gives the same bytes.
-static std::string exrDateTime() {
-  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
-  if (!epoch || !*epoch) return "";
-  const std::time_t t = std::time_t(std::strtoll(epoch, nullptr, 10));
-  std::tm utc{};
-  gmtime_r(&t, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &utc);
-  return text;
+std::string encodeExr(const Image& image) {
+  Imf::Header header(image.width, image.height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+  MemoryStream memory;
+  try {
+    Imf::OutputFile out(memory, header);
+    out.setFrameBuffer(rgbSlices(const_cast<float*>(image.rgb.data()), image.width));
+    out.writePixels(image.height);
+  } catch (const std::exception& e) {
+    fail("cannot encode EXR: {}", e.what());
+  }
+  return std::move(memory.bytes);
 }
 
-std::string encodeExr(const Image& image) {
-  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
-  spec.attribute("compression", "zip");
-  spec.attribute("DateTime", exrDateTime());
-  return encode("openexr", spec, image.rgb.data());
+std::string encodePng8(int width, int height, const std::vector<std::uint8_t>& rgb) {
+  std::string bytes;
+  if (!stbi_write_png_to_func(appendBytes, &bytes, width, height, 3, rgb.data(), width * 3))
+    fail("cannot encode a {} x {} PNG", width, height);
+  return bytes;
 }
 
 std::string encodePng(const Image& image, double scale) {
-  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  std::vector<unsigned char> pixels = toneMap(image, scale);
-  return encode("png", spec, pixels.data());
+  return encodePng8(image.width, image.height, toneMap(image, scale));
 }
 
 std::string encodeRender(const std::string& path, const Image& image, double scale) {
@@ -68,12 +136,11 @@ void writePng(const std::string& path, const Image& image, double scale) {
 }
 
 Image readImage(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) fail("{}: cannot read image: {}", path, OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  Image img{spec.width, spec.height, std::vector<float>(size_t(spec.width) * spec.height * 3)};
-  if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, img.rgb.data())) fail("{}: {}", path, in->geterror());
-  return img;
+  const std::string bytes = readBytes(path);
+  if (bytes.size() >= 4 && Imf::isImfMagic(bytes.data())) return readExr(path);
+  if (bytes.size() >= 3 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f') && std::isspace(bytes[2]))
+    return decodePfm(bytes, path);
+  return readStb(path, bytes);
 }
 
 }  // namespace hemirad

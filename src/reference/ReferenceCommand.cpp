@@ -29,9 +29,13 @@ Image readSized(const std::string& path, const std::string& what, int width, int
 ReferenceWriters imageFileWriters() { return {{".exr", ".png"}, {".exr"}, {".png"}, encodeRender, encodeExr}; }
 
 int runCompare(const CompareOptions& o) {
-  for (const std::string& path : {o.a, o.b, o.standardError})  // a PNG holds tone-mapped, not linear, light
-    if (!path.empty() && std::filesystem::path(path).extension() != ".exr")
-      throw InputError(path + ": compare reads linear EXR images (solve --out X.exr, reference --out X.exr)");
+  for (const std::string& path : {o.a, o.b, o.standardError}) {  // a PNG holds tone-mapped, not linear, light
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (!path.empty() && ext != ".exr" && ext != ".pfm")
+      throw InputError(path +
+                       ": compare reads linear EXR or PFM images (solve --out X.exr, reference --out X.exr, "
+                       "hemirad-bench reference --out X.pfm)");
+  }
   std::vector<OutputPath> outputs;
   if (!o.errorMap.empty()) outputs.push_back({"--error-map", o.errorMap, {".png"}});
   if (!o.markdownOut.empty()) outputs.push_back({"--markdown", o.markdownOut, {".md"}, true});

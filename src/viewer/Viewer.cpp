@@ -1,6 +1,5 @@
 #include "src/viewer/Viewer.h"
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
+#include "src/output/ImageFile.h"
 #include "src/solver/Control.h"
 #include "src/viewer/ViewerWindow.h"
 #include "src/viewer/ViewerWorker.h"
@@ -59,13 +59,7 @@ void writeScreenshot(const std::string& path, glm::ivec2 size, const std::vector
     for (int x = 0; x < size.x; ++x)
       for (int c = 0; c < 3; ++c)
         rgb[(std::size_t(y) * size.x + x) * 3 + c] = rgba[(std::size_t(size.y - 1 - y) * size.x + x) * 4 + c];
-  OIIO::ImageSpec spec(size.x, size.y, 3, OIIO::TypeDesc::UINT8);
-  writeAtomically(path, [&](const std::string& tmp) {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) fail("{}: no image writer for this extension", path);
-    if (!out->open(tmp, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb.data()) || !out->close())
-      fail("{}: cannot write: {}", path, out->geterror());
-  });
+  writeFileBytes(path, encodePng8(size.x, size.y, rgb));
 }
 
 // A key's change to the controls: 1/2/3 and R restart the solve.
@@ -217,7 +211,10 @@ void interact(const ViewerOptions& o, ViewerWindow& window, ViewerLink& link, Vi
 }  // namespace
 
 int runView(ViewerOptions o) {
-  if (!o.screenshot.empty()) checkWritable(o.screenshot, "--screenshot");
+  if (!o.screenshot.empty()) {
+    checkExtension(o.screenshot, "--screenshot", {".png"}, false);
+    checkWritable(o.screenshot, "--screenshot");
+  }
   // Counted frames of counted shots: the solve stops at their product, so the last frame shows
   // what `solve --shots N x F` would (the same passes; only the last one can be cut short).
   if (o.shotsPerFrame && o.frames) {
