@@ -155,6 +155,30 @@ TEST_CASE("A closed box solved on a refined layout gives B = E / (1 - rho)", "[g
   CHECK(objects[0].mean.x == Approx(2.0).epsilon(0.001));
 }
 
+TEST_CASE("An element budget splits the steepest leaves first and keeps the refined layout within it",
+          "[cpu][adaptive]") {
+  const Scene scene = shadowScene();
+  const Atlas base = buildAtlas(scene, kTexel);
+  LeafTree tree(base, 2);
+  std::vector<int> identity(base.charts.size());
+  for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = int(i);
+  const std::vector<std::size_t> perLeaf = leafElements(leafOfTexel(base, identity, tree), tree.nodes().size());
+  REQUIRE(perLeaf[0] == 256);  // the floor's 16 x 16-cell tiles
+  // Three steep floor tiles, the least steep first; room for two splits (3 x 256 elements each) but not three.
+  std::vector<unsigned> counts(tree.nodes().size(), 0);
+  counts[0] = 10, counts[1] = 30, counts[2] = 20;
+  const SplitRule rule;
+  const ElementBudget budget{base.elements, base.elements + 2 * 3 * 256 + 100, perLeaf};
+  CHECK(splitSteepLeaves(tree, counts, rule, budget) == 2);
+  CHECK(tree.nodes()[0].leaf());  // the least steep waits
+  CHECK_FALSE(tree.nodes()[1].leaf());
+  CHECK_FALSE(tree.nodes()[2].leaf());
+  const RefinedLayout refined = refineLayout(scene, tree);
+  const Atlas atlas = buildAtlas(refined.scene, refined.specs, base.texelSize);
+  CHECK(atlas.elements == base.elements + 2 * 3 * 256);
+  CHECK(atlas.elements <= budget.most);
+}
+
 TEST_CASE("Bad input: an adaptive layout over the texture limit is one error naming the limit and what to lower",
           "[cpu][adaptive]") {
   const Scene scene = shadowScene();

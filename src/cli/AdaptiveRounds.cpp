@@ -8,19 +8,21 @@ namespace hemirad {
 
 namespace {
 
-// One round: solve `atlas` to the method's stop rule and count each leaf's steep texels.
+// One round: solve `atlas` to the method's stop rule and count each leaf's steep texels; `budget`
+// gets the layout's elements per leaf.
 std::vector<unsigned> solveAndCount(const SubdivideOptions& o, const AtlasMethod& method, const Scene& scene,
                                     const Atlas& atlas, const std::vector<int>& baseChart, const LeafTree& tree,
-                                    const Camera& camera, double aspect, AdaptiveRound& round) {
+                                    const Camera& camera, double aspect, AdaptiveRound& round, ElementBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   SolverState state(scene, atlas);
   const std::unique_ptr<AtlasRun> run = method.start(state);
   run->look(camera, aspect);
   round.shots = advanceToStop(run->solver(), {}).shots;
   const std::vector<glm::vec4> B = state.readRadiosity();
-  const std::vector<unsigned> counts =
-      GradientPass().count(state, leafOfTexel(atlas, baseChart, tree), tree.nodes().size(), float(o.rule.threshold),
-                           darkestLuminance(atlas, B, o.rule));
+  const std::vector<std::int32_t> leafOf = leafOfTexel(atlas, baseChart, tree);
+  const std::vector<unsigned> counts = GradientPass().count(state, leafOf, tree.nodes().size(), float(o.rule.threshold),
+                                                            darkestLuminance(atlas, B, o.rule));
+  budget = {atlas.elements, o.budget, leafElements(leafOf, tree.nodes().size())};
   round.elements = atlas.elements;
   round.leaves = tree.leafCount();
   round.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -40,8 +42,9 @@ AdaptiveLayout refineAdaptively(const SubdivideOptions& o, const AtlasMethod& me
     AdaptiveRound& round = out.rounds.emplace_back();
     const Scene& s = out.refined ? out.refined->scene : scene;
     const Atlas& a = out.atlas ? *out.atlas : base;
-    const std::vector<unsigned> counts = solveAndCount(o, method, s, a, baseChart, tree, camera, aspect, round);
-    round.split = splitSteepLeaves(tree, counts, o.rule);
+    ElementBudget budget;
+    const std::vector<unsigned> counts = solveAndCount(o, method, s, a, baseChart, tree, camera, aspect, round, budget);
+    round.split = splitSteepLeaves(tree, counts, o.rule, budget);
     fmt::print(stderr, "hemirad: adaptive round {}: {} elements, {} leaves, {} shots in {:.0f} ms; {} leaves split\n",
                depth, round.elements, round.leaves, round.shots, round.ms, round.split);
     if (round.split == 0) break;

@@ -254,11 +254,16 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   auto backend = gl::createBackend(o.backend);
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
-  const Discretisation& d = o.discretisation;
+  Discretisation d = o.discretisation;
+  SubdivideOptions subdivide = o.subdivide;
+  if (subdivide.adaptive && !d.texelSize) {  // --elements is the final layout's count
+    subdivide.budget = d.elements.value_or(Discretisation::kDefaultElements);
+    d.elements = subdivide.budget / SubdivideOptions::kFirstRoundShare;
+  }
   Atlas atlas = buildAtlas(scene, d, backend->maxTextureSize());
   if (o.discontinuities) cutAtContacts(scene, atlas, backend->maxTextureSize(), d.chartAngle);
-  if (o.subdivide.adaptive) {  // from here on, the refined (cut, if any) scene and atlas are the solve's
-    AdaptiveLayout adaptive = refineAdaptively(o.subdivide, *this, scene, atlas, camera, double(o.width) / o.height,
+  if (subdivide.adaptive) {  // from here on, the refined (cut, if any) scene and atlas are the solve's
+    AdaptiveLayout adaptive = refineAdaptively(subdivide, *this, scene, atlas, camera, double(o.width) / o.height,
                                                backend->maxTextureSize(), d.chartAngle);
     if (adaptive.refined) scene = std::move(adaptive.refined->scene), atlas = std::move(*adaptive.atlas);
   }

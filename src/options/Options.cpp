@@ -164,7 +164,8 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--subdivide", "MODE",
        "Elements: uniform (one texel size) or adaptive (seed 003's quadtree: solve, split the 16 x 16-texel leaves "
        "where the radiosity's relative change per texel exceeds --split-gradient into four of half the texel side, "
-       "solve again, to --leaf-depth; --elements sets the first round's count; docs/adaptive.md)",
+       "solve again, to --leaf-depth; --elements is the final count at most, the first round a quarter of it, the "
+       "steepest leaves splitting first; docs/adaptive.md)",
        oneOf(std::map<std::string, bool>{{"uniform", false}, {"adaptive", true}}, "uniform|adaptive"), "uniform"},
       {"--discontinuities", "MODE",
        "Discontinuity meshing: contact cuts every planar chart along the outlines of polygons touching it (edges "

@@ -1,5 +1,6 @@
 #include "src/solver/Subdivide.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gl/State.h"
@@ -74,12 +75,26 @@ std::vector<unsigned> countSteepTexels(const Atlas& atlas, const std::vector<glm
   return out;
 }
 
-std::size_t splitSteepLeaves(LeafTree& tree, const std::vector<unsigned>& counts, const SplitRule& rule) {
-  std::size_t split = 0;
-  const std::size_t nodes = tree.nodes().size();  // children added now are not tested this round
-  for (std::size_t n = 0; n < nodes && n < counts.size(); ++n)
-    if (tree.nodes()[n].leaf() && counts[n] >= rule.count) split += tree.split(int(n));
+std::size_t splitSteepLeaves(LeafTree& tree, const std::vector<unsigned>& counts, const SplitRule& rule,
+                             const ElementBudget& budget) {
+  std::vector<std::size_t> steep;  // children added now are not tested this round
+  for (std::size_t n = 0; n < tree.nodes().size() && n < counts.size(); ++n)
+    if (tree.nodes()[n].leaf() && counts[n] >= rule.count) steep.push_back(n);
+  std::stable_sort(steep.begin(), steep.end(), [&](std::size_t a, std::size_t b) { return counts[a] > counts[b]; });
+  std::size_t split = 0, elements = budget.elements;
+  for (std::size_t n : steep) {
+    const std::size_t added = n < budget.leafElements.size() ? 3 * budget.leafElements[n] : 0;
+    if (budget.most && elements + added > budget.most) continue;  // a smaller leaf further on may fit
+    if (tree.split(int(n))) ++split, elements += added;
+  }
   return split;
+}
+
+std::vector<std::size_t> leafElements(const std::vector<std::int32_t>& leafOf, std::size_t nodes) {
+  std::vector<std::size_t> out(nodes, 0);
+  for (std::int32_t leaf : leafOf)
+    if (leaf >= 0) ++out[std::size_t(leaf)];
+  return out;
 }
 
 }  // namespace hemirad

@@ -26,6 +26,17 @@ struct SubdivideOptions {
   bool adaptive = false;  // --subdivide adaptive
   int maxDepth = 2;       // --leaf-depth
   SplitRule rule;
+  // The final layout's elements at most (--elements; 0 under --texel-size: no bound). The first
+  // round lays out a quarter of them, leaving the rest to the splits.
+  std::size_t budget = 0;
+  static constexpr std::size_t kFirstRoundShare = 4;
+};
+
+// Elements a layout has and may grow to: a split leaf's texels count four times over (each
+// quarter keeps its cell count).
+struct ElementBudget {
+  std::size_t elements = 0, most = 0;     // most 0: no bound
+  std::vector<std::size_t> leafElements;  // per tree node, the texels of the layout it holds
 };
 
 // The relative-change floor: rule.darkFraction of the area-weighted mean luminance of B.
@@ -48,7 +59,11 @@ std::vector<unsigned> countSteepTexels(const Atlas& atlas, const std::vector<glm
                                        const std::vector<std::int32_t>& leafOf, std::size_t nodes, float threshold,
                                        float darkest);
 
-// Splits every leaf with counts >= rule.count (below the maximum depth); returns how many split.
-std::size_t splitSteepLeaves(LeafTree& tree, const std::vector<unsigned>& counts, const SplitRule& rule);
+// Splits the leaves with counts >= rule.count (below the maximum depth), steepest first (ties: the
+// lower node), skipping any whose split would take the layout past budget.most; returns how many split.
+std::size_t splitSteepLeaves(LeafTree& tree, const std::vector<unsigned>& counts, const SplitRule& rule,
+                             const ElementBudget& budget = {});
+// Per tree node, the texels of leafOf (leafOfTexel) in it.
+std::vector<std::size_t> leafElements(const std::vector<std::int32_t>& leafOf, std::size_t nodes);
 
 }  // namespace hemirad
