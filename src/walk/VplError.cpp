@@ -47,7 +47,7 @@ RegionErrors regionErrors(const Scene& scene, const std::vector<std::uint32_t>& 
 }
 
 Image converged(const Scene& scene, const VplErrorOptions& o, const Camera& camera, int maxTexture) {
-  const Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, o.discretisation), maxTexture);
+  const Atlas atlas = buildAtlas(scene, o.discretisation, maxTexture);  // its charts, as the flags say
   SolverState state(scene, atlas);
   ProgressiveSettings p;
   p.stop = {0, o.referenceConvergence};
