@@ -1,5 +1,6 @@
 // Issue 29, packing and export at scale: the lightmap's charts pack in near-linear time in their
-// count past a thousand, and the .glb keeps a mesh per scene object however its materials mix.
+// count past a thousand, need no gutters (clamped coordinates), and the .glb keeps a mesh per
+// scene object however its materials mix.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -7,6 +8,8 @@
 
 #include "src/output/ChartPacker.h"
 #include "src/output/GltfWriter.h"
+#include "tests/support/Files.h"
+#include "tests/support/GltfReload.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
@@ -77,5 +80,87 @@ TEST_CASE("The .glb holds one mesh per scene object, a primitive per material it
   }
   CHECK(names == std::vector<std::string>{"table", "lamp", "chair"});
   CHECK(materials == std::vector<std::vector<int>>{{grey, lamp}, {lamp}, {grey}});
-  CHECK(indices == std::vector<int>{12, 6, 6, 12});  // two triangles a quad: table 2 grey + 1 lamp, lamp 1, chair 2
+  // A quad, 4 x 4 cells, is cut along the lightmap's clamp lines (half a cell in from each side,
+  // Lightmap.h) into 3 x 3 pieces, 18 triangles: table 2 grey + 1 lamp, lamp 1, chair 2.
+  CHECK(indices == std::vector<int>{108, 54, 54, 108});
+}
+
+namespace {
+// 4 x 64 small charts, each in its plane z = its index: 0.9 x 0.9 squares, L shapes (three quads),
+// right triangles and 0.9 x 0.2 strips of two quads; at texel 0.5 the squares and L's are 2 x 2
+// cells, the strips 2 x 1 (each quad crossed by one clamp line: cut in two).
+Scene smallShapes() {
+  Scene s;
+  const int m = test::material(s, 0.5, 0.0), o = s.addObject("shapes");
+  const glm::dvec3 X(1, 0, 0), Y(0, 1, 0);
+  for (int k = 0; k < 256; ++k) {
+    const glm::dvec3 at(0, 0, k);
+    if (k % 4 == 0) s.addPolygon(test::rectangle(at, X, Y, 0.9, 0.9), m, o);
+    if (k % 4 == 1)  // three quads sharing whole edges: one chart
+      for (glm::dvec3 corner : {at, at + 0.45 * X, at + 0.45 * Y})
+        s.addPolygon(test::rectangle(corner, X, Y, 0.45, 0.45), m, o);
+    if (k % 4 == 2) s.addPolygon({at, at + 0.9 * X, at + 0.9 * Y}, m, o);
+    if (k % 4 == 3)
+      for (glm::dvec3 corner : {at, at + 0.45 * X}) s.addPolygon(test::rectangle(corner, X, Y, 0.45, 0.2), m, o);
+  }
+  return s;
+}
+}  // namespace
+
+TEST_CASE(
+    "Small charts of squares, L shapes, triangles and strips fill the lightmap without gutters, "
+    "never share a texel, and the .glb's TEXCOORD_1 is their clamped coordinate everywhere",
+    "[cpu][scale]") {
+  const Scene scene = smallShapes();
+  const Atlas atlas = buildAtlas(scene, 0.5);
+  REQUIRE(atlas.charts.size() == 256);
+  std::vector<glm::vec4> B(atlas.polygonOf.size(), glm::vec4(0.0f));
+  for (std::size_t t = 0; t < B.size(); ++t) B[t].r = float(t + 1);  // each element its own value
+  const GltfFiles files = encodeGltf({test::tempPath("shapes.glb"), ""}, scene, atlas, B, Camera{}, 1.0, 1.0);
+  const Lightmap& map = files.map;
+  // With 1-texel gutters a 2 x 2 chart takes 4 x 4 texels, at most 4 / 16 of them elements; a
+  // triangle laid along its hypotenuse, 3 x 2 cells, 6 / 20; a strip (one cell across: no gutter
+  // there) 2 / 4: at most 30 % in all, packed perfectly.
+  double cells = 0, padded = 0;
+  for (const Chart& c : atlas.charts)
+    cells += c.size.x * c.size.y, padded += (c.size.x + 2 * (c.size.x > 1)) * (c.size.y + 2 * (c.size.y > 1));
+  INFO(map.width << " x " << map.height << ", " << map.elements << " elements in " << cells << " cells");
+  CHECK(map.elements == atlas.elements);
+  CHECK(double(map.elements) / padded <= 0.30);
+  CHECK(map.texelUse() >= 0.95 * double(map.elements) / cells);  // the cells alone, packed 95 % full or more
+  // Texel-exact: every chart's cells on texels of their own, each element's value where its cell lies.
+  std::vector<int> owners(map.rgb.size(), 0);
+  std::size_t misplaced = 0;
+  for (std::size_t k = 0; k < atlas.charts.size(); ++k)
+    for (int j = 0; j < atlas.charts[k].size.y; ++j)
+      for (int i = 0; i < atlas.charts[k].size.x; ++i) {
+        const Chart& c = atlas.charts[k];
+        const glm::ivec2 t = map.origins[k] + (map.transposed[k] ? glm::ivec2(j, i) : glm::ivec2(i, j));
+        REQUIRE((t.x >= 0 && t.y >= 0 && t.x < map.width && t.y < map.height));
+        ++owners[std::size_t(t.y) * map.width + std::size_t(t.x)];
+        const std::size_t a = std::size_t(c.origin.y + j) * atlas.width + std::size_t(c.origin.x + i);
+        misplaced += atlas.chartAt(a) == k && map.rgb[std::size_t(t.y) * map.width + std::size_t(t.x)].r != B[a].r;
+      }
+  CHECK(*std::max_element(owners.begin(), owners.end()) == 1);
+  CHECK(misplaced == 0);
+  // Over every exported triangle, interpolated TEXCOORD_1 is Lightmap::coord, clamped half a cell
+  // in from each chart side: the triangles are cut along the clamp lines (else off by up to 0.5).
+  const test::ReloadedGltf g = test::reloadGltf(test::writeTempFile("shapes.glb", files.glb));
+  double worst = 0;
+  for (std::size_t t = 0; t + 2 < g.triangles.size(); t += 3)
+    for (int a = 0; a <= 4; ++a)
+      for (int b = 0; a + b <= 4; ++b) {
+        const double w[3] = {a / 4.0, b / 4.0, 1 - (a + b) / 4.0};
+        glm::dvec3 p(0.0);
+        glm::dvec2 uv(0.0);
+        for (int v = 0; v < 3; ++v) {
+          const LightmapVertex& x = g.triangles[t + std::size_t(v)];
+          p += w[v] * glm::dvec3(x.position[0], x.position[1], x.position[2]);
+          uv += w[v] * glm::dvec2(x.uv[0], x.uv[1]);
+        }
+        const int polygon = atlas.charts[std::size_t(std::lround(p.z))].polygon;  // chart k lies at z = k
+        const glm::dvec2 expected = map.coord(atlas, polygon, atlas.atlasCoord(polygon, p));
+        worst = std::max(worst, glm::length(uv * glm::dvec2(map.width, map.height) - expected));
+      }
+  CHECK(worst < 1e-3);
 }

@@ -89,34 +89,17 @@ glm::vec3 bilinear(const Lightmap& map, glm::dvec2 c) {
                             glm::mix(at(t.x, t.y + 1), at(t.x + 1, t.y + 1), f.x), f.y));
 }
 
-}  // namespace
-
-TEST_CASE(
-    "The Cornell box's lightmap at the default 10,000 elements: over 80 % of its texels are elements, and every "
-    "texel of its gutter (the edge clamped to on the border) holds its own chart's value",
-    "[cpu]") {
-  Scene scene = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
-  const Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, {}));
-  const Lightmap map = buildLightmap(atlas, polygonValues(atlas));
-  INFO("atlas " << atlas.width << " x " << atlas.height << ", lightmap " << map.width << " x " << map.height
-                << ", texel use " << map.texelUse() << ", packing " << map.packing());
-  CHECK(map.elements == atlas.elements);
-  // 19 charts in full gutters: 87 % with one texel (issue 29), 82 % with the two it had
-  // (docs/gltf.md), over 80 % only with the border's gutters cut away.
-  CHECK(map.texelUse() >= 0.80);
-  // The solve's atlas, without gutters (src/scene/AtlasPacker.h), holds more than any lightmap.
-  CHECK(map.texelUse() < double(atlas.elements) / (double(atlas.width) * atlas.height));
-  CHECK(map.packing() >= 0.90);
-  CHECK(std::max(map.width, map.height) <= 8 * std::min(map.width, map.height));
-  // Turned charts are the atlas packer's already (it places them lying or standing), so the
-  // lightmap's packer need not turn any (where it does, the coordinate check below covers it).
-  // Every cell of every chart lies in the image, and every texel of it and its gutter reads its
-  // polygon's value under CLAMP_TO_EDGE: no black, no other chart.
+// Every cell of every chart of `map` lies in the image, and every texel of it and its gutter
+// reads its polygon's value (polygonValues) under CLAMP_TO_EDGE: no black, no other chart, no
+// texel of two charts.
+void checkChartsOwnTheirTexels(const Atlas& atlas, const Lightmap& map) {
   std::vector<int> owners(map.rgb.size(), 0);
   std::size_t wrong = 0, cellsOutside = 0;
-  for (const Chart& c : atlas.charts)
-    for (int j = -map.gutter; j < c.size.y + map.gutter; ++j)
-      for (int i = -map.gutter; i < c.size.x + map.gutter; ++i) {
+  for (std::size_t k = 0; k < atlas.charts.size(); ++k) {
+    const Chart& c = atlas.charts[k];
+    const glm::ivec2 g = map.gutters[k];
+    for (int j = -g.y; j < c.size.y + g.y; ++j)
+      for (int i = -g.x; i < c.size.x + g.x; ++i) {
         const glm::ivec2 t = texelOf(map, c.polygon, i, j);
         const bool cell = i >= 0 && j >= 0 && i < c.size.x && j < c.size.y;
         if (t.x >= 0 && t.y >= 0 && t.x < map.width && t.y < map.height)
@@ -125,9 +108,40 @@ TEST_CASE(
           cellsOutside += cell;
         wrong += clampedTexel(map, c.polygon, i, j).r != float(c.polygon + 1);
       }
+  }
   CHECK(cellsOutside == 0);
   CHECK(wrong == 0);
   CHECK(*std::max_element(owners.begin(), owners.end()) == 1);  // padded charts never overlap
+}
+
+}  // namespace
+
+TEST_CASE(
+    "The Cornell box's lightmap at the default 10,000 elements: over 95 % of its texels are elements without "
+    "gutters, over 80 % with them, and every texel of a chart and its gutter holds its own chart's value",
+    "[cpu]") {
+  Scene scene = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  const Atlas atlas = buildAtlas(scene, chooseTexelSize(scene, {}));
+  const Lightmap map = buildLightmap(atlas, polygonValues(atlas));
+  const Lightmap padded = buildLightmap(atlas, polygonValues(atlas), {.gutter = 1});
+  INFO("atlas " << atlas.width << " x " << atlas.height << ", lightmap " << map.width << " x " << map.height
+                << ", texel use " << map.texelUse() << ", packing " << map.packing() << "; with gutters "
+                << padded.width << " x " << padded.height << ", texel use " << padded.texelUse());
+  CHECK(map.elements == atlas.elements);
+  // Clamped coordinates need no gutter (Lightmap.h): the charts' cells alone, packed: 96.4 %.
+  CHECK(map.texelUse() >= 0.95);
+  CHECK(std::max(map.width, map.height) <= 8 * std::min(map.width, map.height));
+  // 19 charts in full gutters: 87 % with one texel (issue 29), 82 % with the two it had
+  // (docs/gltf.md), over 80 % only with the border's gutters cut away.
+  CHECK(padded.texelUse() >= 0.80);
+  // The solve's atlas, without gutters (src/scene/AtlasPacker.h), holds more than a lightmap with them.
+  CHECK(padded.texelUse() < double(atlas.elements) / (double(atlas.width) * atlas.height));
+  CHECK(padded.packing() >= 0.90);
+  CHECK(std::max(padded.width, padded.height) <= 8 * std::min(padded.width, padded.height));
+  // Turned charts are the atlas packer's already (it places them lying or standing), so the
+  // lightmap's packer need not turn any (where it does, the coordinate check below covers it).
+  checkChartsOwnTheirTexels(atlas, map);
+  checkChartsOwnTheirTexels(atlas, padded);
 
   // Every element's centre through Lightmap::coord (TEXCOORD_1) lands on the texel holding its
   // own value, at its place within its atlas texel, x and y swapped on transposed charts.
@@ -167,32 +181,36 @@ TEST_CASE(
   std::vector<glm::vec4> B(atlas.polygonOf.size(), glm::vec4(0.0f));
   for (std::size_t t = 0; t < B.size(); ++t)  // a different value per texel
     if (atlas.polygonOf[t] != kNoPolygon) B[t] = glm::vec4(float(t % 7) + 1, float(t % 5) + 1, float(t) + 1, 0);
-  const Lightmap map = buildLightmap(atlas, B);
+  const Lightmap map = buildLightmap(atlas, B, {.gutter = 1}), clamped = buildLightmap(atlas, B);
   std::size_t slivers = 0;
   for (std::size_t c = 0; c < atlas.charts.size(); ++c) {
     const glm::ivec2 size = atlas.charts[c].size;
     INFO("chart " << c << ": " << size.x << " x " << size.y);
     CHECK(map.gutters[c] == glm::ivec2(size.x > 1 ? 1 : 0, size.y > 1 ? 1 : 0));
+    CHECK(clamped.gutters[c] == glm::ivec2(0));
     slivers += size.x == 1 || size.y == 1;
   }
   CHECK(slivers == 2);
   CHECK(map.elements == atlas.elements);
   // Points spread over each polygon: the lightmap's GL_LINEAR value against Atlas::sample (the
   // CPU twin of camera.frag's chart-masked lookup); on the full-cell floor and on the one-cell
-  // charts both are exact reconstructions of the same texels.
-  double worst = 0;
-  for (std::size_t p = 0; p < scene.polygons().size(); ++p) {
-    const auto& v = scene.polygons()[p].vertices;
-    for (int a = 0; a <= 10; ++a)
-      for (int b = 0; b <= 10; ++b) {
-        const double u = 0.02 + 0.96 * a / 10, w = 0.02 + 0.96 * b / 10;
-        const glm::dvec3 x = glm::mix(glm::mix(v[0], v[1], u), glm::mix(v[3], v[2], u), w);
-        const glm::dvec2 coord = atlas.atlasCoord(int(p), x);
-        const glm::vec3 camera = atlas.sample(B, int(p), coord), baked = bilinear(map, map.coord(atlas, int(p), coord));
-        worst = std::max(worst, double(glm::length(camera - baked) / glm::length(camera)));
-      }
+  // charts both are exact reconstructions of the same texels, with gutters and with the
+  // coordinates clamped to the cells' centres instead (the default).
+  for (const Lightmap* m : {&map, &clamped}) {
+    double worst = 0;
+    for (std::size_t p = 0; p < scene.polygons().size(); ++p) {
+      const auto& v = scene.polygons()[p].vertices;
+      for (int a = 0; a <= 10; ++a)
+        for (int b = 0; b <= 10; ++b) {
+          const double u = 0.02 + 0.96 * a / 10, w = 0.02 + 0.96 * b / 10;
+          const glm::dvec3 x = glm::mix(glm::mix(v[0], v[1], u), glm::mix(v[3], v[2], u), w);
+          const glm::dvec2 coord = atlas.atlasCoord(int(p), x);
+          const glm::vec3 camera = atlas.sample(B, int(p), coord), baked = bilinear(*m, m->coord(atlas, int(p), coord));
+          worst = std::max(worst, double(glm::length(camera - baked) / glm::length(camera)));
+        }
+    }
+    CHECK(worst < 1e-5);
   }
-  CHECK(worst < 1e-5);
 }
 
 TEST_CASE("Lightmap gutters copy the nearest element outward, and the packing is deterministic", "[cpu]") {
@@ -245,12 +263,13 @@ TEST_CASE("A flat-lit box shows no darker edges or corners, in hemirad's render 
   CHECK(bytes(again.exr) == bytes(paths.exr));
   const test::ReloadedGltf g = test::reloadGltf(paths.glb);
   const LightmapRender shown = renderLightmapped(g.triangles, readImage(paths.exr), g.camera, 128, 128, 1);
-  // The same with the gutters left black, as the old atlas: the check must see that.
-  std::vector<float> black;
-  const Lightmap undilated = buildLightmap(s.atlas, s.B, {.gutter = LightmapOptions{}.gutter, .dilate = false});
-  for (const glm::vec3& c : undilated.rgb) black.insert(black.end(), {c.r, c.g, c.b});
+  // Exported with 1-texel gutters left black, as the old atlas (coordinates unclamped): the check must see that.
+  const std::string dir3 = test::tempPath("flat-box-black");
+  std::filesystem::create_directories(dir3);
+  const GltfPaths blackPaths = gltfPaths(dir3 + "/box.glb");
+  writeGltf(blackPaths, scene, s.atlas, s.B, camera, 1.0, 1.0, {.gutter = 1, .dilate = false});
   const LightmapRender dark =
-      renderLightmapped(g.triangles, {undilated.width, undilated.height, black}, g.camera, 128, 128, 1);
+      renderLightmapped(test::reloadGltf(blackPaths.glb).triangles, readImage(blackPaths.exr), g.camera, 128, 128, 1);
 
   for (auto [name, image] :
        {std::pair{"hemirad", &s.view}, {"lightmap", &shown.image}, {"black gutters", &dark.image}}) {
@@ -346,11 +365,12 @@ TEST_CASE(
   CHECK(relative(ours.band1 / theirs.band1, ours.interior / theirs.interior) <= 0.02);
   CHECK(relative(ours.band2 / theirs.band2, ours.interior / theirs.interior) <= 0.02);
 
-  // The same layout with black gutters (the old atlas's): these checks see the darkened edges.
-  const Lightmap black = buildLightmap(atlas, B, {.gutter = LightmapOptions{}.gutter, .dilate = false});
-  Image blackImage{black.width, black.height, {}};
-  for (const glm::vec3& c : black.rgb) blackImage.rgb.insert(blackImage.rgb.end(), {c.r, c.g, c.b});
-  const LightmapRender dark = renderLightmapped(g.triangles, blackImage, g.camera, 128, 128, 2);
+  // Exported with 1-texel gutters left black (the old atlas's; coordinates unclamped): these checks see
+  // the darkened edges.
+  const GltfPaths blackPaths = gltfPaths(dir + "/black.glb");
+  writeGltf(blackPaths, scene, atlas, B, g.camera, 1.0, 1.0, {.gutter = 1, .dilate = false});
+  const LightmapRender dark =
+      renderLightmapped(test::reloadGltf(blackPaths.glb).triangles, readImage(blackPaths.exr), g.camera, 128, 128, 2);
   const test::Bands d = test::bandLuminance(dark.image, shown.surface);
   INFO("black gutters: mean relative difference " << imageError(dark.image, reference) << "; 1-px band "
                                                   << d.band1 / theirs.band1 << ", 2-px band " << d.band2 / theirs.band2

@@ -3,11 +3,13 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <map>
 #include <numeric>
 #include <sstream>
 #include <utility>
@@ -53,21 +55,40 @@ int addFloats(tinygltf::Model& m, const std::vector<float>& v, int components, i
                      TINYGLTF_TARGET_ARRAY_BUFFER);
 }
 
-// Polygon `id` fanned (a b c, a c d, ...) into `s`: its own vertices, flat normal, TEXCOORD_0
-// its chart coordinates in scene units (for material textures), TEXCOORD_1 the lightmap's.
+// Polygon `id` fanned (a b c, a c d, ...) into `s`: flat normal, TEXCOORD_0 its chart coordinates
+// in scene units (for material textures), TEXCOORD_1 the lightmap's. Where the lightmap's clamp
+// lines cross it, it is cut along them (Lightmap::affinePieces) and each piece fanned, so TEXCOORD_1
+// interpolates exactly to the clamped coordinates: the whole polygon on a projection chart (its
+// coordinates are affine over it), each fan triangle on a UV chart (affine per triangle). Pieces
+// share their vertices where equal, so an uncut polygon is its own vertices and fan.
 void addPolygon(Streams& s, const Scene& scene, const Atlas& atlas, const Lightmap& map, int id) {
   const ScenePolygon& p = scene.polygons()[std::size_t(id)];
-  const auto first = std::uint32_t(s.position.size() / 3);
-  for (const glm::dvec3& v : p.vertices) {
-    const glm::dvec2 plane = atlas.chartCoord(id, v), uv = map.uv(atlas, id, atlas.atlasCoord(id, v));
-    const glm::dvec3 at = v / scene.unitScale;  // in the file's units
+  SurfacePiece corners;
+  for (const glm::dvec3& v : p.vertices) corners.push_back({v, atlas.atlasCoord(id, v), atlas.chartCoord(id, v)});
+  std::vector<SurfacePiece> pieces;
+  if (!atlas.charts[atlas.chartOf[std::size_t(id)]].uvMapped())
+    pieces = map.affinePieces(atlas, id, corners);
+  else
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k)
+      for (SurfacePiece& piece : map.affinePieces(atlas, id, {corners[0], corners[k], corners[k + 1]}))
+        pieces.push_back(std::move(piece));
+  // A vertex by position and atlas coordinates: uncut, the polygon's own fan, as before the cuts.
+  std::map<std::array<double, 5>, std::uint32_t> index;
+  auto vertex = [&](const SurfacePoint& v) {
+    const std::array<double, 5> key{v.position.x, v.position.y, v.position.z, v.atlas.x, v.atlas.y};
+    const auto [it, added] = index.try_emplace(key, std::uint32_t(s.position.size() / 3));
+    if (!added) return it->second;
+    const glm::dvec2 uv = map.uv(atlas, id, v.atlas);
+    const glm::dvec3 at = v.position / scene.unitScale;  // in the file's units
     s.position.insert(s.position.end(), {float(at.x), float(at.y), float(at.z)});
     s.normal.insert(s.normal.end(), {float(p.normal.x), float(p.normal.y), float(p.normal.z)});
-    s.uv0.insert(s.uv0.end(), {float(plane.x / scene.unitScale), float(plane.y / scene.unitScale)});
+    s.uv0.insert(s.uv0.end(), {float(v.plane.x / scene.unitScale), float(v.plane.y / scene.unitScale)});
     s.uv1.insert(s.uv1.end(), {float(uv.x), float(uv.y)});
-  }
-  for (std::uint32_t k = 1; k + 1 < p.vertices.size(); ++k)
-    s.indices.insert(s.indices.end(), {first, first + k, first + k + 1});
+    return it->second;
+  };
+  for (const SurfacePiece& piece : pieces)
+    for (std::size_t k = 1; k + 1 < piece.size(); ++k)
+      s.indices.insert(s.indices.end(), {vertex(piece[0]), vertex(piece[k]), vertex(piece[k + 1])});
 }
 
 tinygltf::Primitive primitive(tinygltf::Model& m, const Streams& s, int material) {
@@ -206,9 +227,9 @@ tinygltf::Model model(const Scene& scene, const Atlas& atlas, const Lightmap& ma
     m.materials.push_back(material(scene.materials[mat], exrName, exposureScale));
   addObjects(m, scene, atlas, map);
   embedLightmap(m, png);
-  tinygltf::Sampler sampler;  // bilinear, no mipmaps: a 1-texel gutter guards level 0 only
+  tinygltf::Sampler sampler;  // bilinear, no mipmaps: the clamped coordinates guard level 0 only
   sampler.magFilter = sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
-  sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;  // the border's gutters are cut away
+  sampler.wrapS = sampler.wrapT = TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE;  // with gutters, the border's are cut away
   m.samplers.push_back(sampler);
   tinygltf::Texture texture;
   texture.source = 0;
@@ -234,8 +255,8 @@ GltfPaths gltfPaths(const std::string& glb) {
 }
 
 GltfFiles encodeGltf(const GltfPaths& paths, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
-                     const Camera& camera, double aspect, double exposureScale) {
-  GltfFiles files{buildLightmap(atlas, B), "", ""};
+                     const Camera& camera, double aspect, double exposureScale, const LightmapOptions& lightmap) {
+  GltfFiles files{buildLightmap(atlas, B, lightmap), "", ""};
   Image image{files.map.width, files.map.height, std::vector<float>(files.map.rgb.size() * 3)};
   std::memcpy(image.rgb.data(), files.map.rgb.data(), image.rgb.size() * sizeof(float));
   if (!paths.exr.empty()) files.exr = encodeExr(image);
@@ -249,8 +270,8 @@ GltfFiles encodeGltf(const GltfPaths& paths, const Scene& scene, const Atlas& at
 }
 
 Lightmap writeGltf(const GltfPaths& paths, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
-                   const Camera& camera, double aspect, double exposureScale) {
-  GltfFiles files = encodeGltf(paths, scene, atlas, B, camera, aspect, exposureScale);
+                   const Camera& camera, double aspect, double exposureScale, const LightmapOptions& lightmap) {
+  GltfFiles files = encodeGltf(paths, scene, atlas, B, camera, aspect, exposureScale, lightmap);
   OutputBatch batch;
   stageGltf(batch, paths, files);
   batch.commit();

@@ -30,13 +30,13 @@ struct GltfFiles {
   std::string glb, exr;  // the files' bytes
 };
 // Both files encoded in memory. `aspect` is the camera's width / height; `exposureScale` tone-maps
-// the embedded PNG.
+// the embedded PNG; `lightmap`: its layout (tests compare gutters with the default's clamp).
 GltfFiles encodeGltf(const GltfPaths& paths, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
-                     const Camera& camera, double aspect, double exposureScale);
+                     const Camera& camera, double aspect, double exposureScale, const LightmapOptions& lightmap = {});
 // Stages both into a run's outputs, under --gltf.
 void stageGltf(OutputBatch& batch, const GltfPaths& paths, const GltfFiles& files);
 // Encodes and writes both, all or none. Returns the lightmap it wrote.
 Lightmap writeGltf(const GltfPaths& paths, const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B,
-                   const Camera& camera, double aspect, double exposureScale);
+                   const Camera& camera, double aspect, double exposureScale, const LightmapOptions& lightmap = {});
 
 }  // namespace hemirad

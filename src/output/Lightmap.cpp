@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "src/base/Error.h"
 #include "src/output/ChartPacker.h"
@@ -13,6 +14,16 @@ namespace {
 // Per axis: the chart is one cell across there, so its lightmap coordinate is the cells' centre
 // line and it needs no gutter on that axis (Lightmap.h).
 glm::bvec2 oneCellAcross(const Chart& c) { return glm::equal(c.size, glm::ivec2(1)); }
+
+// Chart-local cell coordinates where coord() does not clamp them: [0.5, size - 0.5] on an axis
+// without gutter (a point on a one-cell axis), everything elsewhere.
+void unclampedCells(const Chart& c, glm::ivec2 gutter, glm::dvec2& lo, glm::dvec2& hi) {
+  constexpr double kAll = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 2; ++k) {
+    lo[k] = gutter[k] ? -kAll : 0.5;
+    hi[k] = gutter[k] ? kAll : c.size[k] - 0.5;
+  }
+}
 
 // Fills every empty texel of one chart's padded rectangle (size `size`, `value` per texel,
 // `filled` marks) level by level outward from the elements: each takes the mean of its filled
@@ -87,13 +98,64 @@ void fillChart(const Atlas& atlas, const std::vector<glm::vec4>& B, std::size_t 
     }
 }
 
+// `piece` split along atlas axis k's line at `line`: the parts below and above it (each empty
+// where the piece lies on the other side). Vertices on the line go to both.
+void split(const SurfacePiece& piece, int k, double line, SurfacePiece& below, SurfacePiece& above) {
+  below.clear(), above.clear();
+  for (std::size_t i = 0; i < piece.size(); ++i) {
+    const SurfacePoint& a = piece[i];
+    const SurfacePoint& b = piece[(i + 1) % piece.size()];
+    const double da = a.atlas[k] - line, db = b.atlas[k] - line;
+    if (da <= 0) below.push_back(a);
+    if (da >= 0) above.push_back(a);
+    if ((da < 0 && db > 0) || (da > 0 && db < 0)) {
+      // From the edge's lower end: a neighbouring piece crossing it the other way gets the same point.
+      const SurfacePoint& l = da < 0 ? a : b;
+      const SurfacePoint& h = da < 0 ? b : a;
+      const double t = (line - l.atlas[k]) / (h.atlas[k] - l.atlas[k]);
+      SurfacePoint m{glm::mix(l.position, h.position, t), glm::mix(l.atlas, h.atlas, t), glm::mix(l.plane, h.plane, t)};
+      m.atlas[k] = line;  // exactly on it: both sides clamp it alike
+      below.push_back(m), above.push_back(m);
+    }
+  }
+  if (below.size() < 3) below.clear();
+  if (above.size() < 3) above.clear();
+}
+
 }  // namespace
+
+std::vector<SurfacePiece> Lightmap::affinePieces(const Atlas& atlas, int polygon, const SurfacePiece& t) const {
+  glm::dvec2 lo, hi;
+  unclamped(atlas, polygon, lo, hi);
+  std::vector<SurfacePiece> pieces{t}, next;
+  SurfacePiece below, above;
+  for (int k = 0; k < 2; ++k) {
+    if (!(lo[k] < hi[k]) || !std::isfinite(lo[k])) continue;  // no clamp, or a point: affine already
+    for (double line : {lo[k], hi[k]}) {
+      next.clear();
+      for (const SurfacePiece& p : pieces) {
+        split(p, k, line, below, above);
+        if (!below.empty()) next.push_back(below);
+        if (!above.empty()) next.push_back(above);
+      }
+      std::swap(pieces, next);
+    }
+  }
+  return pieces;
+}
+
+void Lightmap::unclamped(const Atlas& atlas, int polygon, glm::dvec2& lo, glm::dvec2& hi) const {
+  const std::size_t chart = atlas.chartOf[std::size_t(polygon)];
+  unclampedCells(atlas.charts[chart], gutters[chart], lo, hi);
+  lo += glm::dvec2(atlas.charts[chart].origin), hi += glm::dvec2(atlas.charts[chart].origin);
+}
 
 glm::dvec2 Lightmap::coord(const Atlas& atlas, int polygon, glm::dvec2 atlasCoord) const {
   const std::size_t chart = atlas.chartOf[std::size_t(polygon)];
   const Chart& c = atlas.charts[chart];
-  glm::dvec2 local = atlasCoord - glm::dvec2(c.origin);
-  local = glm::mix(local, glm::dvec2(0.5), oneCellAcross(c));
+  glm::dvec2 lo, hi;
+  unclampedCells(c, gutters[chart], lo, hi);
+  const glm::dvec2 local = glm::clamp(atlasCoord - glm::dvec2(c.origin), lo, hi);
   return (transposed[chart] ? glm::dvec2(local.y, local.x) : local) + glm::dvec2(origins[chart]);
 }
 
