@@ -64,8 +64,8 @@ void printTexelUse(const Atlas& atlas, double atlasSeconds) {
       100 * u.texelUse(), 100 * u.cellUse(), 100 * u.packing(), atlasSeconds, secondsSince(start));
   start = std::chrono::steady_clock::now();
   const Lightmap map = buildLightmap(atlas, std::vector<glm::vec4>(atlas.polygonOf.size(), glm::vec4(0.0f)));
-  fmt::print("lightmap     {} x {}, texel use {:.1f} %, charts with {}-texel gutters {:.1f} % (in {:.3f} s)\n",
-             map.width, map.height, 100 * map.texelUse(), map.gutter, 100 * map.packing(), secondsSince(start));
+  fmt::print("lightmap     {} x {}, texel use {:.1f} %, charts{} {:.1f} % (in {:.3f} s)\n", map.width, map.height,
+             100 * map.texelUse(), gutterWords(map.gutter), 100 * map.packing(), secondsSince(start));
 }
 
 }  // namespace

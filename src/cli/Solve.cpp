@@ -185,11 +185,10 @@ std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene
     const GltfFiles gltf = encodeGltf(files, scene, atlas, B, camera, double(o.width) / o.height, scale);
     stageGltf(outputs, files, gltf);
     const Lightmap& map = gltf.map;
-    return fmt::format(
-        "hemirad: {}: {} x {} lightmap, {} elements, texel use {:.1f} % (charts with {}-texel gutters "
-        "{:.1f} %){}\n",
-        o.gltf, map.width, map.height, map.elements, 100 * map.texelUse(), map.gutter, 100 * map.packing(),
-        files.exr.empty() ? " (a stream: no .lightmap.exr beside it)" : " and " + files.exr);
+    return fmt::format("hemirad: {}: {} x {} lightmap, {} elements, texel use {:.1f} % (charts{} {:.1f} %){}\n", o.gltf,
+                       map.width, map.height, map.elements, 100 * map.texelUse(), gutterWords(map.gutter),
+                       100 * map.packing(),
+                       files.exr.empty() ? " (a stream: no .lightmap.exr beside it)" : " and " + files.exr);
   }
   return "";
 }

@@ -16,6 +16,7 @@
 #pragma once
 #include <cstddef>
 #include <glm/glm.hpp>
+#include <string>
 #include <vector>
 
 #include "src/scene/Atlas.h"
@@ -51,7 +52,7 @@ struct Lightmap {
   // Elements over texels: what of the lightmap holds radiosity. Gutters bound it: a w x h chart
   // fills at most w h / ((w + 2) (h + 2)) of its place, more on the border.
   double texelUse() const { return width && height ? double(elements) / (double(width) * height) : 0; }
-  // The packer's part: charts with gutters over texels.
+  // The packer's part: charts (with their gutters) over texels.
   double packing() const { return width && height ? double(chartTexels) / (double(width) * height) : 0; }
   // Where coord() is the identity (shifted, maybe turned) on polygon `polygon`'s chart: atlas
   // coordinates lo.x <= x <= hi.x, lo.y <= y <= hi.y (infinite: no clamp on that axis); outside, the
@@ -69,5 +70,10 @@ struct Lightmap {
 // Lays the atlas's charts out anew (deterministically: the same atlas gives the same layout)
 // and fills it from the per-atlas-texel radiosity B.
 Lightmap buildLightmap(const Atlas& atlas, const std::vector<glm::vec4>& B, const LightmapOptions& options = {});
+
+// " with N-texel gutters" for a layout with gutters, "" without: how the packing share is named.
+inline std::string gutterWords(int gutter) {
+  return gutter ? " with " + std::to_string(gutter) + "-texel gutters" : "";
+}
 
 }  // namespace hemirad
