@@ -164,3 +164,45 @@ TEST_CASE(
       }
   CHECK(worst < 1e-3);
 }
+
+TEST_CASE("The .glb's cut polygons leave no T-junction: no vertex lies inside another triangle's side",
+          "[cpu][scale]") {
+  // The Cornell room: its walls, floor and ceiling share sides, which their charts' clamp lines cross
+  // (its ceiling's own T-junctions, corners of the pieces around the light, are the scene's). The
+  // blocks stay out: their faces, made planar on loading, meet a few micrometres apart.
+  const Scene cornell = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  Scene scene = sceneLike(cornell);
+  for (const ScenePolygon& p : cornell.polygons())
+    if (cornell.objects[std::size_t(p.object)].name.find("block") == std::string::npos)
+      scene.addPolygon(p.vertices, p.material, p.object);
+  const Atlas atlas = buildAtlas(scene, Discretisation{{}, 2000}, 16384);
+  const std::vector<glm::vec4> B(atlas.polygonOf.size(), glm::vec4(1.0f));
+  const GltfFiles files = encodeGltf({test::tempPath("welded.glb"), ""}, scene, atlas, B, Camera{}, 1.0, 1.0);
+  const test::ReloadedGltf g = test::reloadGltf(test::writeTempFile("welded.glb", files.glb));
+  std::vector<glm::dvec3> vertices, cuts;  // cuts: the vertices the export made (not the scene's corners)
+  for (const LightmapVertex& v : g.triangles) vertices.emplace_back(v.position[0], v.position[1], v.position[2]);
+  for (const glm::dvec3& v : vertices) {
+    bool corner = false;
+    for (const ScenePolygon& p : scene.polygons())
+      for (const glm::dvec3& c : p.vertices) corner = corner || glm::length(glm::dvec3(glm::vec3(c)) - v) < 1e-4;
+    if (!corner) cuts.push_back(v);
+  }
+  std::size_t tJunctions = 0, sides = 0;
+  for (std::size_t t = 0; t + 2 < vertices.size(); t += 3)
+    for (int k = 0; k < 3; ++k, ++sides) {
+      const glm::dvec3 a = vertices[t + std::size_t(k)], d = vertices[t + std::size_t(k + 1) % 3] - a;
+      for (const glm::dvec3& w : cuts) {
+        const double s = glm::dot(w - a, d) / glm::dot(d, d);
+        // Inside the side (over 10 um from both ends: float positions of distinct cuts can be that close), on it.
+        const double inside = std::min(s, 1 - s) * glm::length(d);
+        if (inside > 1e-2 && glm::length(w - (a + s * d)) < 1e-4 && tJunctions < 3)
+          FAIL_CHECK(w.x << ", " << w.y << ", " << w.z << " inside side " << a.x << ", " << a.y << ", " << a.z << " + "
+                         << d.x << ", " << d.y << ", " << d.z);
+        tJunctions += inside > 1e-2 && glm::length(w - (a + s * d)) < 1e-4;  // mm
+      }
+    }
+  INFO(vertices.size() / 3 << " triangles, " << cuts.size() << " vertices at cuts");
+  CHECK(sides > 200);
+  CHECK(cuts.size() > 100);
+  CHECK(tJunctions == 0);
+}

@@ -16,6 +16,7 @@
 
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
+#include "src/output/ExportPieces.h"
 #include "src/output/ImageFile.h"
 
 namespace hemirad {
@@ -55,24 +56,14 @@ int addFloats(tinygltf::Model& m, const std::vector<float>& v, int components, i
                      TINYGLTF_TARGET_ARRAY_BUFFER);
 }
 
-// Polygon `id` fanned (a b c, a c d, ...) into `s`: flat normal, TEXCOORD_0 its chart coordinates
-// in scene units (for material textures), TEXCOORD_1 the lightmap's. Where the lightmap's clamp
-// lines cross it, it is cut along them (Lightmap::affinePieces) and each piece fanned, so TEXCOORD_1
-// interpolates exactly to the clamped coordinates: the whole polygon on a projection chart (its
-// coordinates are affine over it), each fan triangle on a UV chart (affine per triangle). Pieces
-// share their vertices where equal, so an uncut polygon is its own vertices and fan.
-void addPolygon(Streams& s, const Scene& scene, const Atlas& atlas, const Lightmap& map, int id) {
+// Polygon `id`'s pieces (src/output/ExportPieces.h) fanned (a b c, a c d, ...) into `s`: flat
+// normal, TEXCOORD_0 its chart coordinates in scene units (for material textures), TEXCOORD_1 the
+// lightmap's. Pieces share their vertices where equal, so an uncut polygon is its own vertices
+// and fan; a piece with vertices along its sides (welded to a neighbour's cuts) is fanned from its
+// centroid, which no side passes through.
+void addPolygon(Streams& s, const Scene& scene, const Atlas& atlas, const Lightmap& map, int id,
+                const ExportPolygon& pieces) {
   const ScenePolygon& p = scene.polygons()[std::size_t(id)];
-  SurfacePiece corners;
-  for (const glm::dvec3& v : p.vertices) corners.push_back({v, atlas.atlasCoord(id, v), atlas.chartCoord(id, v)});
-  std::vector<SurfacePiece> pieces;
-  if (!atlas.charts[atlas.chartOf[std::size_t(id)]].uvMapped())
-    pieces = map.affinePieces(atlas, id, corners);
-  else
-    for (std::size_t k = 1; k + 1 < corners.size(); ++k)
-      for (SurfacePiece& piece : map.affinePieces(atlas, id, {corners[0], corners[k], corners[k + 1]}))
-        pieces.push_back(std::move(piece));
-  // A vertex by position and atlas coordinates: uncut, the polygon's own fan, as before the cuts.
   std::map<std::array<double, 5>, std::uint32_t> index;
   auto vertex = [&](const SurfacePoint& v) {
     const std::array<double, 5> key{v.position.x, v.position.y, v.position.z, v.atlas.x, v.atlas.y};
@@ -86,9 +77,20 @@ void addPolygon(Streams& s, const Scene& scene, const Atlas& atlas, const Lightm
     s.uv1.insert(s.uv1.end(), {float(uv.x), float(uv.y)});
     return it->second;
   };
-  for (const SurfacePiece& piece : pieces)
-    for (std::size_t k = 1; k + 1 < piece.size(); ++k)
-      s.indices.insert(s.indices.end(), {vertex(piece[0]), vertex(piece[k]), vertex(piece[k + 1])});
+  for (std::size_t k = 0; k < pieces.pieces.size(); ++k) {
+    const SurfacePiece& piece = pieces.pieces[k];
+    if (!pieces.welded[k]) {
+      for (std::size_t i = 1; i + 1 < piece.size(); ++i)
+        s.indices.insert(s.indices.end(), {vertex(piece[0]), vertex(piece[i]), vertex(piece[i + 1])});
+      continue;
+    }
+    SurfacePoint centre{};
+    for (const SurfacePoint& v : piece)
+      centre.position += v.position / double(piece.size()), centre.atlas += v.atlas / double(piece.size()),
+          centre.plane += v.plane / double(piece.size());
+    for (std::size_t i = 0; i < piece.size(); ++i)
+      s.indices.insert(s.indices.end(), {vertex(centre), vertex(piece[i]), vertex(piece[(i + 1) % piece.size()])});
+  }
 }
 
 tinygltf::Primitive primitive(tinygltf::Model& m, const Streams& s, int material) {
@@ -175,6 +177,7 @@ void addCamera(tinygltf::Model& m, const Scene& scene, const Camera& camera, dou
 // (object, material, id) order, so memory grows with the polygons, not objects x materials.
 void addObjects(tinygltf::Model& m, const Scene& scene, const Atlas& atlas, const Lightmap& map) {
   const std::vector<ScenePolygon>& polygons = scene.polygons();
+  const std::vector<ExportPolygon> pieces = exportPieces(scene, atlas, map);
   std::vector<std::uint32_t> order(polygons.size());
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
@@ -188,7 +191,7 @@ void addObjects(tinygltf::Model& m, const Scene& scene, const Atlas& atlas, cons
       const int material = polygons[order[k]].material;
       Streams streams;
       for (; k < order.size() && polygons[order[k]].object == object && polygons[order[k]].material == material; ++k)
-        addPolygon(streams, scene, atlas, map, int(order[k]));
+        addPolygon(streams, scene, atlas, map, int(order[k]), pieces[order[k]]);
       if (!streams.indices.empty()) mesh.primitives.push_back(primitive(m, streams, material));
     }
     if (mesh.primitives.empty()) continue;
