@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "src/scene/Atlas.h"
+#include "src/scene/Contacts.h"
 #include "src/solver/Bvh.h"
 
 namespace hemirad {
@@ -18,6 +19,7 @@ struct PixelHit {
   std::uint32_t surface = kNoSurface;
   glm::dvec3 point{0.0}, normal{0.0};
   double offset = 0, footprint = 0;  // the plane n . x = offset; the pixel's size on the surface
+  bool emits = false;
 };
 
 // Per polygon its surface: polygons of one object on one plane (to a millionth of the scene) share one.
@@ -53,8 +55,12 @@ std::vector<PixelHit> traceCentres(const Scene& scene, const Camera& camera, int
       // A pixel spans |dy| / |ray| radians; on a surface seen at a grazing angle, more.
       const double footprint =
           hit->t * glm::length(rays.dy) / glm::length(ray) / std::max(std::abs(glm::dot(poly.normal, d)), 0.2);
-      hits[p] = {surface[hit->polygon], camera.eye + double(hit->t) * d, poly.normal,
-                 glm::dot(poly.normal, poly.vertices[0]), footprint};
+      hits[p] = {surface[hit->polygon],
+                 camera.eye + double(hit->t) * d,
+                 poly.normal,
+                 glm::dot(poly.normal, poly.vertices[0]),
+                 footprint,
+                 scene.materials[poly.material].emissive()};
     }
   return hits;
 }
@@ -70,6 +76,13 @@ bool acrossCrease(const PixelHit& a, const PixelHit& b, int k) {
          glm::dot(a.normal - b.normal, b.point - a.point) > 0;
 }
 
+// A pixel seeing `a` lies beside the light seen at `b`: a's surface is parallel to b's emitter,
+// faces its way and lies within `contact` of its plane (flush with it or just above a hung one).
+bool besideLight(const PixelHit& a, const PixelHit& b, double contact) {
+  return a.surface != kNoSurface && !a.emits && b.emits && glm::dot(a.normal, b.normal) > 1 - 1e-4 &&
+         std::abs(a.offset - b.offset) <= contact;
+}
+
 }  // namespace
 
 PixelRegions pixelRegions(const Scene& scene, const Camera& camera, int width, int height) {
@@ -78,6 +91,8 @@ PixelRegions pixelRegions(const Scene& scene, const Camera& camera, int width, i
   const std::vector<PixelHit> hits = traceCentres(scene, camera, width, height, r.polygon);
   r.edgeDistance.assign(hits.size(), PixelRegions::kFar);
   r.creaseDistance.assign(hits.size(), PixelRegions::kFar);
+  r.lightDistance.assign(hits.size(), PixelRegions::kFar);
+  const double contact = contactDistance(scene);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
       const std::size_t p = std::size_t(y) * width + x;
@@ -86,6 +101,8 @@ PixelRegions pixelRegions(const Scene& scene, const Camera& camera, int width, i
           const int qx = x + dx, qy = y + dy, k = std::max(std::abs(dx), std::abs(dy));
           if (qx < 0 || qy < 0 || qx >= width || qy >= height) continue;
           const PixelHit& q = hits[std::size_t(qy) * width + qx];
+          if (k <= PixelRegions::kLightReach && besideLight(hits[p], q, contact))
+            r.lightDistance[p] = std::min(r.lightDistance[p], k);
           if (q.surface == hits[p].surface) continue;
           r.edgeDistance[p] = std::min(r.edgeDistance[p], k);
           if (k <= PixelRegions::kCreaseReach && acrossCrease(hits[p], q, k))
