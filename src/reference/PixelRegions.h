@@ -9,7 +9,9 @@
 // Its light distance, for a pixel seeing a surface parallel to an emitter, facing its way and
 // within the contact distance of its plane (src/scene/Contacts.h: the ceiling around a flush or
 // hung light), counts pixels to the nearest pixel seeing that emitter: the light's rim, where
-// elements straddling it (half hidden above a hung light) bleed dark or bright into the ceiling.
+// elements straddling it (half hidden above a hung light) bleed dark or bright into the ceiling;
+// pixels whose square overlaps the light's image are left out (kFar): the light's coverage of
+// them is anti-aliasing, whose error swamps the ceiling's.
 #pragma once
 #include <cstdint>
 #include <vector>
