@@ -188,6 +188,68 @@ TEST_CASE(
   CHECK(rows[3].bias == 0.0);  // 2 px from the crease
 }
 
+TEST_CASE(
+    "The region beside a light is exactly the ceiling pixels 1-3 px from a light hung under it whose square misses the "
+    "light's image, not a nearer parallel panel",
+    "[reference]") {
+  // Looking straight up at a ceiling (y = 1) with a light hung `gap` under it and a parallel panel
+  // at y = 0.5 beside it in the image; all face down. A pixel is 1/32 in units of the image plane
+  // at distance 1 (fov 90, 64 px): the light's sides lie on pixel boundaries (x = +-8 px, z = -4
+  // px) but its far side 0.1 px into the next row (z = 8.1 px), whose 16 squares it overlaps.
+  const glm::dvec3 X(1, 0, 0), Z(0, 0, 1);
+  const double gap = 0.001, h = 1 - gap;  // the contact distance is 1e-3 of the diagonal (14.1): 0.014
+  const double x0 = -0.25, x1 = 0.25, z0 = -0.125, z1 = 8.1 / 32;  // the light on the image plane
+  Scene s;
+  const int white = test::material(s, 0.5, 0), lamp = test::material(s, 0.5, 1);
+  s.addPolygon(test::rectangle({-5, 1, -5}, X, Z, 10, 10), white, s.addObject("ceiling"));
+  s.addPolygon(test::rectangle({x0 * h, h, z0 * h}, X, Z, (x1 - x0) * h, (z1 - z0) * h), lamp, s.addObject("light"));
+  s.addPolygon(test::rectangle({0.14, 0.5, -0.25}, X, Z, 0.86, 0.75), white, s.addObject("panel"));
+  const Camera camera = parseCamera("eye=0,0,0 target=0,1,0 up=0,0,1 fov=90", Camera{}, "test");
+  const int size = 64;
+  const PixelRegions regions = pixelRegions(s, camera, size, size);
+  // Window point w on the image plane (x, z); what each pixel centre sees first: 0 ceiling, 1 light, 2 panel.
+  const Camera::PixelRays rays = camera.pixelRays(size, size);
+  auto onPlane = [&](double wx, double wy) {
+    const glm::dvec3 d = rays.corner + wx * rays.dx + wy * rays.dy;
+    return glm::dvec2(d.x, d.z) / d.y;
+  };
+  std::vector<int> seen(size * size);
+  std::vector<bool> overlapsLight(size * size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const glm::dvec2 c = onPlane(x + 0.5, size - 1 - y + 0.5), panel = c * 0.5;  // the panel is at y = 0.5
+      seen[y * size + x] = panel.x >= 0.14 && panel.y >= -0.25 && panel.y <= 0.5 ? 2
+                           : c.x >= x0 && c.x <= x1 && c.y >= z0 && c.y <= z1    ? 1
+                                                                                 : 0;
+      const glm::dvec2 a = onPlane(x, size - 1 - y), b = onPlane(x + 1, size - y);
+      const glm::dvec2 lo = glm::min(a, b) + 1e-9, hi = glm::max(a, b) - 1e-9;
+      overlapsLight[y * size + x] = lo.x < x1 && hi.x > x0 && lo.y < z1 && hi.y > z0;
+    }
+  std::vector<int> lightPixels;
+  for (int p = 0; p < size * size; ++p)
+    if (seen[p] == 1) lightPixels.push_back(p);
+  int besidePixels = 0, overlapping = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const int p = y * size + x;
+      REQUIRE(int(regions.polygon[p]) == seen[p]);
+      int k = PixelRegions::kFar;  // Chebyshev distance to the nearest light pixel
+      for (int q : lightPixels) k = std::min(k, std::max(std::abs(q % size - x), std::abs(q / size - y)));
+      overlapping += seen[p] == 0 && overlapsLight[p];
+      const bool beside = seen[p] == 0 && k <= 3 && !overlapsLight[p];
+      INFO("pixel " << x << ", " << y << " sees " << seen[p] << ", " << k << " px from the light");
+      CHECK((regions.lightDistance[p] <= PixelRegions::kLightReach) == beside);
+      if (!beside) continue;
+      CHECK(regions.lightDistance[p] == k);
+      ++besidePixels;
+    }
+  // The light covers 16 x 12 pixel centres; around it 22 x 18 less the light, the panel's 2 x 18
+  // and the 16 the light's far side overlaps.
+  CHECK(lightPixels.size() == 16 * 12);
+  CHECK(overlapping == 16);
+  CHECK(besidePixels == 22 * 18 - 16 * 12 - 2 * 18 - 16);
+}
+
 TEST_CASE("Bad reference and compare input is one error line and a nonzero exit before any work",
           "[gl][reference][cli][bad-input]") {
   const std::string furnace = analyticScene("furnace.obj"), out = test::tempPath("bad.exr");

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the shipped scenes (scenes/cornell, cornell_subdivided, four_boxes, analytic). Run from
-the repository root.
+"""Writes the shipped scenes (scenes/cornell, cornell_hung, cornell_subdivided, four_boxes,
+analytic). Run from the repository root.
 
 Every face is emitted counter-clockwise around its front normal: room faces face the room's
 centre, block faces face away from their block's centre.
@@ -83,6 +83,26 @@ def cornell(folder):
     with open(os.path.join(folder, "cornell.camera"), "w") as fh:
         fh.write("# Cornell's published camera: 35 mm lens, 25 mm film -> 39.3 degrees.\n"
                  "eye=278,273,-800 target=278,273,0 up=0,1,0 fov=39.3\n")
+
+def cornell_hung(folder, gap=0.5):
+    """The Cornell box with its light hung `gap` mm under a whole ceiling (issue 31's hung light):
+    ceiling elements straddling the light's rim are half hidden above it, the D0 contact case."""
+    X, Y, Z = 556.0, 548.8, 559.2
+    mid = [X / 2, Y / 2, Z / 2]
+    o = Obj("../cornell/cornell.mtl")
+    o.group("floor", "white", [orient(rect(0, X, 0, Z, 0), towards=mid)])
+    o.group("ceiling", "white", [orient(rect(0, X, 0, Z, Y), towards=mid)])
+    o.group("light", "light", [orient(rect(213.0, 343.0, 227.0, 332.0, Y - gap), towards=mid)])
+    o.group("back_wall", "white", [orient([[0, 0, Z], [X, 0, Z], [X, Y, Z], [0, Y, Z]], towards=mid)])
+    o.group("left_wall", "red", [orient([[X, 0, 0], [X, 0, Z], [X, Y, Z], [X, Y, 0]], towards=mid)])
+    o.group("right_wall", "green", [orient([[0, 0, 0], [0, 0, Z], [0, Y, Z], [0, Y, 0]], towards=mid)])
+    o.group("short_block", "white", block_faces(SHORT_BLOCK, 165.0))
+    o.group("tall_block", "white", block_faces(TALL_BLOCK, 330.0))
+    o.write(os.path.join(folder, "cornell_hung.obj"), [
+        f"The Cornell box (scenes/cornell, units: mm) with its light hung {gap:g} mm under a whole ceiling,",
+        "emitting downward. Written by scenes/tools/make_scenes.py."])
+    with open(os.path.join(folder, "cornell_hung.camera"), "w") as fh:
+        fh.write("eye=278,273,-800 target=278,273,0 up=0,1,0 fov=39.3\n")
 
 def subdivide(faces, n):
     """Splits each planar quad into n x n quads (the thesis's subdivided Cornell boxes)."""
@@ -308,6 +328,8 @@ if __name__ == "__main__":
     os.makedirs("scenes/cornell", exist_ok=True)
     os.makedirs("scenes/analytic", exist_ok=True)
     cornell("scenes/cornell")
+    os.makedirs("scenes/cornell_hung", exist_ok=True)
+    cornell_hung("scenes/cornell_hung")
     os.makedirs("scenes/cornell_subdivided", exist_ok=True)
     cornell_subdivided("scenes/cornell_subdivided", 2)
     cornell_subdivided("scenes/cornell_subdivided", 4)

@@ -281,7 +281,7 @@ void Commands::addCompare() {
   CLI::App* c = compareCmd = app.add_subcommand(
       "compare",
       "Relative luminance error of image A against image B (the reference) over surface interiors, edge "
-      "and corner bands and each object, and an error map (docs/reference.md)");
+      "and corner bands, the surfaces beside a light, each object, and an error map (docs/reference.md)");
   CompareOptions& o = compare;
   c->add_option("a", o.a, "The image judged (.exr)")->required()->type_name("A")->check(CLI::ExistingFile);
   c->add_option("b", o.b, "The reference (.exr)")->required()->type_name("B")->check(CLI::ExistingFile);

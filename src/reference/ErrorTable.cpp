@@ -62,6 +62,8 @@ std::vector<ErrorRow> errorTable(const Scene& scene, const PixelRegions& regions
   add("edge band (1 px)", [&](std::size_t p) { return regions.edgeDistance[p] == 1; });
   for (int k = 1; k <= PixelRegions::kCreaseReach; ++k)
     add(fmt::format("corner band ({} px)", k), [&regions, k](std::size_t p) { return regions.creaseDistance[p] == k; });
+  add(fmt::format("beside a light (1-{} px from its rim)", PixelRegions::kLightReach),
+      [&](std::size_t p) { return regions.lightDistance[p] <= PixelRegions::kLightReach; });
   for (std::size_t o = 0; o < scene.objects.size(); ++o)
     add("object " + scene.objects[o].name,
         [&, o](std::size_t p) { return std::size_t(scene.polygons()[regions.polygon[p]].object) == o; });

@@ -1,7 +1,8 @@
 // `hemirad compare`'s table (issue 31): the relative luminance error (L_A - L_B) / L_B of image A
 // against image B per region of the view (PixelRegions.h): surface interiors (>= 4 px from any
-// edge), the 1-px edge band, the 1, 2 and 3 px bands from a concave crease (room corners), each
-// object and the whole image. Pixels that see nothing or where B is black are left out.
+// edge), the 1-px edge band, the 1, 2 and 3 px bands from a concave crease (room corners), the
+// surfaces 1-3 px beside a light in their plane (the ceiling around it), each object and the
+// whole image. Pixels that see nothing or where B is black are left out.
 #pragma once
 #include <string>
 #include <vector>
