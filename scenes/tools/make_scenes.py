@@ -53,6 +53,16 @@ def block_faces(top, h, ox=0.0, oz=0.0):
         faces.append(orient([[a[0], 0, a[2]], [b[0], 0, b[2]], [b[0], h, b[2]], [a[0], h, a[2]]], away=c))
     return faces
 
+
+def walls_and_blocks(o, X, Y, Z, mid):
+    """The Cornell box's three walls and two blocks, into `o` (both Cornell scenes share them)."""
+    o.group("back_wall", "white", [orient([[0, 0, Z], [X, 0, Z], [X, Y, Z], [0, Y, Z]], towards=mid)])
+    o.group("left_wall", "red", [orient([[X, 0, 0], [X, 0, Z], [X, Y, Z], [X, Y, 0]], towards=mid)])
+    o.group("right_wall", "green", [orient([[0, 0, 0], [0, 0, Z], [0, Y, Z], [0, Y, 0]], towards=mid)])
+    o.group("short_block", "white", block_faces(SHORT_BLOCK, 165.0))
+    o.group("tall_block", "white", block_faces(TALL_BLOCK, 330.0))
+
+
 def cornell(folder):
     # Cornell's published box (graphics.cornell.edu/online/box/data.html), squared so every wall
     # is planar (the published walls are off-plane by up to 3.2 units), with a hole in the
@@ -65,11 +75,7 @@ def cornell(folder):
     ceiling = [rect(0, X, 0, lz0, Y), rect(0, X, lz1, Z, Y), rect(0, lx0, lz0, lz1, Y), rect(lx1, X, lz0, lz1, Y)]
     o.group("ceiling", "white", [orient(f, towards=mid) for f in ceiling])
     o.group("light", "light", [orient(rect(lx0, lx1, lz0, lz1, Y - 0.0), towards=mid)])
-    o.group("back_wall", "white", [orient([[0, 0, Z], [X, 0, Z], [X, Y, Z], [0, Y, Z]], towards=mid)])
-    o.group("left_wall", "red", [orient([[X, 0, 0], [X, 0, Z], [X, Y, Z], [X, Y, 0]], towards=mid)])
-    o.group("right_wall", "green", [orient([[0, 0, 0], [0, 0, Z], [0, Y, Z], [0, Y, 0]], towards=mid)])
-    o.group("short_block", "white", block_faces(SHORT_BLOCK, 165.0))
-    o.group("tall_block", "white", block_faces(TALL_BLOCK, 330.0))
+    walls_and_blocks(o, X, Y, Z, mid)
     o.write(os.path.join(folder, "cornell.obj"), [
         "Cornell box: Cornell's published geometry (units: mm), walls squared to be planar,",
         "ceiling split around the light. Written by scenes/tools/make_scenes.py."])
@@ -93,11 +99,7 @@ def cornell_hung(folder, gap=0.5):
     o.group("floor", "white", [orient(rect(0, X, 0, Z, 0), towards=mid)])
     o.group("ceiling", "white", [orient(rect(0, X, 0, Z, Y), towards=mid)])
     o.group("light", "light", [orient(rect(213.0, 343.0, 227.0, 332.0, Y - gap), towards=mid)])
-    o.group("back_wall", "white", [orient([[0, 0, Z], [X, 0, Z], [X, Y, Z], [0, Y, Z]], towards=mid)])
-    o.group("left_wall", "red", [orient([[X, 0, 0], [X, 0, Z], [X, Y, Z], [X, Y, 0]], towards=mid)])
-    o.group("right_wall", "green", [orient([[0, 0, 0], [0, 0, Z], [0, Y, Z], [0, Y, 0]], towards=mid)])
-    o.group("short_block", "white", block_faces(SHORT_BLOCK, 165.0))
-    o.group("tall_block", "white", block_faces(TALL_BLOCK, 330.0))
+    walls_and_blocks(o, X, Y, Z, mid)
     o.write(os.path.join(folder, "cornell_hung.obj"), [
         f"The Cornell box (scenes/cornell, units: mm) with its light hung {gap:g} mm under a whole ceiling,",
         "emitting downward. Written by scenes/tools/make_scenes.py."])
