@@ -82,6 +82,12 @@ TEST_CASE("Bad output names are refused before the scene is read, naming the fla
     CHECK(test::errorLines(run.output) == 1);
     CHECK_THAT(run.output, Contains(flag + " " + dir + "/" + name) && Contains(message));
   }
+  // The viewer's screenshot is a PNG, checked before any scene or window.
+  test::Run view = test::hemirad("view " + broken + " --screenshot " + dir + "/shot.jpg");
+  INFO(view.output);
+  CHECK(view.exitCode == 2);
+  CHECK(test::errorLines(view.output) == 1);
+  CHECK_THAT(view.output, Contains("--screenshot " + dir + "/shot.jpg") && Contains("the file name must end in .png"));
   CHECK(fs::is_empty(dir));
 }
 
