@@ -49,7 +49,7 @@ struct BenchRow {
   // Of solveMs, the time the CPU waited for the GPU at status readbacks (the only sync): near all
   // of it, the GPU bounds the solve; near none, the CPU's submission of the passes does.
   double waitMs = 0;
-  PassTimings split;    // ms per shot, synchronised
+  PassTimings split;  // ms per shot, synchronised
   double itemTrianglesPerSecond = 0, itemPixelsPerSecond = 0, gatherUpdatesPerSecond = 0;
   std::uint64_t hash = 0;                // of the converged B: equal across runs on one backend
   std::vector<ObjectRadiosity> objects;  // for comparing backends (--compare)
@@ -382,7 +382,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
     validateSolvable(scene);
     for (std::size_t n : o.elements) {
       Atlas atlas =
-          buildAtlas(scene, texelSizeForElements(scene, n, o.chartAngle), backend.maxTextureSize(), 0, o.chartAngle);
+          buildAtlas(scene, Discretisation{.elements = n, .chartAngle = o.chartAngle}, backend.maxTextureSize());
       for (int k : o.shootersPerPass) {
         BenchRow r = benchOne(backend, scene, atlas, k, o);
         r.scene = path;

@@ -73,9 +73,8 @@ int runMethodComparison(MethodComparisonOptions o) {
   for (const std::string& path : o.scenes) {
     const Scene scene = loadScene(path);
     validateSolvable(scene);
-    const double angle = Discretisation{}.chartAngle;  // both methods share the default atlas
-    const Atlas atlas =
-        buildAtlas(scene, texelSizeForElements(scene, o.elements, angle), backend->maxTextureSize(), 0, angle);
+    // Both methods share the default atlas.
+    const Atlas atlas = buildAtlas(scene, Discretisation{.elements = o.elements}, backend->maxTextureSize());
     ProgressiveSettings p = o.progressive;
     p.shootLevel = 0;  // one-texel shooters, as stochastic iteration's: the same discrete operator
     p.timings = gl::TimerMode::Off;
