@@ -3,9 +3,9 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
-#include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <ImfVersion.h>
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
@@ -23,23 +23,6 @@
 namespace hemirad {
 
 namespace {
-// OpenEXR's output stream into memory: nothing reaches the disk unchecked (AtomicFile does that).
-class MemoryStream : public Imf::OStream {
- public:
-  MemoryStream() : Imf::OStream("memory.exr") {}
-  void write(const char c[], int n) override {
-    if (position_ + std::size_t(n) > bytes.size()) bytes.resize(position_ + std::size_t(n));
-    std::copy(c, c + n, bytes.begin() + std::ptrdiff_t(position_));
-    position_ += std::size_t(n);
-  }
-  std::uint64_t tellp() override { return position_; }
-  void seekp(std::uint64_t pos) override { position_ = std::size_t(pos); }
-  std::string bytes;
-
- private:
-  std::size_t position_ = 0;
-};
-
 // The three float channels of `rgb` (rows top to bottom) as OpenEXR slices.
 Imf::FrameBuffer rgbSlices(float* rgb, int width) {
   Imf::FrameBuffer frame;
@@ -60,9 +43,12 @@ std::string readBytes(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-Image readExr(const std::string& path) {
+// `bytes`, the file's, decoded in memory (the file was read once, to tell its format).
+Image readExr(const std::string& path, const std::string& bytes) {
   try {
-    Imf::InputFile in(path.c_str());
+    Imf::StdISStream stream;
+    stream.str(bytes);
+    Imf::InputFile in(stream);
     const Imath::Box2i window = in.header().dataWindow();
     Image img{window.max.x - window.min.x + 1, window.max.y - window.min.y + 1, {}};
     img.rgb.assign(std::size_t(img.width) * img.height * 3, 0.0f);
@@ -101,7 +87,7 @@ std::string encodeExr(const Image& image) {
   Imf::Header header(image.width, image.height);
   header.compression() = Imf::ZIP_COMPRESSION;
   for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-  MemoryStream memory;
+  Imf::StdOSStream memory;  // in memory: nothing reaches the disk unchecked (AtomicFile does that)
   try {
     Imf::OutputFile out(memory, header);
     out.setFrameBuffer(rgbSlices(const_cast<float*>(image.rgb.data()), image.width));
@@ -109,7 +95,7 @@ std::string encodeExr(const Image& image) {
   } catch (const std::exception& e) {
     fail("cannot encode EXR: {}", e.what());
   }
-  return std::move(memory.bytes);
+  return memory.str();
 }
 
 std::string encodePng8(int width, int height, const std::vector<std::uint8_t>& rgb) {
@@ -137,7 +123,7 @@ void writePng(const std::string& path, const Image& image, double scale) {
 
 Image readImage(const std::string& path) {
   const std::string bytes = readBytes(path);
-  if (bytes.size() >= 4 && Imf::isImfMagic(bytes.data())) return readExr(path);
+  if (bytes.size() >= 4 && Imf::isImfMagic(bytes.data())) return readExr(path, bytes);
   if (bytes.size() >= 3 && bytes[0] == 'P' && (bytes[1] == 'F' || bytes[1] == 'f') && std::isspace(bytes[2]))
     return decodePfm(bytes, path);
   return readStb(path, bytes);
