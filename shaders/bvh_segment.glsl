@@ -3,8 +3,9 @@
 // near-shooter refinement (refine_near.glsl) and per-pixel direct light (direct.glsl). Needs
 // scene.glsl, segment.glsl and bvh.glsl.
 
-// Whether any polygon but the receiver chart's blocks the segment o -> x (NO_POLYGON: any polygon).
-bool segmentBlocked(vec3 o, vec3 x, uint receiverChart, float eps) {
+// Whether any polygon but those of charts `passA` and `passB` blocks the segment o -> x
+// (NO_POLYGON for either: no chart passes).
+bool segmentBlocked(vec3 o, vec3 x, uint passA, uint passB, float eps) {
   vec3 d = x - o;
   vec3 invD = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));  // an axis-parallel segment: no 0 * inf
   uint stack[BVH_STACK];
@@ -21,7 +22,8 @@ bool segmentBlocked(vec3 o, vec3 x, uint receiverChart, float eps) {
     }
     for (uint i = first; i < first + count; ++i) {
       uint q = floatBitsToUint(bvhTriangle[i].v0.w);
-      if (chartOf(q) != receiverChart && blocksSegment(q, o, x, eps)) return true;
+      uint c = chartOf(q);
+      if (c != passA && c != passB && blocksSegment(q, o, x, eps)) return true;
     }
   }
   return false;

@@ -31,7 +31,7 @@ float visibleShare(vec3 x, vec3 n, uint base, vec3 nl) {
       float r2 = dot(d, d), w = dA * max(dot(n, d), 0.0) * max(-dot(nl, d), 0.0) / (r2 * r2);
       if (w <= 0.0) continue;
       all += w;
-      if (!segmentBlocked(x, y, NO_POLYGON, segmentEps)) seen += w;
+      if (!segmentBlocked(x, y, NO_POLYGON, NO_POLYGON, segmentEps)) seen += w;
     }
   return all > 0.0 ? seen / all : 1.0;  // every centre at the horizon: F is ~0 anyway
 }

@@ -17,8 +17,10 @@
 #include "visibility.glsl"
 #ifdef REFINE_NEAR
 #include "shooter_tree.glsl"
+#ifndef BVH_VISIBILITY  // else visibility.glsl has them
 #include "bvh.glsl"
 #include "bvh_segment.glsl"
+#endif
 #include "refine_near.glsl"
 #include "transfer_split.glsl"
 #endif

@@ -45,7 +45,7 @@ NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon) {
     if (dot(x - o, ns) <= 0.0) continue;
     float F = shapeFormFactor(n, o, area, ns, x, nr), w = luminance(st.unshot.rgb) / area * F;
     l.all += w;
-    if (w > 0.0 && !segmentBlocked(o, x, chart, eps)) l.seen += w, l.seenRgb += st.unshot.rgb / area * F;
+    if (w > 0.0 && !segmentBlocked(o, x, chart, NO_POLYGON, eps)) l.seen += w, l.seenRgb += st.unshot.rgb / area * F;
   }
   return l;
 }

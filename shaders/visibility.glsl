@@ -7,6 +7,31 @@ layout(binding = SAMPLER_ITEM_ID) uniform usampler2DArray itemId;
 uniform float farDistance;
 
 #include "segment.glsl"
+#ifdef BVH_VISIBILITY
+#include "bvh.glsl"
+#include "bvh_segment.glsl"
+#endif
+
+#ifdef BVH_VISIBILITY
+// --visibility bvh (docs/design.md#visibility): every polygon whose BVH boxes the segment meets is
+// tested, so no occluder is missed however thin. The segment runs where light leaves and arrives:
+// each end onto its polygon's plane (a curved chart's centroids sit off its facets), the shooter's
+// and the receiver's charts pass (point visibility cannot resolve a surface against itself), and
+// on a curved receiver (its centre off its polygon's plane) the last half element side is not
+// tested: the centre stands for a bent patch, whose neighbouring facets lie that near. A planar
+// receiver is tested to its centre, so contact shadows stay whole.
+vec3 ontoPlane(vec3 p, uint polygon) {
+  vec4 plane = polygons[polygon].normal;
+  return p - (dot(plane.xyz, p) - plane.w) * plane.xyz;
+}
+float tracedVisibility(uint shooter, vec3 o, vec3 x, uint polygon, float side) {
+  uint own = control.shooter[shooter].polygon;
+  vec3 a = ontoPlane(o, own), b = ontoPlane(x, polygon);
+  float reach = length(x - b) > 1e-3 * side ? 0.5 * side : 0.0;
+  float keep = max(0.0, 1.0 - reach / max(length(b - a), 1e-30));
+  return segmentBlocked(a, a + (b - a) * keep, chartOf(polygon), chartOf(own), 4e-7 * farDistance) ? 0.0 : 1.0;
+}
+#endif
 
 // Point visibility of x (on `polygon`) from the shooter's origin o, robust by construction
 // rather than by a depth tolerance: the item buffer only nominates occluders. The 3 x 3 pixels
@@ -71,6 +96,10 @@ float shooterFormFactor(uint s, ivec2 t, uint polygon, out bool facing, out floa
   facing = dot(x - origin, control.shooter[s].normal.xyz) > 0.0;  // cheap, first: half the scene fails it
   float F = facing ? unoccludedFormFactor(s, x, texelFetch(atlasNormal, t, 0).xyz) : 0.0;
   facing = F > 0.0;
+#ifdef BVH_VISIBILITY
+  visible = facing ? tracedVisibility(s, origin, x, polygon, sqrt(texelFetch(atlasPositionArea, t, 0).w)) : 0.0;
+#else
   visible = facing ? visibility(s, origin, x, polygon) : 0.0;
+#endif
   return visible * F;
 }

@@ -8,6 +8,7 @@
 
 #include "src/output/ChartPacker.h"
 #include "src/output/GltfWriter.h"
+#include "src/scene/SceneLoader.h"
 #include "tests/support/Files.h"
 #include "tests/support/GltfReload.h"
 #include "tests/support/Support.h"

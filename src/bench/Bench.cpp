@@ -362,11 +362,12 @@ void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const ch
 void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, const Say& say) {
   say(
       fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, chart angle {}, preset {}: shoot level {}, item mesh "
-                  "L{}, {} item buffer {}\n\n",
+                  "L{}, {} item buffer {}, visibility {}\n\n",
                   date, backend.name(), backend.renderer(), algorithmName(o.progressive.algorithm), o.converge,
                   o.chartAngle, o.progressive.presetLabel(), printedSetting(o.progressive.shootLevel, kAutoShootLevel),
                   o.progressive.itemSubdivision, projectionName(o.progressive.projection),
-                  printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
+                  printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2"),
+                  visibilityName(o.progressive.visibility)));
   Ceilings ceiling;
   if (o.ceiling) {
     ceiling = measureCeilings(backend, o.scenes.front());
@@ -381,8 +382,8 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
     Scene scene = loadScene(path);
     validateSolvable(scene);
     for (std::size_t n : o.elements) {
-      Atlas atlas =
-          buildAtlas(scene, Discretisation{.elements = n, .chartAngle = o.chartAngle}, backend.maxTextureSize());
+      Atlas atlas = buildAtlas(scene, Discretisation{.texelSize = {}, .elements = n, .chartAngle = o.chartAngle},
+                               backend.maxTextureSize());
       for (int k : o.shootersPerPass) {
         BenchRow r = benchOne(backend, scene, atlas, k, o);
         r.scene = path;
@@ -405,6 +406,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
                           {"item_subdivision", o.progressive.itemSubdivision},
                           {"item_resolution", o.progressive.itemResolution},
                           {"projection", projectionName(o.progressive.projection)},
+                          {"visibility", visibilityName(o.progressive.visibility)},
                           {"rows", rows},
                           {"provenance", provenanceJson(provenance(backend.name(), backend.renderer()))}};
     if (o.ceiling)

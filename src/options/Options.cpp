@@ -209,6 +209,14 @@ std::vector<Flag> sceneAndSolverFlags() {
        "one, each from its own origin with exact visibility, and the far receivers what the near ones took less, so "
        "the shot is conserved (hierarchical radiosity's link refinement; 0: off; 4: preset refined)",
        CLI::Range(0.0, 16.0)},
+      {"--visibility", "HOW",
+       "Whether a receiver sees a shooter: item-buffer (seed 003: the shooter's item buffer nominates occluders, "
+       "exact segment tests decide; an occluder thinner than a pixel can be missed) or bvh (exact segment tests "
+       "through the scene's BVH and no item buffer: nothing missed, and no shot draws the scene, which on "
+       "scenes of many triangles is most of a shot; docs/design.md#visibility)",
+       enumeration<Visibility>({{visibilityName(Visibility::ItemBuffer), Visibility::ItemBuffer},
+                                {visibilityName(Visibility::Bvh), Visibility::Bvh}}),
+       "item-buffer"},
       {"--direct", "MODE",
        "Camera images' direct light: looked up in the elements like the rest (atlas), or computed per pixel, exactly "
        "(per-pixel: Lambert's contour integral to each emitter with exact visibility, the solution giving only the "
@@ -477,6 +485,7 @@ void addItemPlan(CLI::App* cmd, ProgressiveSettings& p, bool shootLevel) {
   add(cmd, "--item-res", p.itemResolution, defaultText("--item-res"));
   if (shootLevel) add(cmd, "--shoot-level", p.shootLevel, defaultText("--shoot-level"));
   if (shootLevel) add(cmd, "--refine-near", p.refineNear, defaultText("--refine-near"));
+  if (shootLevel) add(cmd, "--visibility", p.visibility);
 }
 
 Projection oneProjection(int stored) {

@@ -22,6 +22,7 @@ struct RunInfo {
   std::string direct;
   double directSplitMs = 0, directPixelsMs = 0;
   double refineNear = 0;         // progressive: receivers nearer than this many shooter sides see its parts
+  std::string visibility;        // progressive: "item-buffer" or "bvh" (--visibility)
   unsigned importanceShots = 0;  // importance-driven solves
   unsigned deliveryShots = 0;    // perspective-driven solves: item buffers that delivered stored entries
   unsigned fovDecayShots = 0;    // ... and their decay interval

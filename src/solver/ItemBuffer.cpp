@@ -126,11 +126,15 @@ void ItemBuffer::render(const gl::Buffer& control) {
   if (chunkCount_) gl::drawIndexedIndirect(commands_, chunkCount_ * std::size_t(faces_) * std::size_t(shooters_));
 }
 
-void ItemBuffer::bindForLookup(const SolverState& state, const gl::Buffer& control, const gl::Buffer& shapes) const {
+void bindShooterLookup(const SolverState& state, const gl::Buffer& control, const gl::Buffer& shapes) {
   state.bindScene();
-  id_.bindUnit(slot::SAMPLER_ITEM_ID);
   control.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_CONTROL);
   shapes.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
+}
+
+void ItemBuffer::bindForLookup(const SolverState& state, const gl::Buffer& control, const gl::Buffer& shapes) const {
+  bindShooterLookup(state, control, shapes);
+  id_.bindUnit(slot::SAMPLER_ITEM_ID);
 }
 
 }  // namespace hemirad

@@ -20,6 +20,10 @@ namespace hemirad {
 // The shader defines that select projection p in shaders/hemisphere.glsl.
 gl::Defines itemBufferDefines(Projection p);
 
+// Binds what a shooter lookup reads besides an item buffer: the scene, the pass's `control` and the
+// shooters' `shapes` (formfactor.glsl); all a gather traced through the BVH needs.
+void bindShooterLookup(const SolverState& state, const gl::Buffer& control, const gl::Buffer& shapes);
+
 class ItemBuffer {
  public:
   // `resolution` is the pixel budget's side: the hemisphere gets resolution^2 pixels, the

@@ -51,13 +51,14 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   setUpReduction(keep, defines);
 
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
-  itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, plan_.itemResolution,
-                                             state.farDistance, settings.projection,
-                                             settings.shootersPerPass * (settings.importanceDriven() ? 2 : 1));
+  if (settings.visibility == Visibility::ItemBuffer)
+    itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, plan_.itemResolution,
+                                               state.farDistance, settings.projection,
+                                               settings.shootersPerPass * (settings.importanceDriven() ? 2 : 1));
   if (settings.importanceDriven()) view_ = std::make_unique<ImportanceView>(state);
-  gl::Defines gatherDefines = itemBuffer_->defines();
+  gl::Defines gatherDefines = itemBufferDefines(settings.projection);
   gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
-  setUpRefinement(gatherDefines);
+  setUpBvh(gatherDefines);
   if (settings.directOnly) gatherDefines.push_back({"DIRECT_ONLY", "1"});
   gather_ = computeProgram("gather.comp", gatherDefines);
   if (refinesNear()) gather_.set("refineNear", float(settings.refineNear));
@@ -130,14 +131,20 @@ void ProgressiveSolver::setUpReduction(unsigned keep, const gl::Defines& defines
   select_.set("uniformRatio", float(settings_.uniformRatio));
 }
 
-// Receivers near a shooter get its parts one by one with exact visibility, traced through the
-// scene's BVH (shaders/refine_near.glsl); nothing to refine where blocks have no parts.
-void ProgressiveSolver::setUpRefinement(gl::Defines& gatherDefines) {
-  if (!refinesNear()) return;
+// The scene's BVH, for exact visibility: receivers near a shooter get its parts one by one
+// (shaders/refine_near.glsl; nothing to refine where blocks have no parts), and with
+// --visibility bvh every receiver traces its segment to each shooter (shaders/visibility.glsl).
+void ProgressiveSolver::setUpBvh(gl::Defines& gatherDefines) {
+  if (!tracesBvh()) return;
   const Bvh bvh(state_.scene);
   bvhNodes_ = gl::Buffer(std::span<const BvhNode>(bvh.nodes()));
   bvhTriangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh.triangles()));
-  gatherDefines.push_back({"REFINE_NEAR", "1"});
+  if (refinesNear()) gatherDefines.push_back({"REFINE_NEAR", "1"});
+  if (settings_.visibility == Visibility::Bvh) gatherDefines.push_back({"BVH_VISIBILITY", "1"});
+}
+
+void ProgressiveSolver::renderItemBuffer() {
+  if (itemBuffer_) itemBuffer_->render(control_);
 }
 
 // The control block: stop rule, convergence history.
@@ -178,7 +185,7 @@ void ProgressiveSolver::importancePass() {
   const std::uint32_t none = 0;
   control_.upload(offsetof(ControlBlock, count), sizeof none, &none);
   selectPass(true);
-  itemBuffer_->render(control_);
+  renderItemBuffer();
   gatherPass(Receivers::InView);  // no radiosity shooter: only importance moves
   readStatus();
 }
@@ -202,7 +209,7 @@ void ProgressiveSolver::look(const Camera& camera, double aspect) {
 unsigned ProgressiveSolver::deliverStored() {
   const unsigned n = unsigned(std::min<std::size_t>(settings_.shootersPerPass, perspective_->deliveriesLeft()));
   perspective_->describeDeliveries(n, control_);
-  itemBuffer_->render(control_);
+  renderItemBuffer();
   gatherPass(Receivers::Entering);
   deliveryShots_ += n;
   if (perspective_->deliveriesLeft() == 0) {
@@ -249,10 +256,15 @@ void ProgressiveSolver::gatherPass(Receivers receivers) {
   }
   state_.radiosity.bindImage(slot::IMAGE_RADIOSITY, GL_READ_WRITE);
   state_.deltaB.bindImage(slot::IMAGE_DELTA_B, GL_READ_WRITE);
-  itemBuffer_->bindForLookup(state_, control_, shapes_);
+  if (itemBuffer_)
+    itemBuffer_->bindForLookup(state_, control_, shapes_);
+  else
+    bindShooterLookup(state_, control_, shapes_);
   if (refinesNear()) {
     nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODES);
     nodeStats_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODE_STATS);
+  }
+  if (tracesBvh()) {
     bvhNodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_NODES);
     bvhTriangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
   }
@@ -328,7 +340,7 @@ void ProgressiveSolver::runPasses(unsigned passes) {
     if (timed) timer_.mark(kSelect);
     selectPass();
     if (timed) timer_.mark(kItemBuffer);
-    itemBuffer_->render(control_);
+    renderItemBuffer();
     if (timed) timer_.mark(kGather);
     gatherPass(Receivers::InView);  // everyone receives when not perspective-driven
     if (timed) timer_.stop(), ++timed_;

@@ -21,6 +21,14 @@
 
 namespace hemirad {
 
+// How the gather decides whether a receiver sees a shooter's origin (docs/design.md#visibility).
+enum class Visibility {
+  ItemBuffer,  // seed 003: the shooter's item buffer nominates occluders, exact segment tests decide
+  Bvh,         // exact segment tests through the scene's BVH; no item buffer is drawn
+};
+
+inline const char* visibilityName(Visibility v) { return v == Visibility::Bvh ? "bvh" : "item-buffer"; }
+
 struct ProgressiveSettings {
   // The item buffer and shooters start as the default preset's, `fast` (src/solver/Presets.h).
   int itemSubdivision = kFastPlan.itemSubdivision;  // 1-to-4 splits of the item mesh
@@ -31,6 +39,7 @@ struct ProgressiveSettings {
   int shootLevel = kFastPlan.shootLevel;  // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
   double refineNear = kFastPlan.refineNear;  // receivers nearer than this many shooter sides see its parts (0: off)
   std::string preset{kDefaultPreset};        // the preset the five above started from (the report names it)
+  Visibility visibility = Visibility::ItemBuffer;
   ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel, refineNear}; }
   // Starts from preset `name` (InputError for an unknown name): its five values and its name.
   void usePreset(std::string_view name) {
@@ -95,8 +104,9 @@ class ProgressiveSolver final : public Solver {
   std::vector<float> convergenceHistory() const override;
   std::vector<std::uint8_t> saveState() const override;  // the control block's status and history
   SolveStatus restoreState(std::span<const std::uint8_t> bytes) override;
-  std::size_t itemTriangles() const { return itemBuffer_->triangles(); }
-  std::size_t itemPixels() const { return itemBuffer_->pixelsPerShooter(); }
+  // Triangles and pixels one shooter's item buffer draws (0 with --visibility bvh: none is drawn).
+  std::size_t itemTriangles() const { return itemBuffer_ ? itemBuffer_->triangles() : 0; }
+  std::size_t itemPixels() const { return itemBuffer_ ? itemBuffer_->pixelsPerShooter() : 0; }
   std::size_t shooterBlocks() const { return blockCount_; }
   // Shooter-tree nodes whose shape is past the piece budget (kMaxShapePieces): the disc form factor.
   std::size_t discShapes() const { return discShapes_; }
@@ -119,7 +129,9 @@ class ProgressiveSolver final : public Solver {
   void setUpReduction(unsigned keep, const gl::Defines& defines);
   void setUpControl(const StopRule& stop, unsigned keep);
   bool refinesNear() const { return settings_.refineNear > 0 && treeDepth_ > 0; }
-  void setUpRefinement(gl::Defines& gatherDefines);
+  bool tracesBvh() const { return refinesNear() || settings_.visibility == Visibility::Bvh; }
+  void setUpBvh(gl::Defines& gatherDefines);
+  void renderItemBuffer();                       // the pass's item buffers, unless visibility is traced
   void selectPass(bool importanceOnly = false);  // the stats, then the rankings and choices
   void rankPass(Rank rank, bool importanceShooters);
   void gatherPass(Receivers receivers);
@@ -146,11 +158,11 @@ class ProgressiveSolver final : public Solver {
   gl::Program reduce_, select_, gather_;
   gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
   std::size_t discShapes_ = 0;
-  gl::Buffer shapes_;                   // per node: its exact shape (shapeTable), what the gather integrates over
-  int treeDepth_ = 0;                   // levels below the deepest block
-  gl::Buffer bvhNodes_, bvhTriangles_;  // the scene's BVH: exact visibility near shooters (refine_near.glsl)
-  std::unique_ptr<ItemBuffer> itemBuffer_;
-  std::unique_ptr<ImportanceView> view_;          // importance-driven solves only
+  gl::Buffer shapes_;                       // per node: its exact shape (shapeTable), what the gather integrates over
+  int treeDepth_ = 0;                       // levels below the deepest block
+  gl::Buffer bvhNodes_, bvhTriangles_;      // the scene's BVH: exact visibility (near shooters, or --visibility bvh)
+  std::unique_ptr<ItemBuffer> itemBuffer_;  // none with --visibility bvh
+  std::unique_ptr<ImportanceView> view_;    // importance-driven solves only
   std::unique_ptr<PerspectiveView> perspective_;  // perspective-driven solves only
   unsigned importanceShots_ = 0, deliveryShots_ = 0;
   std::vector<gl::Buffer> levels_;  // outputs of the parallel reduction levels (large scenes)

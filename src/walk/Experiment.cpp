@@ -194,8 +194,8 @@ int runExperiment(ExperimentOptions o) {
     if (!std::filesystem::exists(pathFile))
       throw InputError(fmt::format("{}: no camera path {} beside it", path, pathFile));
     const CameraPath cameraPath = readCameraPath(pathFile, resolveCamera(scene, std::nullopt), scene.unitScale);
-    const Atlas atlas =
-        buildAtlas(scene, Discretisation{.elements = o.elements, .chartAngle = 0}, backend->maxTextureSize());
+    const Atlas atlas = buildAtlas(scene, Discretisation{.texelSize = {}, .elements = o.elements, .chartAngle = 0},
+                                   backend->maxTextureSize());
     ConvergedViews converged(scene, atlas, o.progressive, o.referenceConvergence, true);
     names.push_back(name);
     for (const std::string& algorithm : o.algorithms) {

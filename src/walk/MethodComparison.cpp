@@ -74,7 +74,8 @@ int runMethodComparison(MethodComparisonOptions o) {
     const Scene scene = loadScene(path);
     validateSolvable(scene);
     // Both methods share the default atlas.
-    const Atlas atlas = buildAtlas(scene, Discretisation{.elements = o.elements}, backend->maxTextureSize());
+    const Atlas atlas =
+        buildAtlas(scene, Discretisation{.texelSize = {}, .elements = o.elements}, backend->maxTextureSize());
     ProgressiveSettings p = o.progressive;
     p.shootLevel = 0;  // one-texel shooters, as stochastic iteration's: the same discrete operator
     p.timings = gl::TimerMode::Off;

@@ -34,6 +34,7 @@ class ProgressiveRun final : public AtlasRun {
     run.itemResolution = solver_.plan().itemResolution;
     run.shootLevel = settings_.shootLevel;
     run.refineNear = settings_.refineNear;
+    run.visibility = visibilityName(settings_.visibility);
     run.shootersPerPass = settings_.shootersPerPass;
     run.importanceShots = solver_.importanceShots();
     run.deliveryShots = solver_.deliveryShots();
@@ -93,6 +94,7 @@ class ProgressiveMethod final : public AtlasMethod {
             projectionFlag(p.projection),
             bindFlag("--shoot-level", p.shootLevel, options::defaultText("--shoot-level")),
             bindFlag("--refine-near", p.refineNear, options::defaultText("--refine-near")),
+            bindFlag("--visibility", p.visibility),
             bindFlag("--algorithm", p.algorithm),
             bindFlag("--fov-decay", p.fovDecayShots),
             bindFlag("--shooters-per-pass", p.shootersPerPass),
@@ -123,6 +125,8 @@ class ProgressiveMethod final : public AtlasMethod {
                                {"refine_near", p.refineNear},
                                {"shooters_per_pass", p.shootersPerPass}};
     if (p.algorithm == Algorithm::Perspective) identity["fov_decay"] = p.fovDecayShots;  // 0: the default
+    if (p.visibility == Visibility::Bvh)
+      identity["visibility"] = visibilityName(p.visibility);  // older checkpoints: the item buffer's
     return identity;
   }
   const StopRule& stop() const override { return settings_.stop; }
