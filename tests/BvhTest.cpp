@@ -67,7 +67,41 @@ TEST_CASE("BVH nodes bound their triangles and every triangle lies in exactly on
   }
   REQUIRE(seen.size() == bvh.triangles().size());
   CHECK(std::set<std::uint32_t>(seen.begin(), seen.end()).size() == seen.size());
-  CHECK(bvh.depth() <= int(std::ceil(std::log2(double(bvh.triangles().size())))) + 1);  // median split: balanced
+  CHECK(bvh.depth() <= Bvh::kMaxDepth);  // the shader's stack holds the deepest path
+}
+
+TEST_CASE("The BVH keeps a room's walls near its root however many small triangles furnish it (surface-area heuristic)",
+          "[bvh]") {
+  // The Cornell box with a 100 x 100-quad patch (20,000 triangles) on its floor. A median split
+  // would put each wall triangle in a leaf about log2(20,038 / 2) = 14 levels down, under boxes as
+  // large as the room, which every segment through the patch would then enter.
+  Scene scene = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  const int m = test::material(scene, 0.5, 0.0), object = scene.addObject("patch");
+  for (int j = 0; j < 100; ++j)
+    for (int i = 0; i < 100; ++i)
+      scene.addPolygon(test::rectangle({100.0 + i, 0.5, 100.0 + j}, {0, 0, 1}, {1, 0, 0}, 1, 1), m, object);
+  const Bvh bvh(scene);
+  REQUIRE(bvh.triangles().size() == 20038);
+  int deepestWall = 0, deepestPatch = 0;
+  std::vector<std::pair<std::uint32_t, int>> stack{{0u, 0}};
+  while (!stack.empty()) {
+    const auto [n, depth] = stack.back();
+    stack.pop_back();
+    const BvhNode& node = bvh.nodes()[n];
+    const std::uint32_t first = floatBitsToUint(node.lo.w), count = floatBitsToUint(node.hi.w);
+    if (count == 0) {
+      stack.push_back({n + 1, depth + 1}), stack.push_back({first, depth + 1});
+      continue;
+    }
+    for (std::uint32_t t = first; t < first + count; ++t) {
+      const bool wall = floatBitsToUint(bvh.triangles()[t].v0.w) < 19;  // the box's 19 polygons come first
+      (wall ? deepestWall : deepestPatch) = std::max(wall ? deepestWall : deepestPatch, depth);
+    }
+  }
+  INFO("deepest wall leaf " << deepestWall << ", deepest patch leaf " << deepestPatch << ", depth " << bvh.depth());
+  CHECK(deepestWall <= 10);   // measured 8
+  CHECK(deepestPatch >= 13);  // the patch itself is as deep as halving 20,000 triangles takes
+  CHECK(bvh.depth() <= Bvh::kMaxDepth);
 }
 
 TEST_CASE("Keller's level plan fills the VPL budget exactly with geometrically fewer paths per bounce", "[bvh]") {

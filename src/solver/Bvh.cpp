@@ -1,6 +1,8 @@
 #include "src/solver/Bvh.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -71,8 +73,71 @@ Bvh::Bvh(const Scene& scene) {
   if (depth_ > kMaxDepth) fail("the scene's BVH is {} levels deep, more than the tracer's {}", depth_, kMaxDepth);
 }
 
-// Node of order[begin, end); returns its index. Children are split at the median centroid
-// along the longest axis of the centroids' bounds: depth log2(n), whatever the scene.
+namespace {
+
+constexpr int kBins = 16;
+
+float halfArea(glm::vec3 lo, glm::vec3 hi) {
+  const glm::vec3 e = glm::max(hi - lo, glm::vec3(0.0f));
+  return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+}  // namespace
+
+// The binned surface-area heuristic (Wald 2007) over order[begin, end): kBins bins of the
+// centroids' bounds on each axis, the boundary that minimises A_left N_left + A_right N_right.
+// Returns the first index of the right part after partitioning, or `begin` when no boundary
+// separates the centroids. A room's walls span it whole: where a median split buries them in
+// leaves whose every ancestor is then as large as the room, the heuristic cuts them off near the
+// root, so a segment through a furnished corner visits few boxes.
+std::size_t Bvh::splitBySah(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end, glm::vec3 clo,
+                            glm::vec3 chi) {
+  struct Bin {
+    glm::vec3 lo{std::numeric_limits<float>::max()}, hi{-std::numeric_limits<float>::max()};
+    std::size_t count = 0;
+  };
+  float best = std::numeric_limits<float>::max();
+  int bestAxis = -1, bestBin = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const float extent = chi[axis] - clo[axis];
+    if (!(extent > 0.0f)) continue;
+    std::array<Bin, kBins> bins;
+    for (std::size_t i = begin; i < end; ++i) {
+      const BvhTriangle& t = triangles_[order[i]];
+      const glm::vec3 a(t.v0), b = a + glm::vec3(t.e1), c = a + glm::vec3(t.e2);
+      Bin& bin = bins[binOf(centroids_[order[i]][axis], clo[axis], extent)];
+      bin.lo = glm::min(bin.lo, glm::min(a, glm::min(b, c))), bin.hi = glm::max(bin.hi, glm::max(a, glm::max(b, c)));
+      ++bin.count;
+    }
+    std::array<float, kBins> rightCost{};  // rightCost[k]: bins k.. as one child
+    Bin right;
+    for (int k = kBins - 1; k > 0; --k) {
+      right.lo = glm::min(right.lo, bins[k].lo), right.hi = glm::max(right.hi, bins[k].hi),
+      right.count += bins[k].count;
+      rightCost[k] = right.count ? halfArea(right.lo, right.hi) * float(right.count) : 0.0f;
+    }
+    Bin left;
+    for (int k = 1; k < kBins; ++k) {  // boundary before bin k
+      left.lo = glm::min(left.lo, bins[k - 1].lo), left.hi = glm::max(left.hi, bins[k - 1].hi);
+      left.count += bins[k - 1].count;
+      if (left.count == 0 || left.count == end - begin) continue;
+      const float cost = halfArea(left.lo, left.hi) * float(left.count) + rightCost[k];
+      if (cost < best) best = cost, bestAxis = axis, bestBin = k;
+    }
+  }
+  if (bestAxis < 0) return begin;
+  const float lo = clo[bestAxis], extent = chi[bestAxis] - clo[bestAxis];
+  const auto mid = std::stable_partition(order.begin() + long(begin), order.begin() + long(end), [&](std::uint32_t i) {
+    return binOf(centroids_[i][bestAxis], lo, extent) < bestBin;
+  });
+  return std::size_t(mid - order.begin());
+}
+
+int Bvh::binOf(float c, float lo, float extent) { return std::min(kBins - 1, int(float(kBins) * (c - lo) / extent)); }
+
+// Node of order[begin, end); returns its index. Children are split by the surface-area heuristic
+// (splitBySah), or at the median centroid along the longest axis of the centroids' bounds where the
+// heuristic finds no split or the levels left (kMaxDepth) could not hold a median split's.
 int Bvh::build(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end, int depth) {
   depth_ = std::max(depth_, depth);
   const int index = int(nodes_.size());
@@ -92,9 +157,17 @@ int Bvh::build(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t
     nodes_[index].hi.w = uintBitsToFloat(std::uint32_t(end - begin));
     return index;
   }
+  const double medianLevels = std::ceil(std::log2(double(end - begin) / kLeafSize));
+  std::size_t mid = depth + int(medianLevels) + 1 < kMaxDepth ? splitBySah(order, begin, end, clo, chi) : begin;
+  if (mid > begin) {
+    build(order, begin, mid, depth + 1);
+    const int second = build(order, mid, end, depth + 1);
+    nodes_[index].lo.w = uintBitsToFloat(std::uint32_t(second));
+    return index;
+  }
   const glm::vec3 extent = chi - clo;
   const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-  const std::size_t mid = begin + (end - begin) / 2;
+  mid = begin + (end - begin) / 2;
   std::nth_element(order.begin() + long(begin), order.begin() + long(mid), order.begin() + long(end),
                    [&](std::uint32_t a, std::uint32_t b) {
                      return centroids_[a][axis] < centroids_[b][axis] ||

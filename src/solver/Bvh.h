@@ -1,5 +1,5 @@
-// A bounding-volume hierarchy over the scene's triangles, built on the CPU (median split on the
-// longest axis of the centroids) and flattened depth-first into std430 arrays that the VPL
+// A bounding-volume hierarchy over the scene's triangles, built on the CPU (binned surface-area
+// heuristic, median splits where it finds none) and flattened depth-first into std430 arrays that the VPL
 // tracer (shaders/bvh.glsl) walks. Every struct is whole vec4s: drivers pad smaller members
 // differently (seed 002 §4.1), vec4s they cannot. The CPU traversal mirrors the shader's, for tests.
 #pragma once
@@ -48,6 +48,9 @@ class Bvh {
 
  private:
   int build(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end, int depth);
+  std::size_t splitBySah(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end, glm::vec3 clo,
+                         glm::vec3 chi);
+  static int binOf(float c, float lo, float extent);
   std::vector<BvhNode> nodes_;
   std::vector<BvhTriangle> triangles_;
   std::vector<glm::vec3> centroids_;
