@@ -39,6 +39,7 @@ struct BenchRow {
   double texelUse = 0;  // elements / atlas texels
   std::size_t elements = 0, itemTriangles = 0, itemPixels = 0, shooterBlocks = 0;
   int itemResolution = 0;
+  std::string visibility;              // as the solver resolved --visibility
   std::optional<double> gpuMemoryMiB;  // what the solve holds on the device, where the driver says
   std::size_t allocatedBytes = 0;      // the most the solve's buffers and textures held (gl::allocatedBytes)
   std::size_t residentBytes = 0;       // the process's resident peak after the row (VmHWM)
@@ -140,6 +141,7 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   row.itemPixels = solver.itemPixels();
   row.shooterBlocks = solver.shooterBlocks();
   row.itemResolution = solver.plan().itemResolution;
+  row.visibility = visibilityName(solver.visibility());
   std::vector<glm::vec4> B = state.readRadiosity();
   row.hash = radiosityHash(atlas, B);
   row.objects = objectRadiosity(scene, atlas, B);
@@ -241,7 +243,8 @@ std::string printedSetting(int value, int autoValue, const char* suffix = "") {
 // makes the fragments more) and gather texel updates, per second of their pass.
 std::string tableHeader(const BenchOptions& o) {
   return fmt::format(
-      "| scene | polygons | triangles | elements | texel use | shooter blocks | item res | shooters/pass | shots | "
+      "| scene | polygons | triangles | elements | texel use | shooter blocks | item res (bvh: traced) | shooters/pass "
+      "| shots | "
       "time to {:.0f}% (ms) | ms/shot | GPU MiB | GPU alloc MiB (B/element, B/triangle) | resident MiB "
       "(B/element, B/triangle) | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s "
       "|{}\n"
@@ -266,10 +269,11 @@ std::string rowMarkdown(const BenchRow& r, const Ceilings* ceiling) {
   return fmt::format(
       "| {} | {} | {} | {} | {:.1f} % | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} "
       "| {:.3g} | {:.3g} | {:.3g} |{}\n",
-      r.scene, r.size.polygons, r.size.triangles, r.elements, 100 * r.texelUse, r.shooterBlocks, r.itemResolution,
-      r.shootersPerPass, r.shots, r.solveMs, r.msPerShot, memory, perUnit(r.allocatedBytes), perUnit(r.residentBytes),
-      r.split.itemBuffer, r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
-      r.gatherUpdatesPerSecond, fractions);
+      r.scene, r.size.polygons, r.size.triangles, r.elements, 100 * r.texelUse, r.shooterBlocks,
+      r.visibility == "bvh" ? std::string("bvh") : std::to_string(r.itemResolution), r.shootersPerPass, r.shots,
+      r.solveMs, r.msPerShot, memory, perUnit(r.allocatedBytes), perUnit(r.residentBytes), r.split.itemBuffer,
+      r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond, r.gatherUpdatesPerSecond,
+      fractions);
 }
 
 nlohmann::json rowJson(const BenchRow& r) {
@@ -280,6 +284,7 @@ nlohmann::json rowJson(const BenchRow& r) {
           {"elements", r.elements},
           {"shooter_blocks", r.shooterBlocks},
           {"item_resolution", r.itemResolution},
+          {"visibility", r.visibility},
           {"shooters_per_pass", r.shootersPerPass},
           {"shots", r.shots},
           {"convergence", r.convergence},

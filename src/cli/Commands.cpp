@@ -122,6 +122,7 @@ void Commands::addValidate() {
   add(v, "--gpu", validate.backend.gpu);
   add(v, "--report", validate.report);
   addSwitch(v, "--solution", validate.solution);
+  add(v, "--visibility", validate.visibility, "item-buffer");
 }
 
 void Commands::addView() {

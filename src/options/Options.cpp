@@ -211,12 +211,14 @@ std::vector<Flag> sceneAndSolverFlags() {
        CLI::Range(0.0, 16.0)},
       {"--visibility", "HOW",
        "Whether a receiver sees a shooter: item-buffer (seed 003: the shooter's item buffer nominates occluders, "
-       "exact segment tests decide; an occluder thinner than a pixel can be missed) or bvh (exact segment tests "
+       "exact segment tests decide; an occluder thinner than a pixel can be missed), bvh (exact segment tests "
        "through the scene's BVH and no item buffer: nothing missed, and no shot draws the scene, which on "
-       "scenes of many triangles is most of a shot; docs/design.md#visibility)",
-       enumeration<Visibility>({{visibilityName(Visibility::ItemBuffer), Visibility::ItemBuffer},
+       "scenes of many triangles is most of a shot) or auto (bvh where the item mesh has at least as many "
+       "triangles as there are elements: furnished scenes; else item-buffer); docs/design.md#visibility",
+       enumeration<Visibility>({{visibilityName(Visibility::Auto), Visibility::Auto},
+                                {visibilityName(Visibility::ItemBuffer), Visibility::ItemBuffer},
                                 {visibilityName(Visibility::Bvh), Visibility::Bvh}}),
-       "item-buffer"},
+       "auto"},
       {"--direct", "MODE",
        "Camera images' direct light: looked up in the elements like the rest (atlas), or computed per pixel, exactly "
        "(per-pixel: Lambert's contour integral to each emitter with exact visibility, the solution giving only the "

@@ -13,6 +13,7 @@
 #include "gl/Limits.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
+#include "src/scene/ItemMesh.h"
 #include "src/solver/Bvh.h"
 #include "src/solver/Control.h"
 #include "src/solver/ShaderContract.h"
@@ -51,7 +52,9 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   setUpReduction(keep, defines);
 
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
-  if (settings.visibility == Visibility::ItemBuffer)
+  visibility_ = resolveVisibility(settings.visibility, itemTriangleCount(state.scene, settings.itemSubdivision),
+                                  state.atlas.elements);
+  if (visibility_ == Visibility::ItemBuffer)
     itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, plan_.itemResolution,
                                                state.farDistance, settings.projection,
                                                settings.shootersPerPass * (settings.importanceDriven() ? 2 : 1));
@@ -140,7 +143,7 @@ void ProgressiveSolver::setUpBvh(gl::Defines& gatherDefines) {
   bvhNodes_ = gl::Buffer(std::span<const BvhNode>(bvh.nodes()));
   bvhTriangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh.triangles()));
   if (refinesNear()) gatherDefines.push_back({"REFINE_NEAR", "1"});
-  if (settings_.visibility == Visibility::Bvh) gatherDefines.push_back({"BVH_VISIBILITY", "1"});
+  if (visibility_ == Visibility::Bvh) gatherDefines.push_back({"BVH_VISIBILITY", "1"});
 }
 
 void ProgressiveSolver::renderItemBuffer() {

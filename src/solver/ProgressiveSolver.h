@@ -23,11 +23,21 @@ namespace hemirad {
 
 // How the gather decides whether a receiver sees a shooter's origin (docs/design.md#visibility).
 enum class Visibility {
+  Auto,        // bvh where the item mesh has at least as many triangles as there are elements, else item-buffer
   ItemBuffer,  // seed 003: the shooter's item buffer nominates occluders, exact segment tests decide
   Bvh,         // exact segment tests through the scene's BVH; no item buffer is drawn
 };
 
-inline const char* visibilityName(Visibility v) { return v == Visibility::Bvh ? "bvh" : "item-buffer"; }
+inline const char* visibilityName(Visibility v) {
+  return v == Visibility::Bvh ? "bvh" : v == Visibility::ItemBuffer ? "item-buffer" : "auto";
+}
+// What Auto becomes: an item buffer costs a shot its triangles, the BVH each receiver a walk of
+// log(triangles) boxes, so past as many triangles as elements the walk is the cheaper (measured
+// on llvmpipe and the H200: docs/real-scenes.md#visibility-through-the-bvh).
+inline Visibility resolveVisibility(Visibility v, std::size_t triangles, std::size_t elements) {
+  if (v != Visibility::Auto) return v;
+  return triangles >= elements ? Visibility::Bvh : Visibility::ItemBuffer;
+}
 
 struct ProgressiveSettings {
   // The item buffer and shooters start as the default preset's, `fast` (src/solver/Presets.h).
@@ -39,7 +49,7 @@ struct ProgressiveSettings {
   int shootLevel = kFastPlan.shootLevel;  // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
   double refineNear = kFastPlan.refineNear;  // receivers nearer than this many shooter sides see its parts (0: off)
   std::string preset{kDefaultPreset};        // the preset the five above started from (the report names it)
-  Visibility visibility = Visibility::ItemBuffer;
+  Visibility visibility = Visibility::Auto;
   ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel, refineNear}; }
   // Starts from preset `name` (InputError for an unknown name): its five values and its name.
   void usePreset(std::string_view name) {
@@ -104,6 +114,7 @@ class ProgressiveSolver final : public Solver {
   std::vector<float> convergenceHistory() const override;
   std::vector<std::uint8_t> saveState() const override;  // the control block's status and history
   SolveStatus restoreState(std::span<const std::uint8_t> bytes) override;
+  Visibility visibility() const { return visibility_; }  // as resolved (never Auto)
   // Triangles and pixels one shooter's item buffer draws (0 with --visibility bvh: none is drawn).
   std::size_t itemTriangles() const { return itemBuffer_ ? itemBuffer_->triangles() : 0; }
   std::size_t itemPixels() const { return itemBuffer_ ? itemBuffer_->pixelsPerShooter() : 0; }
@@ -129,7 +140,7 @@ class ProgressiveSolver final : public Solver {
   void setUpReduction(unsigned keep, const gl::Defines& defines);
   void setUpControl(const StopRule& stop, unsigned keep);
   bool refinesNear() const { return settings_.refineNear > 0 && treeDepth_ > 0; }
-  bool tracesBvh() const { return refinesNear() || settings_.visibility == Visibility::Bvh; }
+  bool tracesBvh() const { return refinesNear() || visibility_ == Visibility::Bvh; }
   void setUpBvh(gl::Defines& gatherDefines);
   void renderItemBuffer();                       // the pass's item buffers, unless visibility is traced
   void selectPass(bool importanceOnly = false);  // the stats, then the rankings and choices
@@ -158,11 +169,12 @@ class ProgressiveSolver final : public Solver {
   gl::Program reduce_, select_, gather_;
   gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
   std::size_t discShapes_ = 0;
-  gl::Buffer shapes_;                       // per node: its exact shape (shapeTable), what the gather integrates over
-  int treeDepth_ = 0;                       // levels below the deepest block
-  gl::Buffer bvhNodes_, bvhTriangles_;      // the scene's BVH: exact visibility (near shooters, or --visibility bvh)
-  std::unique_ptr<ItemBuffer> itemBuffer_;  // none with --visibility bvh
-  std::unique_ptr<ImportanceView> view_;    // importance-driven solves only
+  gl::Buffer shapes_;                   // per node: its exact shape (shapeTable), what the gather integrates over
+  int treeDepth_ = 0;                   // levels below the deepest block
+  gl::Buffer bvhNodes_, bvhTriangles_;  // the scene's BVH: exact visibility (near shooters, or --visibility bvh)
+  Visibility visibility_;
+  std::unique_ptr<ItemBuffer> itemBuffer_;        // none with --visibility bvh
+  std::unique_ptr<ImportanceView> view_;          // importance-driven solves only
   std::unique_ptr<PerspectiveView> perspective_;  // perspective-driven solves only
   unsigned importanceShots_ = 0, deliveryShots_ = 0;
   std::vector<gl::Buffer> levels_;  // outputs of the parallel reduction levels (large scenes)

@@ -4,17 +4,35 @@
 
 #include "gl/Debug.h"
 #include "gl/State.h"
+#include "src/solver/Bvh.h"
 #include "src/solver/Control.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
-FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int resolution, Projection projection)
+namespace {
+
+gl::Defines probeDefines(Projection projection, bool traced) {
+  gl::Defines d = itemBufferDefines(projection);
+  if (traced) d.push_back({"BVH_VISIBILITY", "1"});
+  return d;
+}
+
+}  // namespace
+
+FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int resolution, Projection projection,
+                                 bool traced)
     : state_(state),
       itemBuffer_(state.scene, subdivision, resolution, state.farDistance, projection),
-      program_(computeProgram("formfactor_probe.comp", itemBuffer_.defines())),
+      program_(computeProgram("formfactor_probe.comp", probeDefines(projection, traced))),
       control_(sizeof(ControlBlock)),
+      traced_(traced),
       result_(GL_RGBA32F, state.atlas.width, state.atlas.height) {
+  if (traced) {
+    const Bvh bvh(state.scene);
+    bvhNodes_ = gl::Buffer(std::span<const BvhNode>(bvh.nodes()));
+    bvhTriangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh.triangles()));
+  }
   program_.set("farDistance", float(state.farDistance));
   program_.set("atlasSize", state.atlas.width, state.atlas.height);
 }
@@ -37,8 +55,14 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
 
   gl::finish();
   auto t0 = std::chrono::steady_clock::now();
-  itemBuffer_.render(control_);
-  itemBuffer_.bindForLookup(state_, control_, shape_);
+  if (traced_) {
+    bindShooterLookup(state_, control_, shape_);
+    bvhNodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_NODES);
+    bvhTriangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
+  } else {
+    itemBuffer_.render(control_);
+    itemBuffer_.bindForLookup(state_, control_, shape_);
+  }
   result_.bindImage(slot::IMAGE_PROBE, GL_WRITE_ONLY);
   program_.use();
   gl::Program::dispatch(gl::groupsFor(unsigned(a.width), 16), gl::groupsFor(unsigned(a.height), 16));

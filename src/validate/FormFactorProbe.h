@@ -1,6 +1,6 @@
 // The GPU side of validation: for one shooter element, the item buffer and each receiver's
 // visibility and exact form factor exactly as the gather computes them (shaders/visibility.glsl),
-// read back instead of applied.
+// read back instead of applied; `traced`: the visibility of --visibility bvh, no item buffer drawn.
 #pragma once
 #include <memory>
 #include <vector>
@@ -16,7 +16,8 @@ struct ProbeSample {
 
 class FormFactorProbe {
  public:
-  FormFactorProbe(const SolverState& state, int subdivision, int resolution, Projection projection);
+  FormFactorProbe(const SolverState& state, int subdivision, int resolution, Projection projection,
+                  bool traced = false);
   std::vector<ProbeSample> fromShooter(std::size_t shooterTexel);
   std::size_t itemTriangles() const { return itemBuffer_.triangles(); }
   double gpuMilliseconds() const { return gpuMs_; }  // item buffer + probe, synchronised
@@ -26,6 +27,8 @@ class FormFactorProbe {
   ItemBuffer itemBuffer_;
   gl::Program program_;
   gl::Buffer control_, shape_;
+  bool traced_;
+  gl::Buffer bvhNodes_, bvhTriangles_;  // traced only
   gl::Texture result_;
   double gpuMs_ = 0;
 };

@@ -223,6 +223,17 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
         }
       }
     }
+  if (o.visibility == Visibility::Bvh) {                              // the same pairs through the BVH's segment tests
+    FormFactorProbe probe(state, 0, 16, Projection::Hemicube, true);  // (its item buffer is not drawn)
+    LevelStats st;
+    st.traced = true;
+    LevelTally tally(objects);
+    for (std::size_t k = 0; k < shooters.size(); ++k)
+      tally.add(probe.fromShooter(shooters[k]), reference[k], shooters[k], objectOf, atlas, st);
+    tally.finish(st);
+    st.gpuMs = probe.gpuMilliseconds();
+    v.levels.push_back(st);
+  }
   v.figureShooter = shooters[figureIndex];
   v.figureExact = reference[figureIndex];
   if (o.solution) compareSolution(scene, atlas, exact.visibility(), o, v);
@@ -231,6 +242,7 @@ Validation validate(const Scene& scene, const Atlas& atlas, const ValidateOption
 }
 
 std::string configName(const LevelStats& s) {
+  if (s.traced) return "bvh (traced)";
   return fmt::format("{} {}^2", projectionName(s.projection), s.itemResolution);
 }
 
@@ -262,7 +274,8 @@ int runValidate(const ValidateOptions& o) {
     using nlohmann::json;
     json levels = json::array(), ffs = json::array();
     for (const LevelStats& s : v.levels)
-      levels.push_back({{"hemisphere", projectionName(s.projection)},
+      levels.push_back({{"visibility", s.traced ? "bvh" : "item-buffer"},
+                        {"hemisphere", projectionName(s.projection)},
                         {"item_resolution", s.itemResolution},
                         {"item_subdivision", s.itemSubdivision},
                         {"item_triangles", s.itemTriangles},

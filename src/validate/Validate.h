@@ -11,6 +11,7 @@
 #include "src/scene/Camera.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/ItemBuffer.h"
+#include "src/solver/ProgressiveSolver.h"
 #include "src/solver/SolverState.h"
 #include "src/validate/ExactReference.h"
 #include "src/validate/FormFactorProbe.h"
@@ -31,6 +32,8 @@ struct ValidateOptions {
   std::string report, figures;
   std::string figureSize;  // --figure-size (parseFigureSize)
   bool solution = false;   // also compare a converged GPU solve with the dense solution
+  // --visibility bvh: also the traced test of the solver's --visibility bvh (one configuration, `bvh`).
+  Visibility visibility = Visibility::ItemBuffer;
   double solutionConvergence = 0.999;
 };
 
@@ -38,6 +41,7 @@ struct LevelStats {
   Projection projection = Projection::Orthographic;
   int itemResolution = 0;
   int itemSubdivision = 0;
+  bool traced = false;  // the BVH's segment tests, not an item buffer
   std::size_t itemTriangles = 0, texelPairs = 0, falseVisible = 0, falseHidden = 0;
   double visibilityAgreement = 0, ffRelErrorMedian = 0, ffRelErrorMean = 0, ffRelErrorP95 = 0, ffRelErrorMax = 0;
   double gpuMs = 0;

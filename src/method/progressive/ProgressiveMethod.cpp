@@ -34,7 +34,7 @@ class ProgressiveRun final : public AtlasRun {
     run.itemResolution = solver_.plan().itemResolution;
     run.shootLevel = settings_.shootLevel;
     run.refineNear = settings_.refineNear;
-    run.visibility = visibilityName(settings_.visibility);
+    run.visibility = visibilityName(solver_.visibility());
     run.shootersPerPass = settings_.shootersPerPass;
     run.importanceShots = solver_.importanceShots();
     run.deliveryShots = solver_.deliveryShots();
@@ -125,8 +125,7 @@ class ProgressiveMethod final : public AtlasMethod {
                                {"refine_near", p.refineNear},
                                {"shooters_per_pass", p.shootersPerPass}};
     if (p.algorithm == Algorithm::Perspective) identity["fov_decay"] = p.fovDecayShots;  // 0: the default
-    if (p.visibility == Visibility::Bvh)
-      identity["visibility"] = visibilityName(p.visibility);  // older checkpoints: the item buffer's
+    if (p.visibility != Visibility::Auto) identity["visibility"] = visibilityName(p.visibility);
     return identity;
   }
   const StopRule& stop() const override { return settings_.stop; }
