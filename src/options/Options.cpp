@@ -213,8 +213,9 @@ std::vector<Flag> sceneAndSolverFlags() {
        "Whether a receiver sees a shooter: item-buffer (seed 003: the shooter's item buffer nominates occluders, "
        "exact segment tests decide; an occluder thinner than a pixel can be missed), bvh (exact segment tests "
        "through the scene's BVH and no item buffer: nothing missed, and no shot draws the scene, which on "
-       "scenes of many triangles is most of a shot) or auto (bvh where the item mesh has at least as many "
-       "triangles as there are elements: furnished scenes; else item-buffer); docs/design.md#visibility",
+       "scenes of many triangles is most of a shot) or auto (bvh where the scene has at least as many triangles "
+       "as there are elements, furnished scenes, and no particular item buffer is asked for: the fast plan's "
+       "projection, level and resolution; else item-buffer); docs/design.md#visibility",
        enumeration<Visibility>({{visibilityName(Visibility::Auto), Visibility::Auto},
                                 {visibilityName(Visibility::ItemBuffer), Visibility::ItemBuffer},
                                 {visibilityName(Visibility::Bvh), Visibility::Bvh}}),

@@ -52,8 +52,11 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   setUpReduction(keep, defines);
 
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.
-  visibility_ = resolveVisibility(settings.visibility, itemTriangleCount(state.scene, settings.itemSubdivision),
-                                  state.atlas.elements);
+  const bool plannedItemBuffer = settings.projection == kFastPlan.projection &&
+                                 settings.itemSubdivision == kFastPlan.itemSubdivision &&
+                                 settings.itemResolution == kFastPlan.itemResolution;
+  visibility_ = resolveVisibility(settings.visibility, itemTriangleCount(state.scene, 0), state.atlas.elements,
+                                  plannedItemBuffer);
   if (visibility_ == Visibility::ItemBuffer)
     itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, plan_.itemResolution,
                                                state.farDistance, settings.projection,

@@ -23,7 +23,7 @@ namespace hemirad {
 
 // How the gather decides whether a receiver sees a shooter's origin (docs/design.md#visibility).
 enum class Visibility {
-  Auto,        // bvh where the item mesh has at least as many triangles as there are elements, else item-buffer
+  Auto,        // resolveVisibility: bvh on scenes of many triangles, unless an item buffer is asked for
   ItemBuffer,  // seed 003: the shooter's item buffer nominates occluders, exact segment tests decide
   Bvh,         // exact segment tests through the scene's BVH; no item buffer is drawn
 };
@@ -32,11 +32,13 @@ inline const char* visibilityName(Visibility v) {
   return v == Visibility::Bvh ? "bvh" : v == Visibility::ItemBuffer ? "item-buffer" : "auto";
 }
 // What Auto becomes: an item buffer costs a shot its triangles, the BVH each receiver a walk of
-// log(triangles) boxes, so past as many triangles as elements the walk is the cheaper (measured
-// on llvmpipe and the H200: docs/real-scenes.md#visibility-through-the-bvh).
-inline Visibility resolveVisibility(Visibility v, std::size_t triangles, std::size_t elements) {
+// log(triangles) boxes, so past as many scene triangles as elements the walk is the cheaper
+// (measured on llvmpipe and the H200: docs/real-scenes.md#visibility-through-the-bvh). But a
+// particular item buffer asked for (a projection, item-mesh level or resolution other than the
+// fast plan's: seed 003's, the reference's, an artifact study's) is drawn.
+inline Visibility resolveVisibility(Visibility v, std::size_t triangles, std::size_t elements, bool plannedItemBuffer) {
   if (v != Visibility::Auto) return v;
-  return triangles >= elements ? Visibility::Bvh : Visibility::ItemBuffer;
+  return plannedItemBuffer && triangles >= elements ? Visibility::Bvh : Visibility::ItemBuffer;
 }
 
 struct ProgressiveSettings {
