@@ -52,6 +52,19 @@ TEST_CASE("Visibility traced through the BVH gives the exact item buffer's solut
   CHECK(worst < 0.001);
 }
 
+TEST_CASE(
+    "Auto visibility traces where the scene has at least as many triangles as elements, unless an item buffer "
+    "is asked for",
+    "[heavy][cli][visibility]") {
+  const std::string cornell = "scenes/cornell/cornell.obj";
+  const nlohmann::json coarse = visibilitySolve(cornell, "--elements 20 --shots 16");  // 19 elements, 38 triangles
+  CHECK(coarse["elements"].get<int>() <= 38);
+  CHECK(coarse["visibility"] == "bvh");
+  CHECK(visibilitySolve(cornell, "--elements 20 --shots 16 --item-res 64")["visibility"] == "item-buffer");
+  CHECK(visibilitySolve(cornell, "--elements 20 --shots 16 --preset seed003")["visibility"] == "item-buffer");
+  CHECK(visibilitySolve(cornell, "--elements 300 --shots 16")["visibility"] == "item-buffer");
+}
+
 TEST_CASE("Traced visibility hides nothing inside a closed box: the furnace gives 2E", "[heavy][cli][visibility]") {
   // E = 1, rho = 0.5 on every wall: B = E / (1 - rho) = 2 once converged; at 0.9995, 0.05 % is
   // unshot. A pair falsely hidden loses its transfer, and the mean falls below.
