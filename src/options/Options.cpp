@@ -215,7 +215,8 @@ std::vector<Flag> sceneAndSolverFlags() {
        "through the scene's BVH and no item buffer: nothing missed, and no shot draws the scene, which on "
        "scenes of many triangles is most of a shot) or auto (bvh where the scene has at least as many triangles "
        "as there are elements, furnished scenes, and no particular item buffer is asked for: the fast plan's "
-       "projection, level and resolution; else item-buffer); docs/design.md#visibility",
+       "projection, level and resolution; else item-buffer); validate: bvh adds the traced test as a "
+       "configuration beside the item buffers; docs/design.md#visibility",
        enumeration<Visibility>({{visibilityName(Visibility::Auto), Visibility::Auto},
                                 {visibilityName(Visibility::ItemBuffer), Visibility::ItemBuffer},
                                 {visibilityName(Visibility::Bvh), Visibility::Bvh}}),

@@ -29,15 +29,12 @@ DirectLight::DirectLight(const Scene& scene, double farDistance, int grid)
   const std::vector<glm::vec4> pieces = emitterPieces(scene);
   pieceCount_ = unsigned(pieces.size() / kShapeStride);
   if (!pieces.empty()) pieces_ = gl::Buffer(std::span<const glm::vec4>(pieces));
-  const Bvh bvh(scene);
-  nodes_ = gl::Buffer(std::span<const BvhNode>(bvh.nodes()));
-  triangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh.triangles()));
+  bvh_ = BvhBuffers(Bvh(scene));
 }
 
 void DirectLight::bind(const gl::Program& program) const {
   if (pieceCount_) pieces_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
-  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_NODES);
-  triangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
+  bvh_.bind();
   program.set("emitterPieces", pieceCount_);
   program.set("directGrid", grid_);
   program.set("segmentEps", segmentEps_);

@@ -10,6 +10,7 @@
 #include "gl/Objects.h"
 #include "gl/Shader.h"
 #include "src/scene/Scene.h"
+#include "src/solver/BvhBuffers.h"
 
 namespace hemirad {
 
@@ -31,7 +32,8 @@ class DirectLight {
   void bind(const gl::Program& program) const;
 
  private:
-  gl::Buffer pieces_, nodes_, triangles_;
+  gl::Buffer pieces_;
+  BvhBuffers bvh_;
   unsigned pieceCount_ = 0;
   int grid_;
   float segmentEps_;

@@ -28,8 +28,7 @@ PathTracer::PathTracer(const Scene& scene) : bvh_(scene), program_(computeProgra
   std::vector<glm::vec4> vertices;
   polygons_ = gl::Buffer(std::span<const GpuPolygon>(gpuPolygonTable(scene, vertices)));
   polygonVertices_ = gl::Buffer(std::span<const glm::vec4>(vertices));
-  nodes_ = gl::Buffer(std::span<const BvhNode>(bvh_.nodes()));
-  triangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh_.triangles()));
+  bvhBuffers_ = BvhBuffers(bvh_);
   double power = 0;
   const std::vector<GpuEmitter> emitters = emitterTable(scene, power, "hemirad reference");
   emitters_ = gl::Buffer(std::span<const GpuEmitter>(emitters));
@@ -45,8 +44,7 @@ void PathTracer::render(const Camera& camera, const ReferenceSettings& s, const 
   gl::Buffer sums(pixels * sizeof(glm::vec4));
   polygons_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGONS);
   polygonVertices_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGON_VERTICES);
-  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_NODES);
-  triangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
+  bvhBuffers_.bind();
   emitters_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_EMITTERS);
   sums.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_REFERENCE_SUMS);
   program_.set("width", unsigned(s.width));

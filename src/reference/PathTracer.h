@@ -13,6 +13,7 @@
 #include "src/scene/Camera.h"
 #include "src/scene/Scene.h"
 #include "src/solver/Bvh.h"
+#include "src/solver/BvhBuffers.h"
 
 namespace hemirad {
 
@@ -38,7 +39,8 @@ class PathTracer {
  private:
   Bvh bvh_;
   gl::Program program_;
-  gl::Buffer polygons_, polygonVertices_, nodes_, triangles_, emitters_;
+  gl::Buffer polygons_, polygonVertices_, emitters_;
+  BvhBuffers bvhBuffers_;
 };
 
 }  // namespace hemirad

@@ -142,9 +142,7 @@ void ProgressiveSolver::setUpReduction(unsigned keep, const gl::Defines& defines
 // --visibility bvh every receiver traces its segment to each shooter (shaders/visibility.glsl).
 void ProgressiveSolver::setUpBvh(gl::Defines& gatherDefines) {
   if (!tracesBvh()) return;
-  const Bvh bvh(state_.scene);
-  bvhNodes_ = gl::Buffer(std::span<const BvhNode>(bvh.nodes()));
-  bvhTriangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh.triangles()));
+  bvh_ = BvhBuffers(Bvh(state_.scene));
   if (refinesNear()) gatherDefines.push_back({"REFINE_NEAR", "1"});
   if (visibility_ == Visibility::Bvh) gatherDefines.push_back({"BVH_VISIBILITY", "1"});
 }
@@ -270,10 +268,7 @@ void ProgressiveSolver::gatherPass(Receivers receivers) {
     nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODES);
     nodeStats_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODE_STATS);
   }
-  if (tracesBvh()) {
-    bvhNodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_NODES);
-    bvhTriangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
-  }
+  if (tracesBvh()) bvh_.bind();
   gather_.use();
   const unsigned phases = refinesNear() ? 2 : 1;  // transfer_split.glsl: near pairs, then far ones
   for (unsigned phase = 0; phase < phases; ++phase) {

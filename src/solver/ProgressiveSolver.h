@@ -10,6 +10,7 @@
 #include "gl/Shader.h"
 #include "gl/Timer.h"
 #include "src/scene/Camera.h"
+#include "src/solver/BvhBuffers.h"
 #include "src/solver/ImportanceView.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/solver/PerspectiveView.h"
@@ -171,9 +172,9 @@ class ProgressiveSolver final : public Solver {
   gl::Program reduce_, select_, gather_;
   gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
   std::size_t discShapes_ = 0;
-  gl::Buffer shapes_;                   // per node: its exact shape (shapeTable), what the gather integrates over
-  int treeDepth_ = 0;                   // levels below the deepest block
-  gl::Buffer bvhNodes_, bvhTriangles_;  // the scene's BVH: exact visibility (near shooters, or --visibility bvh)
+  gl::Buffer shapes_;  // per node: its exact shape (shapeTable), what the gather integrates over
+  int treeDepth_ = 0;  // levels below the deepest block
+  BvhBuffers bvh_;     // the scene's BVH: exact visibility (near shooters, or --visibility bvh)
   Visibility visibility_;
   std::unique_ptr<ItemBuffer> itemBuffer_;        // none with --visibility bvh
   std::unique_ptr<ImportanceView> view_;          // importance-driven solves only

@@ -83,8 +83,7 @@ VplTracer::VplTracer(const Scene& scene, const InstantSettings& settings)
   const std::vector<GpuEmitter> emitters = emitterTable(scene, emitted_, "--method instant");
   emitters_ = unsigned(emitters.size());
   polygons_ = gl::Buffer(std::span<const GpuPolygon>(table));
-  nodes_ = gl::Buffer(std::span<const BvhNode>(bvh_.nodes()));
-  triangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh_.triangles()));
+  bvhBuffers_ = BvhBuffers(bvh_);
   emitterTable_ = gl::Buffer(std::span<const GpuEmitter>(emitters));
   vpls_ = gl::Buffer(sizeof(GpuVpl) * settings.vpls);
   pathEnds_ = gl::Buffer(sizeof(GpuPathEnd) * levels_.count[0]);
@@ -102,8 +101,7 @@ void VplTracer::bind() const {
 void VplTracer::dispatch() {
   vpls_.clear(0u);  // slots of paths that ended early keep zero flux
   bind();
-  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_NODES);
-  triangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
+  bvhBuffers_.bind();
   emitterTable_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_EMITTERS);
   pathEnds_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_PATH_ENDS);
   program_.set("seed", settings_.seed);

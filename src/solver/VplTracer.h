@@ -12,6 +12,7 @@
 #include "gl/Objects.h"
 #include "src/scene/Scene.h"
 #include "src/solver/Bvh.h"
+#include "src/solver/BvhBuffers.h"
 
 namespace hemirad {
 
@@ -83,7 +84,8 @@ class VplTracer {
   double rhoAvg_ = 0, diagonal_ = 0, emitted_ = 0;
   unsigned emitters_ = 0;
   gl::Program program_;
-  gl::Buffer polygons_, polygonVertices_, nodes_, triangles_, emitterTable_, vpls_, pathEnds_;
+  gl::Buffer polygons_, polygonVertices_, emitterTable_, vpls_, pathEnds_;
+  BvhBuffers bvhBuffers_;
 };
 
 }  // namespace hemirad

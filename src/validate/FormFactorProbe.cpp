@@ -28,11 +28,7 @@ FormFactorProbe::FormFactorProbe(const SolverState& state, int subdivision, int 
       control_(sizeof(ControlBlock)),
       traced_(traced),
       result_(GL_RGBA32F, state.atlas.width, state.atlas.height) {
-  if (traced) {
-    const Bvh bvh(state.scene);
-    bvhNodes_ = gl::Buffer(std::span<const BvhNode>(bvh.nodes()));
-    bvhTriangles_ = gl::Buffer(std::span<const BvhTriangle>(bvh.triangles()));
-  }
+  if (traced) bvh_ = BvhBuffers(Bvh(state.scene));
   program_.set("farDistance", float(state.farDistance));
   program_.set("atlasSize", state.atlas.width, state.atlas.height);
 }
@@ -57,8 +53,7 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   auto t0 = std::chrono::steady_clock::now();
   if (traced_) {
     bindShooterLookup(state_, control_, shape_);
-    bvhNodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_NODES);
-    bvhTriangles_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_BVH_TRIANGLES);
+    bvh_.bind();
   } else {
     itemBuffer_.render(control_);
     itemBuffer_.bindForLookup(state_, control_, shape_);

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "src/solver/BvhBuffers.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/solver/SolverState.h"
 
@@ -28,7 +29,7 @@ class FormFactorProbe {
   gl::Program program_;
   gl::Buffer control_, shape_;
   bool traced_;
-  gl::Buffer bvhNodes_, bvhTriangles_;  // traced only
+  BvhBuffers bvh_;  // traced only
   gl::Texture result_;
   double gpuMs_ = 0;
 };
