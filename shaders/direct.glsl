@@ -6,7 +6,7 @@
 // polygons cut into fans of 3 or 4 vertices, each header's w its polygon id (uint bits).
 uniform uint emitterPieces;
 uniform int directGrid;     // G: visibility is sampled at G x G points a piece
-uniform float segmentEps;   // blocksSegment's plane tolerance, as the gather's (4e-7 x far distance)
+uniform float segmentEps;   // blocksSegment's plane tolerance, as the gather's (SEGMENT_TOLERANCE x far distance)
 
 // The point (u, v) of a piece as the bilinear patch p0 p1 p2 p3 (a triangle: p3 = p2) and the
 // patch's area element |dp/du x dp/dv| there: a triangle's cells near p2 are small, and weigh less.

@@ -39,7 +39,7 @@ float vplVisibility(int i, uint v, vec3 x, vec3 local, uint polygon) {
   ivec2 size = textureSize(shadowId, 0).xy;
   uint q = texelFetch(shadowId, ivec3(itemTexel(local, size).xy, i), 0).r;
   if (q == polygon || q == NO_POLYGON) return 1.0;
-  return blocksSegment(q, vpl[v].position.xyz, x, 4e-7 * farDistance) ? 0.0 : 1.0;
+  return blocksSegment(q, vpl[v].position.xyz, x, SEGMENT_TOLERANCE * farDistance) ? 0.0 : 1.0;
 }
 
 // The VPL subset of pixel p under n x n interleaving: its place in the tile.

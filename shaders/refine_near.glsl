@@ -29,7 +29,7 @@ NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon) {
   int top = 0;
   stack[top++] = root;
   uint chart = chartOf(polygon);
-  float eps = 4e-7 * farDistance;
+  float eps = SEGMENT_TOLERANCE * farDistance;
   NearLight l = NearLight(vec3(0.0), 0.0, 0.0);
   while (top > 0) {
     uint n = stack[--top];

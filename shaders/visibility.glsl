@@ -29,7 +29,7 @@ float tracedVisibility(uint shooter, vec3 o, vec3 x, uint polygon, float side) {
   vec3 a = ontoPlane(o, own), b = ontoPlane(x, polygon);
   float reach = length(x - b) > 1e-3 * side ? 0.5 * side : 0.0;
   float keep = max(0.0, 1.0 - reach / max(length(b - a), 1e-30));
-  return segmentBlocked(a, a + (b - a) * keep, chartOf(polygon), chartOf(own), 4e-7 * farDistance) ? 0.0 : 1.0;
+  return segmentBlocked(a, a + (b - a) * keep, chartOf(polygon), chartOf(own), SEGMENT_TOLERANCE * farDistance) ? 0.0 : 1.0;
 }
 #endif
 
@@ -45,7 +45,7 @@ float visibility(uint shooter, vec3 o, vec3 x, uint polygon) {
   vec3 local = shooterLocal(x, o, control.shooter[shooter].normal.xyz);
   ivec2 size = textureSize(itemId, 0).xy;
   ivec3 centre = itemTexel(local, size) + ivec3(0, 0, int(shooter) * ITEM_FACES);
-  float eps = 4e-7 * farDistance;
+  float eps = SEGMENT_TOLERANCE * farDistance;
   uint tested = NO_POLYGON;
   // The receiver's own chart does not occlude it: a planar one cannot, and a curved one's element
   // centre (its pieces' centroid) sits off its facets, which would shadow it across a convex fold.

@@ -25,7 +25,7 @@ std::vector<glm::vec4> emitterPieces(const Scene& scene) {
 }
 
 DirectLight::DirectLight(const Scene& scene, double farDistance, int grid)
-    : grid_(grid), segmentEps_(float(4e-7 * farDistance)) {  // the gather's tolerance (refine_near.glsl)
+    : grid_(grid), segmentEps_(float(kSegmentTolerance * farDistance)) {  // the gather's tolerance
   const std::vector<glm::vec4> pieces = emitterPieces(scene);
   pieceCount_ = unsigned(pieces.size() / kShapeStride);
   if (!pieces.empty()) pieces_ = gl::Buffer(std::span<const glm::vec4>(pieces));

@@ -5,6 +5,7 @@
 #include "gl/Limits.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
+#include "src/solver/Bvh.h"
 #include "src/solver/EmitterTable.h"
 #include "src/solver/ShaderContract.h"
 #include "src/solver/VplTracer.h"
@@ -24,11 +25,10 @@ void checkReferenceSettings(const ReferenceSettings& s) {
                      std::to_string(s.batches) + ": every batch takes the same number of paths");
 }
 
-PathTracer::PathTracer(const Scene& scene) : bvh_(scene), program_(computeProgram("reference.comp")) {
+PathTracer::PathTracer(const Scene& scene) : bvh_(Bvh(scene)), program_(computeProgram("reference.comp")) {
   std::vector<glm::vec4> vertices;
   polygons_ = gl::Buffer(std::span<const GpuPolygon>(gpuPolygonTable(scene, vertices)));
   polygonVertices_ = gl::Buffer(std::span<const glm::vec4>(vertices));
-  bvhBuffers_ = BvhBuffers(bvh_);
   double power = 0;
   const std::vector<GpuEmitter> emitters = emitterTable(scene, power, "hemirad reference");
   emitters_ = gl::Buffer(std::span<const GpuEmitter>(emitters));
@@ -44,7 +44,7 @@ void PathTracer::render(const Camera& camera, const ReferenceSettings& s, const 
   gl::Buffer sums(pixels * sizeof(glm::vec4));
   polygons_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGONS);
   polygonVertices_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_POLYGON_VERTICES);
-  bvhBuffers_.bind();
+  bvh_.bind();
   emitters_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_EMITTERS);
   sums.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_REFERENCE_SUMS);
   program_.set("width", unsigned(s.width));

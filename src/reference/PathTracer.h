@@ -12,7 +12,6 @@
 #include "gl/Objects.h"
 #include "src/scene/Camera.h"
 #include "src/scene/Scene.h"
-#include "src/solver/Bvh.h"
 #include "src/solver/BvhBuffers.h"
 
 namespace hemirad {
@@ -37,10 +36,9 @@ class PathTracer {
   void render(const Camera& camera, const ReferenceSettings& settings, const BatchConsumer& consume);
 
  private:
-  Bvh bvh_;
+  BvhBuffers bvh_;
   gl::Program program_;
   gl::Buffer polygons_, polygonVertices_, emitters_;
-  BvhBuffers bvhBuffers_;
 };
 
 }  // namespace hemirad

@@ -86,6 +86,9 @@ inline constexpr int kMaxShapePieces = 64;
 // Pieces a texel sampled by stochastic iteration may have (texel_shape.glsl; more: the disc).
 // Shooter k's first piece is slot k, the others slots SHOOTER_SLOTS + k (MAX_TEXEL_PIECES - 1) on.
 inline constexpr int kMaxTexelPieces = 16;
+// The exact segment test's plane tolerance (segment.glsl's blocksSegment), a fraction of the scene's
+// far distance: SEGMENT_TOLERANCE in the shaders (the gather, refinement, traced visibility, VPLs).
+inline constexpr double kSegmentTolerance = 4e-7;
 
 // The table as #define lines (slots, limits, LUMINANCE: the Rec. 709 weights of src/scene/Scene.h).
 const gl::Defines& contractDefines();
