@@ -4,13 +4,18 @@
 #include "scene.glsl"
 #ifdef PER_PIXEL_DIRECT
 // --direct per-pixel (src/output/DirectLight.h): the atlas holds the indirect part only; a first
-// pass shows E + indirect, a second over the same depths (GL_EQUAL) adds each pixel's direct light.
+// pass shows E + indirect, a second over the same depths (GL_EQUAL) adds each pixel's direct light
+// (and with --final-gather near the near field's correction, near_gather.glsl).
 #include "hemisphere.glsl"
 #include "formfactor.glsl"
 #include "segment.glsl"
 #include "bvh.glsl"
 #include "bvh_segment.glsl"
 #include "direct.glsl"
+#ifdef NEAR_GATHER
+#include "shooter_tree.glsl"
+#include "near_gather.glsl"
+#endif
 in vec3 vPosition;
 uniform bool directPass;
 #endif
@@ -23,35 +28,51 @@ in vec2 vAtlas;
 flat in uint vPolygon;
 layout(location = 0) out vec4 color;
 
-void main() {
-#ifdef PER_PIXEL_DIRECT
-  if (directPass) {
-    color = vec4(directLight(vPosition, vPolygon), 0.0);  // added to the first pass's colour
-    return;
-  }
-#endif
-  uint chart = chartOf(vPolygon);
-  vec2 c = vAtlas - 0.5;
+// The texels the lookup blends at atlas coordinate a, their weights and the weights' sum (0: no
+// texel of the chart near).
+float lookUp(vec2 a, uint chart, out ivec2 texel[4], out float weight[4], out int count) {
+  vec2 c = a - 0.5;
   ivec2 i0 = ivec2(floor(c));
   vec2 f = c - vec2(i0);
-  vec3 sum = vec3(0.0);
-  float weight = 0.0;
+  float total = 0.0;
+  count = 0;
   for (int k = 0; k < 4; ++k) {
     ivec2 o = ivec2(k & 1, k >> 1);
     float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
-    if (chartAtTexel(i0 + o) == chart) {
-      sum += w * texelFetch(radiosity, i0 + o, 0).rgb;
-      weight += w;
-    }
+    if (chartAtTexel(i0 + o) == chart) texel[count] = i0 + o, weight[count++] = w, total += w;
   }
-  if (weight <= 0.0) {  // a sliver of the polygon whose own texel holds no element: nearest one
-    ivec2 centre = ivec2(floor(vAtlas));
-    for (int k = 0; k < 9 && weight <= 0.0; ++k) {
+  if (total <= 0.0) {  // a sliver of the polygon whose own texel holds no element: nearest one
+    count = 0;
+    ivec2 centre = ivec2(floor(a));
+    for (int k = 0; k < 9 && count == 0; ++k) {
       ivec2 t = centre + ivec2(k % 3 - 1, k / 3 - 1);
-      if (chartAtTexel(t) == chart) sum = texelFetch(radiosity, t, 0).rgb, weight = 1.0;
+      if (chartAtTexel(t) == chart) texel[0] = t, weight[0] = total = 1.0, count = 1;
     }
   }
-  vec3 b = weight > 0.0 ? sum / weight : vec3(0.0);
+  return total;
+}
+
+void main() {
+  ivec2 texel[4];
+  float weight[4];
+  int count;
+  float total = lookUp(vAtlas, chartOf(vPolygon), texel, weight, count);
+#ifdef PER_PIXEL_DIRECT
+  if (directPass) {  // added to the first pass's colour
+    vec3 add = directLight(vPosition, vPolygon);
+#ifdef NEAR_GATHER
+    for (int k = 0; k < count; ++k) weight[k] /= total;
+    add += polygons[vPolygon].reflectance.rgb *
+           nearCorrection(ontoPlane(vPosition, vPolygon), polygons[vPolygon].normal.xyz, vPolygon,
+                          Lookup(texel, weight, count));
+#endif
+    color = vec4(add, 0.0);
+    return;
+  }
+#endif
+  vec3 b = vec3(0.0);
+  for (int k = 0; k < count; ++k) b += weight[k] * texelFetch(radiosity, texel[k], 0).rgb;
+  b = total > 0.0 ? b / total : vec3(0.0);
   if (addAmbient) b += polygons[vPolygon].reflectance.rgb * ambient.rgb;
 #ifdef PER_PIXEL_DIRECT
   b += polygons[vPolygon].emission.rgb;  // E cancelled in B - B_direct (src/solver/DirectSplit.h)

@@ -5,6 +5,7 @@
 // The pieces (src/output/DirectLight.h) sit in SSBO_SHOOTER_SHAPES, a slot each: the emitters'
 // polygons cut into fans of 3 or 4 vertices, each header's w its polygon id (uint bits).
 uniform uint emitterPieces;
+uniform uint emitterBase;   // the first piece's slot (after the final gather's nodes, NearGather.h)
 uniform int directGrid;     // G: visibility is sampled at G x G points a piece
 uniform float segmentEps;   // blocksSegment's plane tolerance, as the gather's (SEGMENT_TOLERANCE x far distance)
 
@@ -111,10 +112,10 @@ bool pieceHidden(vec3 x, uint base) {
 // the direct part of B there. One-sided emitters: a piece lights only points in front of it.
 vec3 directLight(vec3 x, uint polygon) {
   vec3 n = polygons[polygon].normal.xyz;
-  x -= (dot(n, x) - polygons[polygon].normal.w) * n;  // onto the plane: interpolation leaves ~1e-7
+  x = ontoPlane(x, polygon);  // interpolation leaves ~1e-7
   vec3 sum = vec3(0.0);
   for (uint e = 0u; e < emitterPieces; ++e) {
-    uint base = e * uint(SHAPE_STRIDE), lamp = floatBitsToUint(shooterShape[base].w);
+    uint base = (emitterBase + e) * uint(SHAPE_STRIDE), lamp = floatBitsToUint(shooterShape[base].w);
     if (lamp == polygon) continue;
     vec3 nl = polygons[lamp].normal.xyz;
     float F = pointToPiece(x, n, base, nl);

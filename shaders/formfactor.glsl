@@ -69,3 +69,14 @@ float pointToShape(vec3 x, vec3 n, uint shape, vec3 nf) {
     sum += pointToPiece(x, n, b, pieceNormal(b));
   return sum;
 }
+
+// Unoccluded form factor from the receiver point x (normal nr) to a shooter-tree node's shape
+// (front normal ns): exact (the contour integral above), or the disc formula, the disc of its
+// area at `centre`, for a shape too complex for the table.
+float shapeFormFactor(uint shape, vec3 centre, float area, vec3 ns, vec3 x, vec3 nr) {
+  if (shooterShape[shape * SHAPE_STRIDE].x >= 3.0) return pointToShape(x, nr, shape, ns);
+  vec3 d = x - centre;
+  float r2 = dot(d, d);
+  vec3 w = d * inversesqrt(r2);
+  return discFormFactor(dot(ns, w), -dot(nr, w), r2, area);
+}

@@ -18,6 +18,11 @@ layout(binding = SAMPLER_ATLAS_POSITION_AREA) uniform sampler2D atlasPositionAre
 layout(binding = SAMPLER_ATLAS_POLYGON) uniform usampler2D atlasPolygon;      // polygon id or NO_POLYGON
 layout(binding = SAMPLER_ATLAS_NORMAL) uniform sampler2D atlasNormal;        // xyz the element's receiver normal
 
+// p moved along the normal of polygon's plane onto it.
+vec3 ontoPlane(vec3 p, uint polygon) {
+  vec4 plane = polygons[polygon].normal;
+  return p - (dot(plane.xyz, p) - plane.w) * plane.xyz;
+}
 uint chartOf(uint polygon) { return polygon == NO_POLYGON ? NO_POLYGON : polygons[polygon].vertices.z; }
 // The chart of atlas texel t, NO_POLYGON outside the atlas: charts touch its border (no gutters,
 // src/scene/AtlasPacker.h), and texelFetch out of range is undefined (0 under robust access:

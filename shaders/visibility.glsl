@@ -20,10 +20,6 @@ uniform float farDistance;
 // on a curved receiver (its centre off its polygon's plane) the last half element side is not
 // tested: the centre stands for a bent patch, whose neighbouring facets lie that near. A planar
 // receiver is tested to its centre, so contact shadows stay whole.
-vec3 ontoPlane(vec3 p, uint polygon) {
-  vec4 plane = polygons[polygon].normal;
-  return p - (dot(plane.xyz, p) - plane.w) * plane.xyz;
-}
 float tracedVisibility(uint shooter, vec3 o, vec3 x, uint polygon, float side) {
   uint own = control.shooter[shooter].polygon;
   vec3 a = ontoPlane(o, own), b = ontoPlane(x, polygon);
@@ -66,17 +62,6 @@ float visibility(uint shooter, vec3 o, vec3 x, uint polygon) {
 bool inShooterBlock(uint s, ivec2 t, uint polygon) {
   ivec4 r = control.shooter[s].rect;
   return all(greaterThanEqual(t, r.xy)) && all(lessThan(t, r.xy + r.zw)) && chartOf(polygon) == chartOf(control.shooter[s].polygon);
-}
-
-// Unoccluded form factor from the receiver point x (normal nr) to a shooter-tree node's shape
-// (front normal ns): exact (contour integral, formfactor.glsl), or the disc formula, the disc of its
-// area at `centre`, for a shape too complex for the table.
-float shapeFormFactor(uint shape, vec3 centre, float area, vec3 ns, vec3 x, vec3 nr) {
-  if (shooterShape[shape * SHAPE_STRIDE].x >= 3.0) return pointToShape(x, nr, shape, ns);
-  vec3 d = x - centre;
-  float r2 = dot(d, d);
-  vec3 w = d * inversesqrt(r2);
-  return discFormFactor(dot(ns, w), -dot(nr, w), r2, area);
 }
 
 // The same to shooter s of the pass: its node's shape, seen from its origin.

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <tuple>
 
 #include "src/base/AtomicFile.h"
@@ -16,6 +17,7 @@
 #include "src/output/DirectLight.h"
 #include "src/output/GltfWriter.h"
 #include "src/output/ImageFile.h"
+#include "src/output/NearGather.h"
 #include "src/output/PlyWriter.h"
 #include "src/output/Progress.h"
 #include "src/output/Renderer.h"
@@ -157,6 +159,11 @@ Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
   renderer.show(stitchSeams(scene, atlas, indirectPart(solved, direct)));
   const DirectLight light(scene, state.farDistance);
   renderer.usePerPixelDirect(light);
+  std::optional<NearGather> gather;
+  if (method.nearGather()) {
+    gather.emplace(scene, atlas, sentOn(scene, atlas, solved), state.farDistance);
+    renderer.useNearGather(*gather);
+  }
   run.directSplitMs = msSince(t0);
   t0 = std::chrono::steady_clock::now();
   Image view = renderer.render(camera, o.width, o.height, o.supersample);

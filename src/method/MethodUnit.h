@@ -79,6 +79,8 @@ class AtlasRun {
   // so camera images compute direct light per pixel and take only the rest from the solution.
   // Empty (the default, `--direct atlas`): images show B.
   virtual std::vector<glm::vec4> directOnly(const Camera&, double /*aspect*/) const { return {}; }
+  // `--final-gather near`: camera images regather the near field per pixel (src/output/NearGather.h).
+  virtual bool nearGather() const { return false; }
   // How far the solve got, for the summary line.
   virtual std::string reached(const SolveStatus& status) const = 0;
   // A walkthrough along o.cameraPath instead of one image (only methods that accept --camera-path).

@@ -226,6 +226,11 @@ std::vector<Flag> sceneAndSolverFlags() {
        "(per-pixel: Lambert's contour integral to each emitter with exact visibility, the solution giving only the "
        "indirect light; sharp shadow edges; docs/design.md#per-pixel-direct). The atlas, PLY and glTF keep B",
        names({"atlas", "per-pixel"}), "atlas"},
+      {"--final-gather", "MODE",
+       "Camera images with --direct per-pixel: off, or near (each pixel gathers again the light of the elements "
+       "within two of their sides, exactly, at its own point: creases and contacts that a lookup between element "
+       "centres smooths over; docs/design.md#final-gather)",
+       names({"off", "near"}), "off"},
       {"--preset", "NAME",
        "Start the item buffer and shooters from a named plan (docs/cli.md#presets): fast (the default: hemicube at "
        "item-mesh level 0, planned shooter blocks and resolution), refined (fast, refined near its shooters: "

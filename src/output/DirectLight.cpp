@@ -36,6 +36,7 @@ void DirectLight::bind(const gl::Program& program) const {
   if (pieceCount_) pieces_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
   bvh_.bind();
   program.set("emitterPieces", pieceCount_);
+  program.set("emitterBase", 0u);
   program.set("directGrid", grid_);
   program.set("segmentEps", segmentEps_);
 }

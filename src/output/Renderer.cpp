@@ -1,5 +1,7 @@
 #include "src/output/Renderer.h"
 
+#include <stdexcept>
+
 #include "gl/Debug.h"
 #include "gl/State.h"
 #include "src/solver/ShaderContract.h"
@@ -66,6 +68,14 @@ void Renderer::usePerPixelDirect(const DirectLight& direct) {
   directProgram_ = renderProgram("camera.vert", "camera.frag", DirectLight::defines());
 }
 
+void Renderer::useNearGather(const NearGather& gather) {
+  if (!direct_) throw std::logic_error("useNearGather() needs usePerPixelDirect() first");
+  gather_ = &gather;
+  gl::Defines defines = DirectLight::defines();
+  for (const auto& d : NearGather::defines()) defines.push_back(d);
+  directProgram_ = renderProgram("camera.vert", "camera.frag", defines);
+}
+
 // The second pass of a per-pixel-direct view: each visible fragment (the depths the first pass
 // left, GL_EQUAL: the same program and vertices give the same depths) adds its direct light.
 void Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
@@ -73,6 +83,7 @@ void Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
   add.depthFunc = gl::DepthFunc::Equal, add.depthWrite = false, add.additiveBlend = true;
   add.apply();
   direct_->bind(directProgram_);
+  if (gather_) gather_->bind(directProgram_);
   directProgram_.set("directPass", 1);
   directProgram_.set("viewProjection", &vp[0][0]);
   directProgram_.use();

@@ -6,6 +6,7 @@
 
 #include "gl/Objects.h"
 #include "src/output/DirectLight.h"
+#include "src/output/NearGather.h"
 #include "src/output/Image.h"
 #include "src/output/SeamStitch.h"
 #include "src/scene/Camera.h"
@@ -37,6 +38,9 @@ class Renderer {
   // exactly (shaders/direct.glsl), + the shown values, which must then be the indirect part
   // (src/solver/DirectSplit.h). The renderer keeps `direct`.
   void usePerPixelDirect(const DirectLight& direct);
+  // `--final-gather near`, after usePerPixelDirect: each pixel also regathers the light of the
+  // elements near it (shaders/near_gather.glsl). The renderer keeps `gather`.
+  void useNearGather(const NearGather& gather);
 
  private:
   const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
@@ -48,6 +52,7 @@ class Renderer {
 
   gl::Program program_, ambientProgram_, directProgram_;
   const DirectLight* direct_ = nullptr;
+  const NearGather* gather_ = nullptr;
   gl::Buffer ambientTerm_;
   CameraMesh mesh_;
   bool ambient_ = false;

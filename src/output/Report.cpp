@@ -65,6 +65,7 @@ nlohmann::json reportJson(const RunInfo& r) {
   if (!r.projection.empty()) report["projection"] = r.projection;
   if (!r.direct.empty()) report["direct"] = r.direct;
   if (!r.visibility.empty()) report["visibility"] = r.visibility;
+  if (r.direct == "per-pixel") report["final_gather"] = r.finalGather;
   if (r.direct == "per-pixel")
     report["direct_ms"] = {
         {"total", r.directSplitMs + r.directPixelsMs}, {"split", r.directSplitMs}, {"pixels", r.directPixelsMs}};

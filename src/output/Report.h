@@ -20,6 +20,7 @@ struct RunInfo {
   // Progressive: camera images' direct light, "atlas" or "per-pixel" (empty: not the method's), and
   // per-pixel's cost: the emitters-only solve (src/solver/DirectSplit.h) and the camera render.
   std::string direct;
+  std::string finalGather;  // with direct "per-pixel": "off" or "near"
   double directSplitMs = 0, directPixelsMs = 0;
   double refineNear = 0;         // progressive: receivers nearer than this many shooter sides see its parts
   std::string visibility;        // progressive: "item-buffer" or "bvh" (--visibility)

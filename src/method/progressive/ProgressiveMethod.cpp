@@ -19,8 +19,12 @@ namespace {
 
 class ProgressiveRun final : public AtlasRun {
  public:
-  ProgressiveRun(SolverState& state, const ProgressiveSettings& settings, bool perPixelDirect)
-      : settings_(settings), solver_(state, settings), state_(state), perPixelDirect_(perPixelDirect) {}
+  ProgressiveRun(SolverState& state, const ProgressiveSettings& settings, bool perPixelDirect, bool nearGather)
+      : settings_(settings),
+        solver_(state, settings),
+        state_(state),
+        perPixelDirect_(perPixelDirect),
+        nearGather_(nearGather) {}
   Solver& solver() override { return solver_; }
   void look(const Camera& camera, double aspect) override {
     if (settings_.importanceDriven()) solver_.look(camera, aspect);
@@ -42,11 +46,13 @@ class ProgressiveRun final : public AtlasRun {
     run.itemTriangles = solver_.itemTriangles();
     run.discShapes = solver_.discShapes();
     run.direct = perPixelDirect_ ? "per-pixel" : "atlas";
+    run.finalGather = nearGather_ ? "near" : "off";
   }
   std::vector<glm::vec4> directOnly(const Camera& camera, double aspect) const override {
     if (!perPixelDirect_) return {};
     return directOnlyRadiosity(state_.scene, state_.atlas, settings_, camera, aspect);
   }
+  bool nearGather() const override { return nearGather_; }
   std::string reached(const SolveStatus& status) const override {
     return fmt::format("{} shots, convergence {:.4f}", status.shots, status.convergence);
   }
@@ -57,7 +63,7 @@ class ProgressiveRun final : public AtlasRun {
   const ProgressiveSettings& settings_;
   ProgressiveSolver solver_;
   const SolverState& state_;
-  bool perPixelDirect_;
+  bool perPixelDirect_, nearGather_;
 };
 
 int ProgressiveRun::walkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas, SolverState& state,
@@ -100,6 +106,8 @@ class ProgressiveMethod final : public AtlasMethod {
             bindFlag("--shooters-per-pass", p.shootersPerPass),
             parseFlag(
                 "--direct", perPixelDirect_, [](const std::string& v) { return v == "per-pixel"; }, "atlas"),
+            parseFlag(
+                "--final-gather", nearGather_, [](const std::string& v) { return v == "near"; }, "off"),
             switchFlag("--sync-timings", [&p] { p.timings = gl::TimerMode::Synchronous; }),
             acceptFlag("--camera-path")};
   }
@@ -109,12 +117,14 @@ class ProgressiveMethod final : public AtlasMethod {
     if (!stop.maxShots && !stop.targetConvergence) stop.targetConvergence = o.cameraPath.empty() ? 0.9 : 0.9999;
     if (perPixelDirect_ && !o.cameraPath.empty())
       throw InputError("--direct per-pixel renders one solve's --out and --image, not --camera-path frames");
+    if (nearGather_ && !perPixelDirect_)
+      throw InputError("--final-gather near adds to per-pixel direct light: give --direct per-pixel with it");
   }
   std::string quickFlags() const override { return "--elements 300 --item-res 64 --item-subdiv 1"; }
   // What is left unshot at 0.9995 lowers B by < 0.05 %; exact form factors lose < 0.05 % more.
   ClosedBoxRun closedBox() const override { return {"--elements 300 --converge 0.9995", 2, 0.001}; }
   std::unique_ptr<AtlasRun> start(SolverState& state) const override {
-    return std::make_unique<ProgressiveRun>(state, settings_, perPixelDirect_);
+    return std::make_unique<ProgressiveRun>(state, settings_, perPixelDirect_, nearGather_);
   }
   nlohmann::json identity() const override {
     const ProgressiveSettings& p = settings_;
@@ -133,6 +143,7 @@ class ProgressiveMethod final : public AtlasMethod {
  private:
   ProgressiveSettings settings_;
   bool perPixelDirect_ = false;  // --direct per-pixel: camera images only, so not in identity()
+  bool nearGather_ = false;      // --final-gather near: the same
 };
 
 }  // namespace

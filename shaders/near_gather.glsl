@@ -1,0 +1,68 @@
+// Per-pixel final gather of the near field (issue 31, `--final-gather near`, src/output/NearGather.h,
+// docs/design.md#final-gather). Light from elements nearer a point than a few of their sides
+// changes across an element faster than a lookup between element centres can follow: beside a
+// crease the other wall fills half a point's hemisphere and less of the centres'. So the near
+// field is gathered again, at the pixel's point and at the centres of the elements its lookup
+// blends, with the lookup's weights, and the pixel gets the difference: near nodes' blend is
+// replaced by their exact light at the point, far ones are in neither and cancel. Needs
+// scene.glsl, hemisphere.glsl, formfactor.glsl, segment.glsl, bvh.glsl, bvh_segment.glsl and
+// shooter_tree.glsl (the nodes; each node's stats[].unshot.rgb holds the mean light its elements
+// send on, NearGather's source).
+uniform uint gatherBlocks;    // nodes [0, gatherBlocks) are the roots
+uniform float gatherReach;    // a node is near within gatherReach x its side of its centre
+uniform float gatherEps;      // blocksSegment's plane tolerance, as the gather's
+
+// The chart-masked bilinear lookup of camera.frag: up to four texels and their weights (sum 1).
+struct Lookup {
+  ivec2 texel[4];
+  float weight[4];
+  int count;
+};
+
+bool nearGatherNode(uint n, vec3 x) {
+  vec4 ca = nodes[n].centreArea;
+  vec3 d = x - ca.xyz;
+  return dot(d, d) < gatherReach * gatherReach * ca.w;
+}
+
+// Light node n sends to point p (normal np, on chart `chart`): its mean S, exact F from p to its
+// shape, exact visibility from its centre on its plane.
+vec3 nodeLight(uint n, vec3 S, vec3 o, vec3 p, vec3 np, uint chart) {
+  vec3 ns = nodes[n].normal.xyz;
+  if (dot(p - o, ns) <= 0.0) return vec3(0.0);
+  float F = shapeFormFactor(n, nodes[n].centreArea.xyz, nodes[n].centreArea.w, ns, p, np);
+  if (F <= 0.0 || segmentBlocked(o, p, chart, chartOf(nodes[n].polygon), gatherEps)) return vec3(0.0);
+  return S * F;
+}
+
+// The near field's light at x (normal nx, on `polygon`) minus its blend at the lookup's centres.
+vec3 nearCorrection(vec3 x, vec3 nx, uint polygon, Lookup l) {
+  uint chart = chartOf(polygon);
+  vec3 c[4], nc[4];
+  for (int k = 0; k < l.count; ++k)
+    c[k] = texelFetch(atlasPositionArea, l.texel[k], 0).xyz, nc[k] = texelFetch(atlasNormal, l.texel[k], 0).xyz;
+  vec3 sum = vec3(0.0);
+  uint stack[1 + 3 * MAX_SPLIT_DEPTH];  // each level leaves at most three siblings waiting
+  for (uint b = 0u; b < gatherBlocks; ++b) {
+    if (!nearGatherNode(b, x)) continue;  // far: the lookup's blend holds it
+    int top = 0;
+    stack[top++] = b;
+    while (top > 0) {
+      uint n = stack[--top];
+      // A flat part of x's own chart lies in x's plane: it sends x nothing.
+      if (chartOf(nodes[n].polygon) == chart && dot(nodes[n].normal.xyz, nx) > 0.99999) continue;
+      if (nodes[n].firstChild != NO_CHILD && nearGatherNode(n, x)) {
+        for (uint k = nodes[n].firstChild; k < nodes[n].firstChild + 4u; ++k)
+          if (nodes[k].rect.z > 0) stack[top++] = k;
+        continue;
+      }
+      vec3 S = stats[n].unshot.rgb;
+      if (S == vec3(0.0)) continue;
+      vec3 o = ontoPlane(nodes[n].centreArea.xyz, nodes[n].polygon);
+      vec3 d = nodeLight(n, S, o, x, nx, chart);
+      for (int k = 0; k < l.count; ++k) d -= l.weight[k] * nodeLight(n, S, o, c[k], nc[k], chart);
+      sum += d;
+    }
+  }
+  return sum;
+}

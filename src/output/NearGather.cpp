@@ -1,0 +1,79 @@
+#include "src/output/NearGather.h"
+
+#include <span>
+
+#include <fmt/format.h>
+
+#include "gl/Limits.h"
+#include "src/output/DirectLight.h"
+#include "src/solver/ShaderContract.h"
+#include "src/solver/ShooterTree.h"
+#include "src/solver/SolverState.h"
+
+namespace hemirad {
+
+namespace {
+
+constexpr int kGatherLevel = 4;  // 16 x 16-texel roots, four levels down to single elements
+
+// Per node (node_stats.comp's layout, 4 vec4s), in the first: the area-weighted mean of `sent`.
+std::vector<glm::vec4> nodeSources(const Atlas& atlas, const std::vector<ShooterNode>& nodes,
+                                   const std::vector<glm::vec4>& sent) {
+  std::vector<glm::vec4> out(nodes.size() * 4, glm::vec4(0.0f));
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    const glm::ivec4 r = nodes[n].rect;
+    glm::dvec3 sum(0.0);
+    double area = 0;
+    for (int y = r.y; y < r.y + r.w; ++y)
+      for (int x = r.x; x < r.x + r.z; ++x) {
+        const std::size_t t = std::size_t(y) * atlas.width + x;
+        if (atlas.polygonOf[t] == kNoPolygon || atlas.positionArea[t].w <= 0) continue;
+        sum += glm::dvec3(glm::vec3(sent[t])) * double(atlas.positionArea[t].w);
+        area += atlas.positionArea[t].w;
+      }
+    if (area > 0) out[n * 4] = glm::vec4(glm::vec3(sum / area), 0.0f);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<glm::vec4> sentOn(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& B) {
+  std::vector<glm::vec4> out(B);
+  for (std::size_t t = 0; t < out.size(); ++t)
+    if (atlas.polygonOf[t] != kNoPolygon)
+      out[t] -= glm::vec4(glm::vec3(scene.materials[scene.polygons()[atlas.polygonOf[t]].material].emission), 0.0f);
+  return out;
+}
+
+NearGather::NearGather(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& sent, double farDistance)
+    : eps_(float(kSegmentTolerance * farDistance)) {
+  const ShooterTree tree = buildShooterTree(atlas, atlas.shooterBlocks(kGatherLevel), kGatherLevel);
+  blocks_ = unsigned(tree.blocks);
+  nodeCount_ = tree.nodes.size();
+  std::vector<glm::ivec4> rects;
+  for (const ShooterNode& n : tree.nodes) rects.push_back(n.rect);
+  std::vector<glm::vec4> shapes = shapeTable(scene, atlas, rects).slots;
+  emitterBase_ = unsigned(shapes.size() / kShapeStride);
+  shapes.resize(std::size_t(emitterBase_) * kShapeStride, glm::vec4(0.0f));  // pieces start on a slot
+  const std::vector<glm::vec4> pieces = emitterPieces(scene);
+  shapes.insert(shapes.end(), pieces.begin(), pieces.end());
+  gl::requireStorageBlock(shapes.size() * sizeof(glm::vec4),
+                          fmt::format("the shapes of {} final-gather nodes", tree.nodes.size()));
+  nodes_ = gl::Buffer(std::span<const ShooterNode>(tree.nodes));
+  shapes_ = gl::Buffer(std::span<const glm::vec4>(shapes));
+  const std::vector<glm::vec4> sources = nodeSources(atlas, tree.nodes, sent);
+  sources_ = gl::Buffer(std::span<const glm::vec4>(sources));
+}
+
+void NearGather::bind(const gl::Program& program) const {
+  nodes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODES);
+  sources_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODE_STATS);
+  shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
+  program.set("emitterBase", emitterBase_);
+  program.set("gatherBlocks", blocks_);
+  program.set("gatherReach", float(kGatherReach));
+  program.set("gatherEps", eps_);
+}
+
+}  // namespace hemirad
