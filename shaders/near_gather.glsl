@@ -9,7 +9,7 @@
 // shooter_tree.glsl (the nodes; each node's stats[].unshot.rgb holds the mean light its elements
 // send on, NearGather's source).
 uniform uint gatherBlocks;    // nodes [0, gatherBlocks) are the roots
-uniform float gatherReach;    // a node is near within gatherReach x its side of its centre
+uniform float gatherReach;    // a node is near within gatherReach x its radius of its centre
 uniform float gatherEps;      // blocksSegment's plane tolerance, as the gather's
 
 // The chart-masked bilinear lookup of camera.frag: up to four texels and their weights (sum 1).
@@ -20,9 +20,9 @@ struct Lookup {
 };
 
 bool nearGatherNode(uint n, vec3 x) {
-  vec4 ca = nodes[n].centreArea;
-  vec3 d = x - ca.xyz;
-  return dot(d, d) < gatherReach * gatherReach * ca.w;
+  float reach = gatherReach * nodes[n].normal.w;  // w: the node's radius
+  vec3 d = x - nodes[n].centreArea.xyz;
+  return dot(d, d) < reach * reach;
 }
 
 // Light node n sends to point p (normal np, on chart `chart`): its mean S, exact F from p to its

@@ -10,7 +10,8 @@ struct Node {
   uint firstChild;   // four consecutive children, or NO_CHILD
   uint firstLeaf;    // blocks only: their 4^depth leaves
   uint depth;        // blocks only
-  vec4 normal;       // xyz its shooting normal: its chart's plane, or a curved chart's area-weighted mean
+  vec4 normal;       // xyz its shooting normal: its chart's plane, or a curved chart's area-weighted mean;
+                     // w its radius: centre to its farthest element's corner
 };
 
 struct NodeStats {

@@ -49,8 +49,8 @@ TEST_CASE(
   const std::vector<ErrorRow> off = errorTable(scene, regions, readImage(plain), reference, Image{});
   const std::vector<ErrorRow> near = errorTable(scene, regions, readImage(gathered), reference, Image{});
   INFO("without:\n" << markdown(off) << "with --final-gather near:\n" << markdown(near));
-  // Measured: corner band (1 px) bias +6.9 % -> +4.2 %, the edge band's +1.6 % -> -0.3 % (mean
-  // |e| 11.5 -> 10.0 %); interiors 1.39 -> 1.43 % mean |e|.
+  // Measured: corner band (1 px) bias +6.9 % -> +4.1 %, the edge band's +1.6 % -> -0.3 % (mean
+  // |e| 11.5 -> 10.0 %); interiors 1.39 -> 1.41 % mean |e|.
   const ErrorRow &cornerOff = row(off, "corner band (1 px)"), &cornerNear = row(near, "corner band (1 px)");
   REQUIRE(cornerOff.pixels > 400);
   CHECK(cornerOff.bias > 0.05);  // the bias the gather is for

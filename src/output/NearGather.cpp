@@ -54,8 +54,8 @@ NearGather::NearGather(const Scene& scene, const Atlas& atlas, const std::vector
   std::vector<glm::ivec4> rects;
   for (const ShooterNode& n : tree.nodes) rects.push_back(n.rect);
   std::vector<glm::vec4> shapes = shapeTable(scene, atlas, rects).slots;
-  emitterBase_ = unsigned(shapes.size() / kShapeStride);
-  shapes.resize(std::size_t(emitterBase_) * kShapeStride, glm::vec4(0.0f));  // pieces start on a slot
+  emitterBase_ = unsigned((shapes.size() + kShapeStride - 1) / kShapeStride);  // after the last node piece
+  shapes.resize(std::size_t(emitterBase_) * kShapeStride, glm::vec4(0.0f));    // pieces start on a slot
   const std::vector<glm::vec4> pieces = emitterPieces(scene);
   shapes.insert(shapes.end(), pieces.begin(), pieces.end());
   gl::requireStorageBlock(shapes.size() * sizeof(glm::vec4),

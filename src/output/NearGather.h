@@ -15,9 +15,10 @@
 
 namespace hemirad {
 
-// A node is near a point within this many of its sides of its centre: the light of nodes farther
-// off changes little across an element, which the lookup's blend follows (docs/design.md#final-gather).
-inline constexpr double kGatherReach = 2.0;
+// A node is near a point within this many of its radii (centre to farthest corner) of its centre,
+// 2 sides of a square: the light of nodes farther off changes little across an element, which the
+// lookup's blend follows (docs/design.md#final-gather).
+inline constexpr double kGatherReach = 2.0 * 1.41421356;
 
 // B - E per element (atlas order): the light each sends on by reflection, what the pixels' gather
 // sees again beside per-pixel direct light.

@@ -2,10 +2,24 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 
 namespace hemirad {
 
 namespace {
+
+// How far a node reaches from its centre: to its farthest element centre plus half a texel's
+// diagonal. A node at a chart's edge may be a sliver (1 x 16 texels), whose area says nothing of it.
+double nodeRadius(const Atlas& atlas, glm::ivec4 rect, const glm::dvec3& centre) {
+  double radius = 0;
+  for (int y = rect.y; y < rect.y + rect.w; ++y)
+    for (int x = rect.x; x < rect.x + rect.z; ++x) {
+      const std::size_t t = std::size_t(y) * atlas.width + x;
+      if (atlas.polygonOf[t] != kNoPolygon && atlas.positionArea[t].w > 0)
+        radius = std::max(radius, glm::length(glm::dvec3(atlas.positionArea[t]) - centre));
+    }
+  return radius + atlas.texelSize * std::sqrt(0.5);
+}
 
 ShooterNode makeNode(const Atlas& atlas, glm::ivec4 rect) {
   ShooterNode n;
@@ -26,6 +40,7 @@ ShooterNode makeNode(const Atlas& atlas, glm::ivec4 rect) {
   if (area > 0) n.centreArea = glm::vec4(glm::vec3(centre / area), float(area));
   if (area > 0 && !atlas.charts[atlas.chartOf[n.polygon]].planar)
     n.normal = glm::vec4(glm::vec3(glm::normalize(normal)), 0.0f);
+  n.normal.w = float(nodeRadius(atlas, rect, glm::dvec3(n.centreArea)));
   return n;
 }
 

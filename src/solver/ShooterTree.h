@@ -26,7 +26,8 @@ struct ShooterNode {
   std::uint32_t firstChild = kNoChild;  // four consecutive children, or a leaf
   std::uint32_t firstLeaf = 0;          // blocks only: their leaves, 4^depth of them
   std::uint32_t depth = 0;              // blocks only: levels below the block
-  glm::vec4 normal{0.0f};  // xyz: a planar chart's normal, or a curved one's area-weighted mean over the node
+  glm::vec4 normal{0.0f};  // xyz: a planar chart's normal, or a curved one's area-weighted mean over the node;
+                           // w: its radius, from its centre to its farthest element's corner
 };
 static_assert(sizeof(ShooterNode) == 64);
 
