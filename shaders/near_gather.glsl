@@ -6,8 +6,8 @@
 // blends, with the lookup's weights, and the pixel gets the difference: near nodes' blend is
 // replaced by their exact light at the point, far ones are in neither and cancel. Needs
 // scene.glsl, hemisphere.glsl, formfactor.glsl, segment.glsl, bvh.glsl, bvh_segment.glsl and
-// shooter_tree.glsl (the nodes; each node's stats[].unshot.rgb holds the mean light its elements
-// send on, NearGather's source).
+// shooter_tree.glsl (the nodes; each node's stats[] hold NearGather's source: unshot.rgb the mean
+// light its elements send on, lightCentre where it sits).
 uniform uint gatherBlocks;    // nodes [0, gatherBlocks) are the roots
 uniform float gatherReach;    // a node is near within gatherReach x its radius of its centre
 uniform float gatherEps;      // blocksSegment's plane tolerance, as the gather's
@@ -25,8 +25,14 @@ bool nearGatherNode(uint n, vec3 x) {
   return dot(d, d) < reach * reach;
 }
 
+// Where node n's light leaves: its light centre on its polygon's plane.
+vec3 nodeOrigin(uint n) {
+  vec4 c = stats[n].lightCentre;
+  return ontoPlane(c.w > 0.0 ? c.xyz / c.w : nodes[n].centreArea.xyz, nodes[n].polygon);
+}
+
 // Light node n sends to point p (normal np, on chart `chart`): its mean S, exact F from p to its
-// shape, exact visibility from its centre on its plane.
+// shape, exact visibility from its origin o.
 vec3 nodeLight(uint n, vec3 S, vec3 o, vec3 p, vec3 np, uint chart) {
   vec3 ns = nodes[n].normal.xyz;
   if (dot(p - o, ns) <= 0.0) return vec3(0.0);
@@ -35,33 +41,45 @@ vec3 nodeLight(uint n, vec3 S, vec3 o, vec3 p, vec3 np, uint chart) {
   return S * F;
 }
 
+// The node `depth` levels below root b along `path` (two bits a level, the deepest lowest).
+uint nodeOnPath(uint b, uint depth, uint path) {
+  uint n = b;
+  for (uint l = depth; l > 0u; --l) n = nodes[n].firstChild + ((path >> (2u * (l - 1u))) & 3u);
+  return n;
+}
+
 // The near field's light at x (normal nx, on `polygon`) minus its blend at the lookup's centres.
+// The cut is walked by a path, not a stack: llvmpipe (Mesa 22.3) loses nodes of a walk whose stack
+// array is live across segmentBlocked's own (a furnace regathered 1.67 instead of 2; the H200 gave 2).
 vec3 nearCorrection(vec3 x, vec3 nx, uint polygon, Lookup l) {
   uint chart = chartOf(polygon);
   vec3 c[4], nc[4];
   for (int k = 0; k < l.count; ++k)
     c[k] = texelFetch(atlasPositionArea, l.texel[k], 0).xyz, nc[k] = texelFetch(atlasNormal, l.texel[k], 0).xyz;
   vec3 sum = vec3(0.0);
-  uint stack[1 + 3 * MAX_SPLIT_DEPTH];  // each level leaves at most three siblings waiting
   for (uint b = 0u; b < gatherBlocks; ++b) {
     if (!nearGatherNode(b, x)) continue;  // far: the lookup's blend holds it
-    int top = 0;
-    stack[top++] = b;
-    while (top > 0) {
-      uint n = stack[--top];
-      // A flat part of x's own chart lies in x's plane: it sends x nothing.
-      if (chartOf(nodes[n].polygon) == chart && dot(nodes[n].normal.xyz, nx) > 0.99999) continue;
-      if (nodes[n].firstChild != NO_CHILD && nearGatherNode(n, x)) {
-        for (uint k = nodes[n].firstChild; k < nodes[n].firstChild + 4u; ++k)
-          if (nodes[k].rect.z > 0) stack[top++] = k;
+    uint depth = 0u, path = 0u;
+    while (true) {
+      uint n = nodeOnPath(b, depth, path);
+      // An empty quadrant, or a flat part of x's own chart (in x's plane: it sends x nothing).
+      bool skip = nodes[n].rect.z <= 0 || (chartOf(nodes[n].polygon) == chart && dot(nodes[n].normal.xyz, nx) > 0.99999);
+      if (!skip && nodes[n].firstChild != NO_CHILD && nearGatherNode(n, x)) {
+        ++depth, path <<= 2;  // into its first child
         continue;
       }
-      vec3 S = stats[n].unshot.rgb;
-      if (S == vec3(0.0)) continue;
-      vec3 o = ontoPlane(nodes[n].centreArea.xyz, nodes[n].polygon);
-      vec3 d = nodeLight(n, S, o, x, nx, chart);
-      for (int k = 0; k < l.count; ++k) d -= l.weight[k] * nodeLight(n, S, o, c[k], nc[k], chart);
-      sum += d;
+      vec3 S = stats[n].unshot.rgb, o = nodeOrigin(n);
+      // x in the node's plane (a sample on a crease line) gets none of its light, the centres
+      // some: no correction rather than one that takes it away.
+      skip = skip || S == vec3(0.0) || abs(dot(x - o, nodes[n].normal.xyz)) <= gatherEps;
+      if (!skip) {
+        vec3 d = nodeLight(n, S, o, x, nx, chart);
+        for (int k = 0; k < l.count; ++k) d -= l.weight[k] * nodeLight(n, S, o, c[k], nc[k], chart);
+        sum += d;
+      }
+      while (depth > 0u && (path & 3u) == 3u) --depth, path >>= 2;  // past last children, up
+      if (depth == 0u) break;
+      ++path;  // the next sibling
     }
   }
   return sum;

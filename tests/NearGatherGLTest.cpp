@@ -64,6 +64,33 @@ TEST_CASE(
   CHECK_THAT(text, Contains("\"final_gather\": \"near\""));
 }
 
+TEST_CASE("In a closed box of uniform light the near final gather leaves the image unchanged, its far field cancelling",
+          "[gl][direct][heavy]") {
+  // B = 2 everywhere (E 1, rho 0.5): what a pixel's near field gives it, its lookup's centres get
+  // too, so the correction vanishes but for samples beside a crease (its steep near field).
+  const std::string furnace = test::sourcePath("scenes/analytic/furnace.obj");
+  const std::string common = "solve " + furnace +
+                             " --elements 600 --converge 0.999 --width 48 --height 48 --ambient off --quiet "
+                             "--direct per-pixel --out ";
+  const std::string plain = test::tempPath("furnace_off.exr"), gathered = test::tempPath("furnace_near.exr");
+  REQUIRE(test::hemirad(common + plain).exitCode == 0);
+  REQUIRE(test::hemirad(common + gathered + " --final-gather near").exitCode == 0);
+  const Image a = readImage(gathered), b = readImage(plain);
+  const Scene scene = loadScene(furnace);
+  const PixelRegions regions = pixelRegions(scene, resolveCamera(scene, std::nullopt), 48, 48);
+  double worst = 0, mean = 0, interiorWorst = 0;
+  for (std::size_t p = 0; p < regions.polygon.size(); ++p) {
+    const double e = std::abs(a.rgb[3 * p + 1] / b.rgb[3 * p + 1] - 1);
+    worst = std::max(worst, e), mean += e / double(regions.polygon.size());
+    if (regions.edgeDistance[p] >= PixelRegions::kEdgeReach) interiorWorst = std::max(interiorWorst, e);
+  }
+  // Measured: interiors unchanged (< 1e-6), mean 0.014 %, worst 1.9 % (a sample on a crease's edge).
+  INFO("worst " << worst << ", mean " << mean << ", interior worst " << interiorWorst);
+  CHECK(interiorWorst < 1e-5);
+  CHECK(mean < 5e-4);
+  CHECK(worst < 0.03);
+}
+
 TEST_CASE("The near final gather is deterministic: the same solve writes the same bytes", "[gl][direct][heavy]") {
   const std::string path = test::sourcePath("scenes/cornell/cornell.obj");
   const std::string a = test::tempPath("gather_a.exr"), b = test::tempPath("gather_b.exr");

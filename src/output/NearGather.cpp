@@ -16,22 +16,28 @@ namespace {
 
 constexpr int kGatherLevel = 4;  // 16 x 16-texel roots, four levels down to single elements
 
-// Per node (node_stats.comp's layout, 4 vec4s), in the first: the area-weighted mean of `sent`.
+// Per node, in node_stats.comp's layout (4 vec4s), the first two: the area-weighted mean of `sent`
+// (rgb), and where its light sits, the sums of w x and of w, w = luminance(sent) A (the origin of
+// its visibility, as a shooter's: a node half under a block sends from its lit half).
 std::vector<glm::vec4> nodeSources(const Atlas& atlas, const std::vector<ShooterNode>& nodes,
                                    const std::vector<glm::vec4>& sent) {
   std::vector<glm::vec4> out(nodes.size() * 4, glm::vec4(0.0f));
   for (std::size_t n = 0; n < nodes.size(); ++n) {
     const glm::ivec4 r = nodes[n].rect;
-    glm::dvec3 sum(0.0);
-    double area = 0;
+    glm::dvec3 sum(0.0), centre(0.0);
+    double area = 0, weight = 0;
     for (int y = r.y; y < r.y + r.w; ++y)
       for (int x = r.x; x < r.x + r.z; ++x) {
         const std::size_t t = std::size_t(y) * atlas.width + x;
         if (atlas.polygonOf[t] == kNoPolygon || atlas.positionArea[t].w <= 0) continue;
-        sum += glm::dvec3(glm::vec3(sent[t])) * double(atlas.positionArea[t].w);
-        area += atlas.positionArea[t].w;
+        const double a = atlas.positionArea[t].w, l = luminance(glm::dvec3(glm::vec3(sent[t])));
+        sum += glm::dvec3(glm::vec3(sent[t])) * a;
+        area += a, weight += l * a;
+        centre += glm::dvec3(atlas.positionArea[t]) * (l * a);
       }
-    if (area > 0) out[n * 4] = glm::vec4(glm::vec3(sum / area), 0.0f);
+    if (area <= 0) continue;
+    out[n * 4] = glm::vec4(glm::vec3(sum / area), 0.0f);
+    out[n * 4 + 1] = glm::vec4(glm::vec3(centre), float(weight));
   }
   return out;
 }
