@@ -41,16 +41,8 @@ vec3 nodeLight(uint n, vec3 S, vec3 o, vec3 p, vec3 np, uint chart) {
   return S * F;
 }
 
-// The node `depth` levels below root b along `path` (two bits a level, the deepest lowest).
-uint nodeOnPath(uint b, uint depth, uint path) {
-  uint n = b;
-  for (uint l = depth; l > 0u; --l) n = nodes[n].firstChild + ((path >> (2u * (l - 1u))) & 3u);
-  return n;
-}
-
 // The near field's light at x (normal nx, on `polygon`) minus its blend at the lookup's centres.
-// The cut is walked by a path, not a stack: llvmpipe (Mesa 22.3) loses nodes of a walk whose stack
-// array is live across segmentBlocked's own (a furnace regathered 1.67 instead of 2; the H200 gave 2).
+// The cut is walked by a path (shooter_tree.glsl's nodeOnPath), not a stack.
 vec3 nearCorrection(vec3 x, vec3 nx, uint polygon, Lookup l) {
   uint chart = chartOf(polygon);
   vec3 c[4], nc[4];

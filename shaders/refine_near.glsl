@@ -25,27 +25,30 @@ struct NearLight {
 };
 
 NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon) {
-  uint stack[1 + 3 * MAX_SPLIT_DEPTH];  // each level leaves at most three siblings waiting
-  int top = 0;
-  stack[top++] = root;
   uint chart = chartOf(polygon);
   float eps = SEGMENT_TOLERANCE * farDistance;
   NearLight l = NearLight(vec3(0.0), 0.0, 0.0);
-  while (top > 0) {
-    uint n = stack[--top];
-    if (nodes[n].firstChild != NO_CHILD && nearNode(n, x)) {
-      for (uint c = nodes[n].firstChild; c < nodes[n].firstChild + 4u; ++c)
-        if (nodes[c].rect.z > 0) stack[top++] = c;
+  // Depth first, the last child first (nodeOnPath; the order fixes the sums' bits).
+  uint depth = 0u, path = 0u;
+  while (true) {
+    uint n = nodeOnPath(root, depth, path);
+    bool empty = nodes[n].rect.z <= 0;
+    if (!empty && nodes[n].firstChild != NO_CHILD && nearNode(n, x)) {
+      ++depth, path = (path << 2) | 3u;
       continue;
     }
     NodeStats st = stats[n];
     float area = nodes[n].centreArea.w;
-    if (st.lightCentre.w <= 0.0 || area <= 0.0) continue;  // no unshot light here
     vec3 o = st.lightCentre.xyz / st.lightCentre.w, ns = nodes[n].normal.xyz;
-    if (dot(x - o, ns) <= 0.0) continue;
-    float F = shapeFormFactor(n, o, area, ns, x, nr), w = luminance(st.unshot.rgb) / area * F;
-    l.all += w;
-    if (w > 0.0 && !segmentBlocked(o, x, chart, NO_POLYGON, eps)) l.seen += w, l.seenRgb += st.unshot.rgb / area * F;
+    // No unshot light here, or x behind it.
+    if (!empty && st.lightCentre.w > 0.0 && area > 0.0 && dot(x - o, ns) > 0.0) {
+      float F = shapeFormFactor(n, o, area, ns, x, nr), w = luminance(st.unshot.rgb) / area * F;
+      l.all += w;
+      if (w > 0.0 && !segmentBlocked(o, x, chart, NO_POLYGON, eps)) l.seen += w, l.seenRgb += st.unshot.rgb / area * F;
+    }
+    while (depth > 0u && (path & 3u) == 0u) --depth, path >>= 2;  // past first children, up
+    if (depth == 0u) break;
+    --path;  // the previous sibling
   }
   return l;
 }
