@@ -3,7 +3,8 @@
 // at every pixel; behind a hard occluder the umbra is black, the lit part exact and the penumbra
 // the exact form factor to the lamp's visible part within the visibility grid's step; on the
 // Cornell box the split into per-pixel direct and atlas indirect light neither loses nor adds
-// light against the atlas image; a bad value is one error line.
+// light against the atlas image; it and the near final gather write the same bytes each run; a bad
+// value is one error line.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -169,21 +170,29 @@ TEST_CASE(
   CHECK_THAT(text, Contains("\"direct\": \"per-pixel\"") && Contains("\"direct_ms\""));
 }
 
-TEST_CASE("Per-pixel direct light is deterministic: the same solve writes the same bytes", "[gl][direct][heavy]") {
-  const std::string path = test::sourcePath("scenes/analytic/parallel_squares.obj");
-  const std::string a = test::tempPath("direct_a.exr"), b = test::tempPath("direct_b.exr");
-  const std::string common =
-      "solve " + path + " --elements 400 --width 32 --height 32 --direct per-pixel --quiet --out ";
-  REQUIRE(test::hemirad(common + a).exitCode == 0);
-  REQUIRE(test::hemirad(common + b).exitCode == 0);
-  std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
-  const std::string bytesA((std::istreambuf_iterator<char>(fa)), {}), bytesB((std::istreambuf_iterator<char>(fb)), {});
-  CHECK(!bytesA.empty());
-  CHECK(bytesA == bytesB);
+TEST_CASE("Per-pixel direct light and the near final gather are deterministic: the same solve writes the same bytes",
+          "[gl][direct][heavy]") {
+  const std::string squares = test::sourcePath("scenes/analytic/parallel_squares.obj");
+  const std::string cornell = test::sourcePath("scenes/cornell/cornell.obj");
+  for (const std::string& run : {"solve " + squares + " --elements 400 --direct per-pixel",
+                                 "solve " + cornell + " --elements 300 --direct per-pixel --final-gather near"}) {
+    const std::string a = test::tempPath("direct_a.exr"), b = test::tempPath("direct_b.exr");
+    const std::string common = run + " --width 32 --height 32 --quiet --out ";
+    REQUIRE(test::hemirad(common + a).exitCode == 0);
+    REQUIRE(test::hemirad(common + b).exitCode == 0);
+    std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+    const std::string bytesA((std::istreambuf_iterator<char>(fa)), {}),
+        bytesB((std::istreambuf_iterator<char>(fb)), {});
+    INFO(run);
+    CHECK(!bytesA.empty());
+    CHECK(bytesA == bytesB);
+  }
 }
 
-TEST_CASE("Bad --direct input is one error line and exit code 2: an unknown mode, a method without it, a walkthrough",
-          "[gl][direct][cli][bad-input]") {
+TEST_CASE(
+    "Bad --direct or --final-gather input is one error line and exit code 2: an unknown mode, a method without it, a "
+    "walkthrough, the gather without per-pixel direct light",
+    "[gl][direct][cli][bad-input]") {
   const std::string cornell = test::sourcePath("scenes/cornell/cornell.obj");
   const std::string out = " --out " + test::tempPath("bad_direct.exr");
   const std::pair<std::string, std::string> cases[] = {
@@ -191,7 +200,9 @@ TEST_CASE("Bad --direct input is one error line and exit code 2: an unknown mode
       {"--method stochastic --direct per-pixel", "--direct is for --method progressive, not stochastic"},
       {"--direct per-pixel --camera-path " + test::sourcePath("scenes/cornell/cornell.path") + " --frames " +
            test::tempPath("frames"),
-       "--direct per-pixel renders one solve's --out and --image, not --camera-path frames"}};
+       "--direct per-pixel renders one solve's --out and --image, not --camera-path frames"},
+      {"--direct per-pixel --final-gather far", "--final-gather: far not in {off,near}"},
+      {"--final-gather near", "--final-gather near adds to per-pixel direct light: give --direct per-pixel with it"}};
   for (const auto& [flags, message] : cases) {
     const test::Run run = test::hemirad("solve " + cornell + " " + flags + out);
     INFO(flags << ": " << run.output);
