@@ -56,7 +56,6 @@ NearGather::NearGather(const Scene& scene, const Atlas& atlas, const std::vector
     : eps_(float(kSegmentTolerance * farDistance)) {
   const ShooterTree tree = buildShooterTree(atlas, atlas.shooterBlocks(kGatherLevel), kGatherLevel);
   blocks_ = unsigned(tree.blocks);
-  nodeCount_ = tree.nodes.size();
   std::vector<glm::ivec4> rects;
   for (const ShooterNode& n : tree.nodes) rects.push_back(n.rect);
   std::vector<glm::vec4> shapes = shapeTable(scene, atlas, rects).slots;

@@ -33,12 +33,10 @@ class NearGather {
   // Binds the nodes, their shapes with the emitter pieces after them (formfactor.glsl's one shape
   // table; direct.glsl's `emitterBase`) and sources, and sets near_gather.glsl's uniforms.
   void bind(const gl::Program& program) const;
-  std::size_t nodes() const { return nodeCount_; }
 
  private:
   gl::Buffer nodes_, shapes_, sources_;
   unsigned blocks_ = 0, emitterBase_ = 0;
-  std::size_t nodeCount_ = 0;
   float eps_;
 };
 
