@@ -5,12 +5,11 @@
 // field is gathered again, at the pixel's point and at the centres of the elements its lookup
 // blends, with the lookup's weights, and the pixel gets the difference: near nodes' blend is
 // replaced by their exact light at the point, far ones are in neither and cancel. Needs
-// scene.glsl, hemisphere.glsl, formfactor.glsl, segment.glsl, bvh.glsl, bvh_segment.glsl and
-// shooter_tree.glsl (the nodes; each node's stats[] hold NearGather's source: unshot.rgb the mean
+// scene.glsl, hemisphere.glsl, formfactor.glsl, segment.glsl, bvh.glsl, bvh_segment.glsl,
+// direct.glsl (its segmentEps, the gather's tolerance) and shooter_tree.glsl (the nodes; each node's stats[] hold NearGather's source: unshot.rgb the mean
 // light its elements send on, lightCentre where it sits).
 uniform uint gatherBlocks;    // nodes [0, gatherBlocks) are the roots
 uniform float gatherReach;    // a node is near within gatherReach x its radius of its centre
-uniform float gatherEps;      // blocksSegment's plane tolerance, as the gather's
 
 // The chart-masked bilinear lookup of camera.frag: up to four texels and their weights (sum 1).
 struct Lookup {
@@ -37,7 +36,7 @@ vec3 nodeLight(uint n, vec3 S, vec3 o, vec3 p, vec3 np, uint chart) {
   vec3 ns = nodes[n].normal.xyz;
   if (dot(p - o, ns) <= 0.0) return vec3(0.0);
   float F = shapeFormFactor(n, nodes[n].centreArea.xyz, nodes[n].centreArea.w, ns, p, np);
-  if (F <= 0.0 || segmentBlocked(o, p, chart, chartOf(nodes[n].polygon), gatherEps)) return vec3(0.0);
+  if (F <= 0.0 || segmentBlocked(o, p, chart, chartOf(nodes[n].polygon), segmentEps)) return vec3(0.0);
   return S * F;
 }
 
@@ -63,7 +62,7 @@ vec3 nearCorrection(vec3 x, vec3 nx, uint polygon, Lookup l) {
       vec3 S = stats[n].unshot.rgb, o = nodeOrigin(n);
       // x in the node's plane (a sample on a crease line) gets none of its light, the centres
       // some: no correction rather than one that takes it away.
-      skip = skip || S == vec3(0.0) || abs(dot(x - o, nodes[n].normal.xyz)) <= gatherEps;
+      skip = skip || S == vec3(0.0) || abs(dot(x - o, nodes[n].normal.xyz)) <= segmentEps;
       if (!skip) {
         vec3 d = nodeLight(n, S, o, x, nx, chart);
         for (int k = 0; k < l.count; ++k) d -= l.weight[k] * nodeLight(n, S, o, c[k], nc[k], chart);

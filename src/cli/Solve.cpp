@@ -158,12 +158,9 @@ Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
   }
   renderer.show(stitchSeams(scene, atlas, indirectPart(solved, direct)));
   const DirectLight light(scene, state.farDistance);
-  renderer.usePerPixelDirect(light);
   std::optional<NearGather> gather;
-  if (method.nearGather()) {
-    gather.emplace(scene, atlas, sentOn(scene, atlas, solved), state.farDistance);
-    renderer.useNearGather(*gather);
-  }
+  if (method.nearGather()) gather.emplace(scene, atlas, sentOn(scene, atlas, solved));
+  renderer.usePerPixelDirect(light, gather ? &*gather : nullptr);
   run.directSplitMs = msSince(t0);
   t0 = std::chrono::steady_clock::now();
   Image view = renderer.render(camera, o.width, o.height, o.supersample);

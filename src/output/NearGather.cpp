@@ -52,8 +52,7 @@ std::vector<glm::vec4> sentOn(const Scene& scene, const Atlas& atlas, const std:
   return out;
 }
 
-NearGather::NearGather(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& sent, double farDistance)
-    : eps_(float(kSegmentTolerance * farDistance)) {
+NearGather::NearGather(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& sent) {
   const ShooterTree tree = buildShooterTree(atlas, atlas.shooterBlocks(kGatherLevel), kGatherLevel);
   blocks_ = unsigned(tree.blocks);
   std::vector<glm::ivec4> rects;
@@ -78,7 +77,6 @@ void NearGather::bind(const gl::Program& program) const {
   program.set("emitterBase", emitterBase_);
   program.set("gatherBlocks", blocks_);
   program.set("gatherReach", float(kGatherReach));
-  program.set("gatherEps", eps_);
 }
 
 }  // namespace hemirad

@@ -28,7 +28,7 @@ class NearGather {
  public:
   // `sent`: per element (atlas order) the light it sends on that the pixels' gather should see
   // again: B - E where direct light is computed per pixel.
-  NearGather(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& sent, double farDistance);
+  NearGather(const Scene& scene, const Atlas& atlas, const std::vector<glm::vec4>& sent);
   static gl::Defines defines() { return {{"NEAR_GATHER", "1"}}; }
   // Binds the nodes, their shapes with the emitter pieces after them (formfactor.glsl's one shape
   // table; direct.glsl's `emitterBase`) and sources, and sets near_gather.glsl's uniforms.
@@ -37,7 +37,6 @@ class NearGather {
  private:
   gl::Buffer nodes_, shapes_, sources_;
   unsigned blocks_ = 0, emitterBase_ = 0;
-  float eps_;
 };
 
 }  // namespace hemirad

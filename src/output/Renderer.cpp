@@ -1,7 +1,5 @@
 #include "src/output/Renderer.h"
 
-#include <stdexcept>
-
 #include "gl/Debug.h"
 #include "gl/State.h"
 #include "src/solver/ShaderContract.h"
@@ -63,16 +61,14 @@ void Renderer::show(const std::vector<glm::vec4>& values) {
   shown_->upload(GL_RGBA, GL_FLOAT, values.data());
 }
 
-void Renderer::usePerPixelDirect(const DirectLight& direct) {
+void Renderer::usePerPixelDirect(const DirectLight& direct, const NearGather* gather) {
   direct_ = &direct;
-  directProgram_ = renderProgram("camera.vert", "camera.frag", DirectLight::defines());
-}
-
-void Renderer::useNearGather(const NearGather& gather) {
-  if (!direct_) throw std::logic_error("useNearGather() needs usePerPixelDirect() first");
-  gather_ = &gather;
+  gather_ = gather;
   gl::Defines defines = DirectLight::defines();
-  for (const auto& d : NearGather::defines()) defines.push_back(d);
+  if (gather) {
+    const gl::Defines more = NearGather::defines();
+    defines.insert(defines.end(), more.begin(), more.end());
+  }
   directProgram_ = renderProgram("camera.vert", "camera.frag", defines);
 }
 

@@ -6,8 +6,8 @@
 
 #include "gl/Objects.h"
 #include "src/output/DirectLight.h"
-#include "src/output/NearGather.h"
 #include "src/output/Image.h"
+#include "src/output/NearGather.h"
 #include "src/output/SeamStitch.h"
 #include "src/scene/Camera.h"
 #include "src/solver/CameraMesh.h"
@@ -36,11 +36,9 @@ class Renderer {
   void stitchLive();
   // `--direct per-pixel`: from now on render() shows E + each pixel's direct light, computed
   // exactly (shaders/direct.glsl), + the shown values, which must then be the indirect part
-  // (src/solver/DirectSplit.h). The renderer keeps `direct`.
-  void usePerPixelDirect(const DirectLight& direct);
-  // `--final-gather near`, after usePerPixelDirect: each pixel also regathers the light of the
-  // elements near it (shaders/near_gather.glsl). The renderer keeps `gather`.
-  void useNearGather(const NearGather& gather);
+  // (src/solver/DirectSplit.h); with `gather` (`--final-gather near`) each pixel also regathers
+  // the light of the elements near it (shaders/near_gather.glsl). The renderer keeps both.
+  void usePerPixelDirect(const DirectLight& direct, const NearGather* gather = nullptr);
 
  private:
   const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
