@@ -55,15 +55,17 @@ void sync() {
 }
 
 // Ranks entries [first, end) (at most 1024): afterwards slots 0..keep-1 hold the best in order
-// and groupSum[0] the total, for every thread.
+// (entries of power -1 past the last one) and groupSum[0] the total, for every thread.
 void rankGroup(uint first, uint end) {
   uint l = gl_LocalInvocationID.x;
   float sum = 0.0;
+  vec4 power;  // this thread's four entries, kept for placing them below
+  uvec4 index;
   for (uint k = 0u; k < GROUP_ENTRIES / 256u; ++k) {
     uint slot = l + 256u * k, i = first + slot;
     Entry e = i < end ? loadEntry(i) : Entry(-1.0, 0xFFFFFFFFu, 0.0, 0.0);
-    rankPower[slot] = e.power;
-    rankIndex[slot] = e.index;
+    rankPower[slot] = power[k] = e.power;
+    rankIndex[slot] = index[k] = e.index;
     sum += e.sum;
   }
   groupSum[l] = sum;
@@ -79,13 +81,23 @@ void rankGroup(uint first, uint end) {
     sync();
   }
   if (keep == 1u) return;
-  // Several shooters: bitonic sort of the 1024 slots, best first.
-  for (uint size = 2u; size <= GROUP_ENTRIES; size <<= 1)
-    for (uint stride = size >> 1; stride > 0u; stride >>= 1) {
-      for (uint p = l; p < GROUP_ENTRIES / 2u; p += 256u) {
-        uint a = 2u * p - (p & (stride - 1u)), b = a + stride;
-        if (((a & size) == 0u) == ranksBefore(b, a)) swapSlots(a, b);
-      }
-      sync();
-    }
+  // Several shooters: an entry's place is the count of entries that rank before it (a total
+  // order: places are distinct), counted only up to `keep`, the places kept, so all but the
+  // best few stop early. Three barriers where a bitonic sort of the 1024 slots took 55, each of
+  // which llvmpipe pays by switching through every invocation; the same places, bitwise.
+  uint n = end - first;
+  uvec4 place = uvec4(keep);
+  for (uint k = 0u; k < GROUP_ENTRIES / 256u; ++k) {
+    uint slot = l + 256u * k, before = 0u;
+    if (slot >= n) break;
+    for (uint j = 0u; j < n && before < keep; ++j)
+      if (ranksBefore(j, slot)) ++before;
+    place[k] = before;
+  }
+  sync();  // every place is counted before the slots are overwritten
+  if (l < keep) rankPower[l] = -1.0, rankIndex[l] = 0xFFFFFFFFu;  // fewer entries than keep
+  sync();
+  for (uint k = 0u; k < GROUP_ENTRIES / 256u; ++k)
+    if (place[k] < keep) rankPower[place[k]] = power[k], rankIndex[place[k]] = index[k];
+  sync();
 }
