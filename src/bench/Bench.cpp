@@ -50,7 +50,8 @@ struct BenchRow {
   // Of solveMs, the time the CPU waited for the GPU at status readbacks (the only sync): near all
   // of it, the GPU bounds the solve; near none, the CPU's submission of the passes does.
   double waitMs = 0;
-  PassTimings split;  // ms per shot, synchronised
+  PassTimings split;  // ms per shot
+  double busy = 0;    // the split's ms per shot x shots / solveMs
   double itemTrianglesPerSecond = 0, itemPixelsPerSecond = 0, gatherUpdatesPerSecond = 0;
   std::uint64_t hash = 0;                // of the converged B: equal across runs on one backend
   std::vector<ObjectRadiosity> objects;  // for comparing backends (--compare)
@@ -146,10 +147,11 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   row.hash = radiosityHash(atlas, B);
   row.objects = objectRadiosity(scene, atlas, B);
 
-  // The split: a fresh solve timed pass by pass (waits at every pass end), over the first shots
-  // (at least 8 passes).
+  // The split: a fresh solve timed pass by pass over the first shots (at least 8 passes), by GPU
+  // stamps on a hardware GPU (waiting at every stage would add a round trip to each), by waiting
+  // at every stage on a CPU rasterizer (whose stamps tell when work was queued, not when it ran).
   SolverState fresh(scene, atlas);
-  settings.timings = gl::TimerMode::Synchronous;
+  settings.timings = backend.software() ? gl::TimerMode::Synchronous : gl::TimerMode::GpuEveryPass;
   settings.stop = {std::min(std::max(o.splitShots, 8u * shootersPerPass), std::max(row.shots, 1u)), 0};
   ProgressiveSolver timed(fresh, settings);
   if (timed.viewDriven()) timed.look(camera, 1.0);
@@ -163,6 +165,10 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
     row.itemPixelsPerSecond = double(row.itemPixels) / (row.split.itemBuffer * 1e-3);
   }
   if (row.split.gather > 0) row.gatherUpdatesPerSecond = double(row.elements) / (row.split.gather * 1e-3);
+  // How much of the timed run the passes' own work fills; the rest the GPU waited (status
+  // readbacks, the CPU's submission of the passes after each).
+  if (row.solveMs > 0)
+    row.busy = (row.split.select + row.split.itemBuffer + row.split.gather) * double(row.shots) / row.solveMs;
   return row;
 }
 
@@ -246,9 +252,9 @@ std::string tableHeader(const BenchOptions& o) {
       "| scene | polygons | triangles | elements | texel use | shooter blocks | item res (bvh: traced) | shooters/pass "
       "| shots | "
       "time to {:.0f}% (ms) | ms/shot | GPU MiB | GPU alloc MiB (B/element, B/triangle) | resident MiB "
-      "(B/element, B/triangle) | item buffer ms | gather ms | select ms | item tris/s | item px/s | gather texels/s "
-      "|{}\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
+      "(B/element, B/triangle) | item buffer ms | gather ms | select ms | busy | item tris/s | item px/s | gather "
+      "texels/s |{}\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|{}\n",
       o.converge * 100, o.ceiling ? " tris / ceiling | px / fill ceiling | gather / ceiling |" : "",
       o.ceiling ? "---|---|---|" : "");
 }
@@ -268,12 +274,12 @@ std::string rowMarkdown(const BenchRow& r, const Ceilings* ceiling) {
   };
   return fmt::format(
       "| {} | {} | {} | {} | {:.1f} % | {} | {} | {} | {} | {:.1f} | {:.4f} | {} | {} | {} | {:.4f} | {:.4f} | {:.4f} "
-      "| {:.3g} | {:.3g} | {:.3g} |{}\n",
+      "| {:.0f} % | {:.3g} | {:.3g} | {:.3g} |{}\n",
       r.scene, r.size.polygons, r.size.triangles, r.elements, 100 * r.texelUse, r.shooterBlocks,
       r.visibility == "bvh" ? std::string("bvh") : std::to_string(r.itemResolution), r.shootersPerPass, r.shots,
       r.solveMs, r.msPerShot, memory, perUnit(r.allocatedBytes), perUnit(r.residentBytes), r.split.itemBuffer,
-      r.split.gather, r.split.select, r.itemTrianglesPerSecond, r.itemPixelsPerSecond, r.gatherUpdatesPerSecond,
-      fractions);
+      r.split.gather, r.split.select, 100 * r.busy, r.itemTrianglesPerSecond, r.itemPixelsPerSecond,
+      r.gatherUpdatesPerSecond, fractions);
 }
 
 nlohmann::json rowJson(const BenchRow& r) {
@@ -291,6 +297,7 @@ nlohmann::json rowJson(const BenchRow& r) {
           {"time_to_converge_ms", r.solveMs},
           {"warm_up_ms", r.warmUpMs},
           {"gpu_wait_ms", r.waitMs},
+          {"busy_fraction", r.busy},
           {"ms_per_shot", r.msPerShot},
           {"gpu_memory_mib", r.gpuMemoryMiB ? nlohmann::json(*r.gpuMemoryMiB) : nlohmann::json()},
           {"gpu_allocated_bytes", r.allocatedBytes},

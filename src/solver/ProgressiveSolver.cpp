@@ -25,7 +25,6 @@ namespace {
 constexpr unsigned kGatherGroup = 16;     // gather.comp local size (x and y)
 constexpr unsigned kGroupEntries = 1024;  // entries ranked per reduction workgroup (reduce_entry.glsl)
 constexpr unsigned kUnlimitedHistory = 1u << 20;
-constexpr unsigned kTimingStride = 16;  // with GPU stamps, one pass in 16 is timed
 
 enum Slot { kSelect, kItemBuffer, kGather };
 
@@ -335,9 +334,7 @@ unsigned ProgressiveSolver::shootToNextStep(unsigned budget) {
 
 void ProgressiveSolver::runPasses(unsigned passes) {
   for (unsigned k = 0; k < passes && !status_.done; ++k, ++enqueued_) {
-    // GPU stamps cost a query each (on llvmpipe as much as a pass): one pass in kTimingStride
-    // is timed and the totals are scaled; synchronised timing times every pass.
-    const bool timed = settings_.timings == gl::TimerMode::Synchronous || enqueued_ % kTimingStride == 0;
+    const bool timed = timer_.due(enqueued_);  // totals are scaled from the timed passes
     if (timed) timer_.mark(kSelect);
     selectPass();
     if (timed) timer_.mark(kItemBuffer);

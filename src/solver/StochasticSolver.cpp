@@ -21,7 +21,6 @@ namespace {
 
 constexpr unsigned kGroup2D = 16;                  // pyramid.comp and stochastic_update.comp local size (x and y)
 constexpr unsigned kSampleGroup = 64;              // sample.comp local size
-constexpr unsigned kTimingStride = 16;             // with GPU stamps, one iteration in 16 is timed
 constexpr std::uint32_t kStateMagic = 0x53544331;  // "STC1"
 
 enum Slot { kSelect, kItemBuffer, kUpdate };
@@ -126,9 +125,7 @@ void StochasticSolver::updatePass(float weight, float emission) {
 }
 
 void StochasticSolver::iterate(const gl::Texture& source, std::uint32_t key, float weight, float emission) {
-  // GPU stamps cost a query each: one iteration in kTimingStride is timed, totals are scaled.
-  const bool timed = settings_.timings == gl::TimerMode::Synchronous ||
-                     (settings_.timings == gl::TimerMode::Gpu && enqueued_ % kTimingStride == 0);
+  const bool timed = timer_.due(enqueued_);  // totals are scaled from the timed iterations
   ++enqueued_;
   if (timed) timer_.mark(kSelect);
   pyramidPass(source);
