@@ -19,8 +19,9 @@ std::string glString(GLenum e) {
 
 std::string RenderBackend::renderer() const { return glString(GL_RENDERER); }
 std::string RenderBackend::version() const { return glString(GL_VERSION); }
-bool RenderBackend::software() const {
-  const std::string r = renderer();
+bool RenderBackend::software() const { return softwareRenderer(); }
+bool softwareRenderer() {
+  const std::string r = glString(GL_RENDERER);
   return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos;
 }
 void RenderBackend::finish() const { glFinish(); }

@@ -22,6 +22,9 @@ struct BackendOptions {
   bool debug = false;  // KHR_debug context with synchronous error output
 };
 
+// The current context's renderer is a CPU rasterizer (what RenderBackend::software() asks).
+bool softwareRenderer();
+
 class RenderBackend {
  public:
   virtual ~RenderBackend() = default;

@@ -1,6 +1,12 @@
 #include "gl/Timer.h"
 
+#include "gl/Backend.h"
+
 namespace hemirad::gl {
+
+TimerMode contextTimerMode(TimerMode mode) {
+  return mode == TimerMode::Gpu && softwareRenderer() ? TimerMode::Synchronous : mode;
+}
 
 void GpuTimer::mark(int slot) {
   if (mode_ == TimerMode::Off) return;

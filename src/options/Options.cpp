@@ -276,8 +276,8 @@ std::vector<Flag> sceneAndSolverFlags() {
        "Instant radiosity: interleaved sampling, each pixel of an N x N tile shades with 1/N^2 of the VPLs, then a "
        "filter over the tile's pixels of the same polygon (1: every VPL at every pixel, exact)",
        CLI::Range(1, 16)},
-      {"--sync-timings", "", "Exact per-pass times: wait for the GPU at every pass end (slower; needed on llvmpipe)",
-       none},
+      {"--sync-timings", "",
+       "Exact per-pass times: wait for the GPU at every stage (slower on a GPU; what llvmpipe always does)", none},
   };
 }
 

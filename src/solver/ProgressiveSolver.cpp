@@ -39,7 +39,7 @@ unsigned defaultFovDecay(std::size_t blocks, unsigned shootersPerPass) {
 }  // namespace
 
 ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettings& settings)
-    : state_(state), settings_(settings), timer_(settings.timings) {
+    : state_(state), settings_(settings), timer_(gl::contextTimerMode(settings.timings)) {
   if (settings.shootersPerPass < 1 || unsigned(settings.shootersPerPass) > kMaxPassShooters)
     throw InputError(
         fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shootersPerPass));

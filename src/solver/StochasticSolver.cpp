@@ -42,7 +42,7 @@ Source parseSource(const std::string& name) {
 const char* sourceName(Source s) { return s == Source::Mean ? "mean" : "iterate"; }
 
 StochasticSolver::StochasticSolver(SolverState& state, const StochasticSettings& settings)
-    : state_(state), settings_(settings), timer_(settings.timings) {
+    : state_(state), settings_(settings), timer_(gl::contextTimerMode(settings.timings)) {
   if (settings.shooters < 1 || unsigned(settings.shooters) > kMaxPassShooters)
     throw InputError(fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shooters));
   if (settings.stop.targetConvergence > 0)
