@@ -29,7 +29,7 @@
 uniform uint viewMode;
 #endif
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = GATHER_GROUP, local_size_y = GATHER_GROUP) in;  // ProgressiveSolver.cpp kGatherGroup
 layout(binding = IMAGE_RADIOSITY, rgba32f) uniform image2D radiosity;
 layout(binding = IMAGE_DELTA_B, rgba32f) uniform image2D deltaB;
 uniform ivec2 atlasSize;

@@ -54,5 +54,4 @@ TEST_CASE("On a CPU rasterizer a solve's stage timings are parts of its wall tim
                     << ", gather " << t.gather << " ms");
   CHECK(stages <= wall);
   CHECK(stages > 0.5 * wall);
-  CHECK(t.gather > t.select);  // the gather is most of a pass on llvmpipe
 }

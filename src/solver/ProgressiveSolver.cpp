@@ -22,7 +22,9 @@ namespace hemirad {
 
 namespace {
 
-constexpr unsigned kGatherGroup = 16;     // gather.comp local size (x and y)
+// gather.comp's local size (x and y): 8 x 8 fills the H200's 132 SMs better than 16 x 16 at
+// 100k elements (a pass's gather 138 -> 123 us; the same at 10k; docs/bench/h200-2026-12-04f.md).
+constexpr unsigned kGatherGroup = 8;
 constexpr unsigned kGroupEntries = 1024;  // entries ranked per reduction workgroup (reduce_entry.glsl)
 constexpr unsigned kUnlimitedHistory = 1u << 20;
 
@@ -65,6 +67,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
   setUpBvh(gatherDefines);
   if (settings.directOnly) gatherDefines.push_back({"DIRECT_ONLY", "1"});
+  gatherDefines.push_back({"GATHER_GROUP", std::to_string(kGatherGroup)});
   gather_ = computeProgram("gather.comp", gatherDefines);
   if (refinesNear()) gather_.set("refineNear", float(settings.refineNear));
   if (perspective) {
