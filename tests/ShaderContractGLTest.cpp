@@ -23,6 +23,7 @@ bool isStage(const std::string& name) {
 // What each shader needs beyond the contract to compile at all.
 gl::Defines extraDefines(const std::string& name) {
   if (name == "node_stats.comp") return {{"BLOCK_THREADS", "64"}};
+  if (name == "gather.comp") return {{"GATHER_GROUP", "8"}};
   return {};
 }
 
