@@ -5,7 +5,8 @@
 namespace hemirad::gl {
 
 TimerMode contextTimerMode(TimerMode mode) {
-  return mode == TimerMode::Gpu && softwareRenderer() ? TimerMode::Synchronous : mode;
+  const bool stamps = mode == TimerMode::Gpu || mode == TimerMode::GpuEveryPass;
+  return stamps && softwareRenderer() ? TimerMode::Synchronous : mode;
 }
 
 void GpuTimer::mark(int slot) {

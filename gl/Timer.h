@@ -18,9 +18,9 @@ namespace hemirad::gl {
 
 enum class TimerMode { Off, Gpu, GpuEveryPass, Synchronous };
 
-// The mode a timer of the current context should use: `Gpu` is `Synchronous` on a CPU rasterizer,
-// whose stamps would charge the sampled passes' stages with work queued before them (a real_20k
-// solve's report gave select 4,228 ms and gather 4 ms).
+// The mode a timer of the current context should use: GPU stamps (`Gpu`, `GpuEveryPass`) are
+// `Synchronous` on a CPU rasterizer, whose stamps would charge the stages with work queued before
+// them (a real_20k solve's report gave select 4,228 ms and gather 4 ms).
 TimerMode contextTimerMode(TimerMode mode);
 
 class GpuTimer {

@@ -147,11 +147,11 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
   row.hash = radiosityHash(atlas, B);
   row.objects = objectRadiosity(scene, atlas, B);
 
-  // The split: a fresh solve timed pass by pass over the first shots (at least 8 passes), by GPU
-  // stamps on a hardware GPU (waiting at every stage would add a round trip to each), by waiting
-  // at every stage on a CPU rasterizer (whose stamps tell when work was queued, not when it ran).
+  // The split: a fresh solve timed stage by stage in every pass over the first shots (at least 8
+  // passes), by GPU stamps (waiting at every stage would add a round trip to each; a CPU
+  // rasterizer waits instead, gl::contextTimerMode).
   SolverState fresh(scene, atlas);
-  settings.timings = backend.software() ? gl::TimerMode::Synchronous : gl::TimerMode::GpuEveryPass;
+  settings.timings = gl::TimerMode::GpuEveryPass;
   settings.stop = {std::min(std::max(o.splitShots, 8u * shootersPerPass), std::max(row.shots, 1u)), 0};
   ProgressiveSolver timed(fresh, settings);
   if (timed.viewDriven()) timed.look(camera, 1.0);
