@@ -56,7 +56,7 @@ vec3 nearCorrection(vec3 x, vec3 nx, uint polygon, Lookup l) {
       // An empty quadrant, or a flat part of x's own chart (in x's plane: it sends x nothing).
       bool skip = nodes[n].rect.z <= 0 || (chartOf(nodes[n].polygon) == chart && dot(nodes[n].normal.xyz, nx) > 0.99999);
       if (!skip && nodes[n].firstChild != NO_CHILD && nearGatherNode(n, x)) {
-        ++depth, path <<= 2;  // into its first child
+        pathDown(depth, path, false);
         continue;
       }
       vec3 S = stats[n].unshot.rgb, o = nodeOrigin(n);
@@ -68,9 +68,7 @@ vec3 nearCorrection(vec3 x, vec3 nx, uint polygon, Lookup l) {
         for (int k = 0; k < l.count; ++k) d -= l.weight[k] * nodeLight(n, S, o, c[k], nc[k], chart);
         sum += d;
       }
-      while (depth > 0u && (path & 3u) == 3u) --depth, path >>= 2;  // past last children, up
-      if (depth == 0u) break;
-      ++path;  // the next sibling
+      if (!pathNext(depth, path, false)) break;
     }
   }
   return sum;

@@ -34,7 +34,7 @@ NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon) {
     uint n = nodeOnPath(root, depth, path);
     bool empty = nodes[n].rect.z <= 0;
     if (!empty && nodes[n].firstChild != NO_CHILD && nearNode(n, x)) {
-      ++depth, path = (path << 2) | 3u;
+      pathDown(depth, path, true);
       continue;
     }
     NodeStats st = stats[n];
@@ -46,9 +46,7 @@ NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon) {
       l.all += w;
       if (w > 0.0 && !segmentBlocked(o, x, chart, NO_POLYGON, eps)) l.seen += w, l.seenRgb += st.unshot.rgb / area * F;
     }
-    while (depth > 0u && (path & 3u) == 0u) --depth, path >>= 2;  // past first children, up
-    if (depth == 0u) break;
-    --path;  // the previous sibling
+    if (!pathNext(depth, path, true)) break;
   }
   return l;
 }

@@ -37,3 +37,17 @@ uint nodeOnPath(uint b, uint depth, uint path) {
   for (uint l = depth; l > 0u; --l) n = nodes[n].firstChild + ((path >> (2u * (l - 1u))) & 3u);
   return n;
 }
+
+// A path walk's two moves, children first to last (last to first with `lastFirst`): into a node's
+// first child to visit, and, a node done, on to the next (false when the walk is back at its root).
+void pathDown(inout uint depth, inout uint path, bool lastFirst) {
+  ++depth;
+  path = (path << 2) | (lastFirst ? 3u : 0u);
+}
+bool pathNext(inout uint depth, inout uint path, bool lastFirst) {
+  uint lastChild = lastFirst ? 0u : 3u;
+  while (depth > 0u && (path & 3u) == lastChild) --depth, path >>= 2;  // past the last children, up
+  if (depth == 0u) return false;
+  path = lastFirst ? path - 1u : path + 1u;  // the next sibling
+  return true;
+}
