@@ -12,8 +12,14 @@ struct BvhTriangle {
 layout(std430, binding = SSBO_BVH_NODES) readonly buffer BvhNodes { BvhNode bvhNode[]; };
 layout(std430, binding = SSBO_BVH_TRIANGLES) readonly buffer BvhTriangles { BvhTriangle bvhTriangle[]; };
 
-const int BVH_STACK = 33;  // Bvh::kMaxDepth + 1
 const float BVH_MISS = 3.402823e38;
+
+// The walk, in preorder and without a stack (src/solver/Bvh.h): from node n into its first child,
+// which follows it, when the walk meets an inner node's box (`enter`); else past its subtree.
+// A walk runs `for (uint n = 0u, end = bvhNext(0u, false); n < end; n = bvhNext(n, hit))`.
+uint bvhNext(uint n, bool enter) {
+  return enter || floatBitsToUint(bvhNode[n].hi.w) != 0u ? n + 1u : floatBitsToUint(bvhNode[n].lo.w);
+}
 
 float bvhHitTriangle(uint i, vec3 o, vec3 d) {
   vec3 e1 = bvhTriangle[i].e1.xyz, e2 = bvhTriangle[i].e2.xyz, p = cross(d, e2);
@@ -40,19 +46,11 @@ float bvhIntersect(vec3 o, vec3 d, uint skip, out uint polygon) {
   vec3 invD = 1.0 / d;
   float tMax = BVH_MISS;
   polygon = 0xFFFFFFFFu;
-  uint stack[BVH_STACK];
-  int top = 0;
-  stack[top++] = 0u;
-  while (top > 0) {
-    uint n = stack[--top];
-    if (!bvhHitBox(n, o, invD, tMax)) continue;
-    uint first = floatBitsToUint(bvhNode[n].lo.w), count = floatBitsToUint(bvhNode[n].hi.w);
-    if (count == 0u) {
-      stack[top++] = first;
-      stack[top++] = n + 1u;
-      continue;
-    }
-    for (uint i = first; i < first + count; ++i) {
+  bool hit;
+  for (uint n = 0u, end = bvhNext(0u, false); n < end; n = bvhNext(n, hit)) {
+    hit = bvhHitBox(n, o, invD, tMax);
+    uint first = floatBitsToUint(bvhNode[n].lo.w), count = hit ? floatBitsToUint(bvhNode[n].hi.w) : 0u;
+    for (uint i = first; i < first + count; ++i) {  // a leaf's triangles
       uint q = floatBitsToUint(bvhTriangle[i].v0.w);
       if (q == skip) continue;
       float t = bvhHitTriangle(i, o, d);

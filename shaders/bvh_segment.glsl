@@ -8,19 +8,11 @@
 bool segmentBlocked(vec3 o, vec3 x, uint passA, uint passB, float eps) {
   vec3 d = x - o;
   vec3 invD = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));  // an axis-parallel segment: no 0 * inf
-  uint stack[BVH_STACK];
-  int top = 0;
-  stack[top++] = 0u;
-  while (top > 0) {
-    uint n = stack[--top];
-    if (!bvhHitBox(n, o, invD, 1.0)) continue;
-    uint first = floatBitsToUint(bvhNode[n].lo.w), count = floatBitsToUint(bvhNode[n].hi.w);
-    if (count == 0u) {
-      stack[top++] = first;
-      stack[top++] = n + 1u;
-      continue;
-    }
-    for (uint i = first; i < first + count; ++i) {
+  bool hit;
+  for (uint n = 0u, end = bvhNext(0u, false); n < end; n = bvhNext(n, hit)) {
+    hit = bvhHitBox(n, o, invD, 1.0);
+    uint first = floatBitsToUint(bvhNode[n].lo.w), count = hit ? floatBitsToUint(bvhNode[n].hi.w) : 0u;
+    for (uint i = first; i < first + count; ++i) {  // a leaf's triangles
       uint q = floatBitsToUint(bvhTriangle[i].v0.w);
       uint c = chartOf(q);
       if (c != passA && c != passB && blocksSegment(q, o, x, eps)) return true;

@@ -52,18 +52,10 @@ bool pieceMayBeBlocked(vec3 x, vec3 n, uint base) {
   vec3 nl = cross(p[1] - p[0], p[2] - p[0]);
   bool aboveHorizon = true;
   for (int i = 0; i < count; ++i) aboveHorizon = aboveHorizon && dot(n, p[i] - x) > 0.0;
-  uint stack[BVH_STACK];
-  int top = 0;
-  stack[top++] = 0u;
-  while (top > 0) {
-    uint k = stack[--top];
-    if (any(greaterThan(bvhNode[k].lo.xyz, hi)) || any(lessThan(bvhNode[k].hi.xyz, lo))) continue;
-    uint first = floatBitsToUint(bvhNode[k].lo.w), tris = floatBitsToUint(bvhNode[k].hi.w);
-    if (tris == 0u) {
-      stack[top++] = first;
-      stack[top++] = k + 1u;
-      continue;
-    }
+  bool hit;
+  for (uint k = 0u, end = bvhNext(0u, false); k < end; k = bvhNext(k, hit)) {
+    hit = all(lessThanEqual(bvhNode[k].lo.xyz, hi)) && all(greaterThanEqual(bvhNode[k].hi.xyz, lo));
+    uint first = floatBitsToUint(bvhNode[k].lo.w), tris = hit ? floatBitsToUint(bvhNode[k].hi.w) : 0u;
     for (uint t = first; t < first + tris; ++t) {
       vec3 a = bvhTriangle[t].v0.xyz, b = a + bvhTriangle[t].e1.xyz, c = a + bvhTriangle[t].e2.xyz;
       bool outside = max(max(dot(nl, a - p[0]), dot(nl, b - p[0])), dot(nl, c - p[0])) <= 0.0 ||
@@ -86,18 +78,10 @@ bool pieceHidden(vec3 x, uint base) {
   int count = int(shooterShape[base].x);
   vec3 p0 = shooterShape[base + 1u].xyz, d = p0 - x;
   vec3 invD = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));
-  uint stack[BVH_STACK];
-  int top = 0;
-  stack[top++] = 0u;
-  while (top > 0) {
-    uint k = stack[--top];
-    if (!bvhHitBox(k, x, invD, 1.0)) continue;
-    uint first = floatBitsToUint(bvhNode[k].lo.w), tris = floatBitsToUint(bvhNode[k].hi.w);
-    if (tris == 0u) {
-      stack[top++] = first;
-      stack[top++] = k + 1u;
-      continue;
-    }
+  bool hit;
+  for (uint k = 0u, end = bvhNext(0u, false); k < end; k = bvhNext(k, hit)) {
+    hit = bvhHitBox(k, x, invD, 1.0);
+    uint first = floatBitsToUint(bvhNode[k].lo.w), tris = hit ? floatBitsToUint(bvhNode[k].hi.w) : 0u;
     for (uint t = first; t < first + tris; ++t) {
       uint q = floatBitsToUint(bvhTriangle[t].v0.w);
       bool all = blocksSegment(q, x, p0, segmentEps);

@@ -36,38 +36,43 @@ TEST_CASE("BVH traversal finds the nearest hit that testing every triangle finds
   CHECK(hits > 1000);  // most rays from inside the box meet a wall
 }
 
-TEST_CASE("BVH nodes bound their triangles and every triangle lies in exactly one leaf", "[bvh]") {
+namespace {
+
+// Checks node n's subtree (its triangles inside every box above them) and returns the index
+// past it: a preorder layout, where a stackless walk goes when it skips n.
+std::uint32_t checkSubtree(const Bvh& bvh, std::uint32_t n, std::vector<std::uint32_t> above,
+                           std::multiset<std::uint32_t>& seen) {
+  above.push_back(n);
+  const BvhNode& node = bvh.nodes()[n];
+  const std::uint32_t first = floatBitsToUint(node.lo.w), count = floatBitsToUint(node.hi.w);
+  if (count == 0) {  // inner: two children, the first right after it, filling [n + 1, first)
+    REQUIRE(first > n + 2);
+    const std::uint32_t second = checkSubtree(bvh, n + 1, above, seen);
+    REQUIRE(checkSubtree(bvh, second, above, seen) == first);
+    return first;
+  }
+  for (std::uint32_t t = first; t < first + count; ++t) {
+    seen.insert(t);
+    const BvhTriangle& tri = bvh.triangles()[t];
+    for (glm::vec3 v : {glm::vec3(tri.v0), glm::vec3(tri.v0) + glm::vec3(tri.e1), glm::vec3(tri.v0) + glm::vec3(tri.e2)})
+      for (std::uint32_t a : above) {
+        CHECK(glm::all(glm::lessThanEqual(glm::vec3(bvh.nodes()[a].lo), v)));
+        CHECK(glm::all(glm::greaterThanEqual(glm::vec3(bvh.nodes()[a].hi), v)));
+      }
+  }
+  return n + 1;
+}
+
+}  // namespace
+
+TEST_CASE("BVH nodes lie in preorder, bound their triangles, and every triangle lies in exactly one leaf", "[bvh]") {
   const Scene scene = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
   const Bvh bvh(scene);
   std::multiset<std::uint32_t> seen;
-  // Walk from the root, checking each leaf's triangles against every box above it.
-  std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> stack{{0u, {}}};
-  while (!stack.empty()) {
-    auto [n, above] = stack.back();
-    stack.pop_back();
-    above.push_back(n);
-    const BvhNode& node = bvh.nodes()[n];
-    const std::uint32_t first = floatBitsToUint(node.lo.w), count = floatBitsToUint(node.hi.w);
-    if (count == 0) {
-      REQUIRE(first > n + 1);
-      stack.push_back({n + 1, above});
-      stack.push_back({first, above});
-      continue;
-    }
-    for (std::uint32_t t = first; t < first + count; ++t) {
-      seen.insert(t);
-      const BvhTriangle& tri = bvh.triangles()[t];
-      for (glm::vec3 v :
-           {glm::vec3(tri.v0), glm::vec3(tri.v0) + glm::vec3(tri.e1), glm::vec3(tri.v0) + glm::vec3(tri.e2)})
-        for (std::uint32_t a : above) {
-          CHECK(glm::all(glm::lessThanEqual(glm::vec3(bvh.nodes()[a].lo), v)));
-          CHECK(glm::all(glm::greaterThanEqual(glm::vec3(bvh.nodes()[a].hi), v)));
-        }
-    }
-  }
+  REQUIRE(checkSubtree(bvh, 0, {}, seen) == bvh.nodes().size());  // the root's subtree is every node
   REQUIRE(seen.size() == bvh.triangles().size());
   CHECK(std::set<std::uint32_t>(seen.begin(), seen.end()).size() == seen.size());
-  CHECK(bvh.depth() <= Bvh::kMaxDepth);  // the shader's stack holds the deepest path
+  CHECK(bvh.depth() <= Bvh::kMaxDepth);
 }
 
 TEST_CASE("The BVH keeps a room's walls near its root however many small triangles furnish it (surface-area heuristic)",
@@ -83,14 +88,14 @@ TEST_CASE("The BVH keeps a room's walls near its root however many small triangl
   const Bvh bvh(scene);
   REQUIRE(bvh.triangles().size() == 20038);
   int deepestWall = 0, deepestPatch = 0;
-  std::vector<std::pair<std::uint32_t, int>> stack{{0u, 0}};
-  while (!stack.empty()) {
-    const auto [n, depth] = stack.back();
-    stack.pop_back();
+  std::vector<std::uint32_t> open;  // the ends of the subtrees node n lies in (preorder): its depth
+  for (std::uint32_t n = 0; n < bvh.nodes().size(); ++n) {
+    while (!open.empty() && open.back() <= n) open.pop_back();
+    const int depth = int(open.size());
     const BvhNode& node = bvh.nodes()[n];
     const std::uint32_t first = floatBitsToUint(node.lo.w), count = floatBitsToUint(node.hi.w);
     if (count == 0) {
-      stack.push_back({n + 1, depth + 1}), stack.push_back({first, depth + 1});
+      open.push_back(first);
       continue;
     }
     for (std::uint32_t t = first; t < first + count; ++t) {

@@ -161,8 +161,8 @@ int Bvh::build(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t
   std::size_t mid = depth + int(medianLevels) + 1 < kMaxDepth ? splitBySah(order, begin, end, clo, chi) : begin;
   if (mid > begin) {
     build(order, begin, mid, depth + 1);
-    const int second = build(order, mid, end, depth + 1);
-    nodes_[index].lo.w = uintBitsToFloat(std::uint32_t(second));
+    build(order, mid, end, depth + 1);
+    nodes_[index].lo.w = uintBitsToFloat(std::uint32_t(nodes_.size()));
     return index;
   }
   const glm::vec3 extent = chi - clo;
@@ -174,32 +174,31 @@ int Bvh::build(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t
                             (centroids_[a][axis] == centroids_[b][axis] && a < b);
                    });
   build(order, begin, mid, depth + 1);
-  const int second = build(order, mid, end, depth + 1);
-  nodes_[index].lo.w = uintBitsToFloat(std::uint32_t(second));
+  build(order, mid, end, depth + 1);
+  nodes_[index].lo.w = uintBitsToFloat(std::uint32_t(nodes_.size()));
   return index;
+}
+
+// As bvh.glsl's bvhNext: into an inner node whose box the walk meets, else past it.
+std::uint32_t Bvh::next(std::uint32_t n, bool enter) const {
+  const bool leaf = floatBitsToUint(nodes_[n].hi.w) != 0;
+  return enter || leaf ? n + 1 : floatBitsToUint(nodes_[n].lo.w);
 }
 
 std::optional<BvhHit> Bvh::intersect(glm::vec3 origin, glm::vec3 dir, std::uint32_t skip) const {
   const glm::vec3 invD = 1.0f / dir;
   std::optional<BvhHit> best;
   float tMax = std::numeric_limits<float>::max();
-  std::uint32_t stack[kMaxDepth + 1];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const BvhNode& n = nodes_[stack[--top]];
-    if (hitBox(n, origin, invD, tMax) == std::numeric_limits<float>::infinity()) continue;
+  for (std::uint32_t k = 0, end = next(0, false); k < end;) {
+    const BvhNode& n = nodes_[k];
+    const bool hit = hitBox(n, origin, invD, tMax) != std::numeric_limits<float>::infinity();
     const std::uint32_t first = floatBitsToUint(n.lo.w), count = floatBitsToUint(n.hi.w);
-    if (count == 0) {  // inner: both children (the first is the next node)
-      stack[top++] = first;
-      stack[top++] = std::uint32_t(&n - nodes_.data()) + 1;
-      continue;
-    }
-    for (std::uint32_t i = first; i < first + count; ++i) {
+    for (std::uint32_t i = first; hit && i < first + count; ++i) {  // a leaf's triangles
       if (floatBitsToUint(triangles_[i].v0.w) == skip) continue;
       const float t = hitTriangle(triangles_[i], origin, dir);
       if (t > 0.0f && t < tMax) tMax = t, best = BvhHit{t, floatBitsToUint(triangles_[i].v0.w), i};
     }
+    k = next(k, hit);
   }
   return best;
 }

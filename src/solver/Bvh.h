@@ -1,6 +1,6 @@
 // A bounding-volume hierarchy over the scene's triangles, built on the CPU (binned surface-area
-// heuristic, median splits where it finds none) and flattened depth-first into std430 arrays that the VPL
-// tracer (shaders/bvh.glsl) walks. Every struct is whole vec4s: drivers pad smaller members
+// heuristic, median splits where it finds none) and flattened in preorder into std430 arrays that the
+// shaders walk (shaders/bvh.glsl). Every struct is whole vec4s: drivers pad smaller members
 // differently (seed 002 §4.1), vec4s they cannot. The CPU traversal mirrors the shader's, for tests.
 #pragma once
 #include <cstdint>
@@ -13,8 +13,11 @@
 
 namespace hemirad {
 
-// lo.w: for an inner node the index of its second child (the first follows it), for a leaf its
+// Preorder: an inner node's first child follows it. lo.w: for an inner node the index just past
+// its subtree (where a walk that skips it goes on; a leaf's is the next index), for a leaf its
 // first triangle; hi.w: the leaf's triangle count, 0 for an inner node. Both stored as uint bits.
+// So a walk needs no stack (bvh.glsl's bvhNext): llvmpipe pays for a per-invocation array at every
+// push and pop, and loses nodes when one stack walk calls another (docs/design.md#visibility).
 struct BvhNode {
   glm::vec4 lo, hi;
 };
@@ -34,7 +37,7 @@ struct BvhHit {
 class Bvh {
  public:
   static constexpr int kLeafSize = 2;
-  static constexpr int kMaxDepth = 32;  // the shader's traversal stack holds this many nodes
+  static constexpr int kMaxDepth = 32;  // median splits below this; bounds the build's recursion
 
   explicit Bvh(const Scene& scene);
   const std::vector<BvhNode>& nodes() const { return nodes_; }
@@ -51,6 +54,7 @@ class Bvh {
   std::size_t splitBySah(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end, glm::vec3 clo,
                          glm::vec3 chi);
   static int binOf(float c, float lo, float extent);
+  std::uint32_t next(std::uint32_t n, bool enter) const;
   std::vector<BvhNode> nodes_;
   std::vector<BvhTriangle> triangles_;
   std::vector<glm::vec3> centroids_;
