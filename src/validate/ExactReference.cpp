@@ -15,10 +15,22 @@ std::vector<std::vector<glm::dvec3>> polygonList(const Scene& scene) {
 ExactReference::ExactReference(const Scene& scene, const Atlas& atlas)
     : scene_(scene), atlas_(atlas), visibility_(polygonList(scene)) {}
 
+namespace {
+
+// p moved along the polygon's normal onto its plane: where light leaves or arrives. A curved
+// chart's element centre, the mean of its pieces' centroids, sits off its facets (inside a convex
+// object), and a segment from it crosses its own surface; on a planar chart this moves nothing.
+glm::dvec3 ontoPlane(const glm::dvec3& p, const ScenePolygon& polygon) {
+  return p - polygon.normal * glm::dot(polygon.normal, p - polygon.vertices[0]);
+}
+
+}  // namespace
+
 std::vector<PairSample> ExactReference::fromShooter(std::size_t s) const {
   const int sx = int(s % atlas_.width), sy = int(s / atlas_.width);
   const int shooterPolygon = int(atlas_.polygonOf[s]);
   const glm::dvec3 ps(atlas_.positionArea[s]), ns = glm::normalize(glm::dvec3(atlas_.normalOf[s]));
+  const glm::dvec3 leaves = ontoPlane(ps, scene_.polygons()[std::size_t(shooterPolygon)]);
   const std::vector<Poly3> element = atlas_.elementShape(scene_, sx, sy);
   const std::uint32_t shooterChart = atlas_.chartAt(s);
   std::vector<PairSample> out(atlas_.polygonOf.size());
@@ -31,19 +43,25 @@ std::vector<PairSample> ExactReference::fromShooter(std::size_t s) const {
       p.facing = cpu::facing(ps, ns, pr, nr);
       if (!p.facing) continue;
       const std::uint32_t receiverChart = atlas_.chartOf[rp];
-      // What the GPU's visibility test (shaders/visibility.glsl) does not count either: the
+      // What the GPU's visibility tests (shaders/visibility.glsl) do not count either: the
       // receiver's own chart (a curved one's element centre sits off its facets) and any polygon
       // whose plane holds an end of the segment, which only touches it there (the item buffer clips
       // the shooter's plane away; a coplanar neighbour at the receiver's centre is a contact).
-      auto passes = [&](const glm::dvec3& q, int p) {
-        if (p == shooterPolygon || p == int(rp) || atlas_.chartOf[std::size_t(p)] == receiverChart) return true;
-        const ScenePolygon& poly = scene_.polygons()[std::size_t(p)];
-        const double tolerance = 1e-9 * (1 + glm::length(poly.vertices[0]));
-        return std::abs(glm::dot(poly.normal, q - poly.vertices[0])) <= tolerance ||
-               std::abs(glm::dot(poly.normal, pr - poly.vertices[0])) <= tolerance;
+      auto between = [&](const glm::dvec3& q, const glm::dvec3& x, std::uint32_t passing) {
+        return visibility_.visible(q, x, [&](int p) {
+          const std::uint32_t c = atlas_.chartOf[std::size_t(p)];
+          if (p == shooterPolygon || p == int(rp) || c == receiverChart || c == passing) return true;
+          const ScenePolygon& poly = scene_.polygons()[std::size_t(p)];
+          const double tolerance = 1e-9 * (1 + glm::length(poly.vertices[0]));
+          return std::abs(glm::dot(poly.normal, q - poly.vertices[0])) <= tolerance ||
+                 std::abs(glm::dot(poly.normal, x - poly.vertices[0])) <= tolerance;
+        });
       };
-      auto seen = [&](const glm::dvec3& q) { return visibility_.visible(q, pr, [&](int p) { return passes(q, p); }); };
-      p.visible = seen(ps);
+      // Element to element: between the surface points the centres stand for, both charts passing
+      // (point visibility cannot resolve a surface against itself), as the traced test asks; not
+      // from a curved chart's centre inside its own object, which its facets would hide.
+      p.visible = between(leaves, ontoPlane(pr, scene_.polygons()[rp]), shooterChart);
+      auto seen = [&](const glm::dvec3& q) { return between(q, pr, receiverChart); };
       for (const Poly3& piece : element) {  // linear in the shape: the pieces' sum is the element's
         cpu::ElementFormFactor f = cpu::pointToElement(pr, nr, piece, glm::normalize(newellNormal(piece)), seen);
         p.formFactor += f.value;

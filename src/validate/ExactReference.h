@@ -1,5 +1,5 @@
 // The exact CPU reference for one shooter element, receiver by receiver: CGAL visibility
-// between element centres and the exact (contour, occlusion-stratified) form factor from each
+// between the surface points of the elements' centres and the exact (contour, occlusion-stratified) form factor from each
 // receiver centre to the shooter element. What the GPU item buffer and exact form factor are
 // checked against.
 #pragma once
