@@ -47,7 +47,7 @@ void main() {
   vec4 pa = texelFetch(atlasPositionArea, t, 0);
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
   bool none = phi <= 0.0 || leaf <= 0.0 || polygon == NO_POLYGON;  // a scene without light
-  control.shooter[k].positionArea = pa;
+  control.shooter[k].positionArea = none ? pa : vec4(shooterEye(pa.xyz, polygon, pa.w), pa.w);
   // The element's mean normal: a texel of a curved chart spans polygons (a polygon's own otherwise).
   control.shooter[k].normal = vec4(none ? vec3(0.0, 0.0, 1.0) : texelFetch(atlasNormal, t, 0).xyz, 0.0);
   control.shooter[k].shot = none ? vec4(0.0) : vec4(imageLoad(radiosity, t).rgb * (phi / (leaf * float(shooters))), 0.0);

@@ -23,6 +23,16 @@ vec3 ontoPlane(vec3 p, uint polygon) {
   vec4 plane = polygons[polygon].normal;
   return p - (dot(plane.xyz, p) - plane.w) * plane.xyz;
 }
+// Where a shooter of `polygon` with this centre and area sees from. A curved element's or block's
+// centre (the mean of its pieces' centroids) sits off its facets: behind them on a convex surface,
+// inside the object, where an item buffer sees only the object's own facets hide everything, so it
+// looks out from its polygon's plane; in front of them on a concave one, in the open, where it
+// stays (the plane there runs behind the surface's rims). A planar one's centre, on its plane to
+// rounding, stays bit for bit.
+vec3 shooterEye(vec3 centre, uint polygon, float area) {
+  float behind = polygons[polygon].normal.w - dot(polygons[polygon].normal.xyz, centre);
+  return behind > 1e-4 * sqrt(area) ? ontoPlane(centre, polygon) : centre;
+}
 uint chartOf(uint polygon) { return polygon == NO_POLYGON ? NO_POLYGON : polygons[polygon].vertices.z; }
 // The chart of atlas texel t, NO_POLYGON outside the atlas: charts touch its border (no gutters,
 // src/scene/AtlasPacker.h), and texelFetch out of range is undefined (0 under robust access:

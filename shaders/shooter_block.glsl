@@ -4,7 +4,7 @@
 // and shooter_tree.glsl.
 void describeNode(uint slot, uint node, uint block) {
   Node n = nodes[node];
-  control.shooter[slot].positionArea = n.centreArea;
+  control.shooter[slot].positionArea = vec4(shooterEye(n.centreArea.xyz, n.polygon, n.centreArea.w), n.centreArea.w);
   control.shooter[slot].normal = vec4(n.normal.xyz, 0.0);
   control.shooter[slot].shot = vec4(0.0);
   control.shooter[slot].rect = n.rect;
@@ -25,7 +25,7 @@ void describeUnshot(uint slot, uint node, bool importance) {
   NodeStats s = stats[node];
   vec4 centre = importance ? s.viewCentre : s.lightCentre;
   float area = nodes[node].centreArea.w;
-  if (centre.w > 0.0) control.shooter[slot].positionArea.xyz = centre.xyz / centre.w;
+  if (centre.w > 0.0) control.shooter[slot].positionArea.xyz = shooterEye(centre.xyz / centre.w, nodes[node].polygon, area);
   float reflects = dot(polygons[nodes[node].polygon].reflectance.rgb, LUMINANCE);
   control.shooter[slot].shot = importance ? vec4(0.0, 0.0, 0.0, reflects * s.unshot.a / area) : vec4(s.unshot.rgb / area, 0.0);
 }

@@ -45,7 +45,8 @@ float visibility(uint shooter, vec3 o, vec3 x, uint polygon) {
   uint tested = NO_POLYGON;
   // The receiver's own chart does not occlude it: a planar one cannot, and a curved one's element
   // centre (its pieces' centroid) sits off its facets, which would shadow it across a convex fold.
-  // (A shooter's chart still does: its facets hide what lies behind a curved block.)
+  // (A shooter's chart still does: its facets hide what lies behind a concave block; o lies on
+  // the shooter's polygon's plane, scene.glsl's shooterEye, so a convex one's are behind it.)
   uint receiverChart = chartOf(polygon);
   for (int k = 0; k < 9; ++k) {
     ivec3 p = ivec3(clamp(centre.xy + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), size - 1), centre.z);
