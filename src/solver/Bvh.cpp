@@ -70,7 +70,7 @@ Bvh::Bvh(const Scene& scene) {
   for (std::uint32_t i : order) sorted.push_back(tris[i]);
   triangles_ = std::move(sorted);
   centroids_.clear();
-  if (depth_ > kMaxDepth) fail("the scene's BVH is {} levels deep, more than the tracer's {}", depth_, kMaxDepth);
+  if (depth_ > kMaxDepth) fail("the scene's BVH is {} levels deep, more than the build allows ({})", depth_, kMaxDepth);
 }
 
 namespace {
