@@ -54,7 +54,8 @@ std::uint32_t checkSubtree(const Bvh& bvh, std::uint32_t n, std::vector<std::uin
   for (std::uint32_t t = first; t < first + count; ++t) {
     seen.insert(t);
     const BvhTriangle& tri = bvh.triangles()[t];
-    for (glm::vec3 v : {glm::vec3(tri.v0), glm::vec3(tri.v0) + glm::vec3(tri.e1), glm::vec3(tri.v0) + glm::vec3(tri.e2)})
+    for (glm::vec3 v :
+         {glm::vec3(tri.v0), glm::vec3(tri.v0) + glm::vec3(tri.e1), glm::vec3(tri.v0) + glm::vec3(tri.e2)})
       for (std::uint32_t a : above) {
         CHECK(glm::all(glm::lessThanEqual(glm::vec3(bvh.nodes()[a].lo), v)));
         CHECK(glm::all(glm::greaterThanEqual(glm::vec3(bvh.nodes()[a].hi), v)));

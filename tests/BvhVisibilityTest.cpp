@@ -1,9 +1,9 @@
 // --visibility bvh (docs/design.md#visibility): the gather's segment tests nominated by the scene's
 // BVH instead of an item buffer. Where the item buffer is exact (the hemicube at item-mesh level 0
 // on the Cornell box), both give the same solution; in a closed box nothing may be falsely hidden.
+#include <fmt/format.h>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -105,8 +105,10 @@ TEST_CASE("Traced visibility misses no occluder thinner than an item-buffer pixe
   CHECK(traced["visibility_agreement"].get<double>() == 1.0);
 }
 
-TEST_CASE("On curved charts the item buffer and the traced test agree with CGAL between the surface points element centres stand for",
-          "[cli][visibility]") {
+TEST_CASE(
+    "On curved charts the item buffer and the traced test agree with CGAL between the surface points element centres "
+    "stand for",
+    "[cli][visibility]") {
   // A 16 x 8-facet ball over a floor under a light, at the default chart angle: the ball's charts
   // are curved, their element centres off their facets. The reference asks visibility between the
   // centres moved onto their polygons' planes, both charts passing (src/validate/ExactReference.cpp);

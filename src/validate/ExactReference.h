@@ -1,7 +1,6 @@
 // The exact CPU reference for one shooter element, receiver by receiver: CGAL visibility
-// between the surface points of the elements' centres and the exact (contour, occlusion-stratified) form factor from each
-// receiver centre to the shooter element. What the GPU item buffer and exact form factor are
-// checked against.
+// between the surface points of the elements' centres and the exact (contour, occlusion-stratified) form factor from
+// each receiver centre to the shooter element. What the GPU item buffer and exact form factor are checked against.
 #pragma once
 #include <vector>
 
