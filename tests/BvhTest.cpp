@@ -76,6 +76,19 @@ TEST_CASE("BVH nodes lie in preorder, bound their triangles, and every triangle 
   CHECK(bvh.depth() <= Bvh::kMaxDepth);
 }
 
+TEST_CASE("A BVH that is a single leaf is walked: its root is the whole walk", "[bvh]") {
+  // One quad, two triangles: the root is a leaf (kLeafSize 2), whose index past it is 1.
+  Scene scene;
+  scene.addPolygon(test::rectangle({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, 1, 1), test::material(scene, 0.5, 0.0),
+                   scene.addObject("quad"));
+  const Bvh bvh(scene);
+  REQUIRE(bvh.nodes().size() == 1);
+  const auto hit = bvh.intersect({0.5f, 1.0f, 0.5f}, {0.0f, -1.0f, 0.0f}, 0xFFFFFFFFu);
+  REQUIRE(hit.has_value());
+  CHECK(hit->t == Approx(1.0f));
+  CHECK_FALSE(bvh.intersect({1.5f, 1.0f, 0.5f}, {0.0f, -1.0f, 0.0f}, 0xFFFFFFFFu).has_value());
+}
+
 TEST_CASE("The BVH keeps a room's walls near its root however many small triangles furnish it (surface-area heuristic)",
           "[bvh]") {
   // The Cornell box with a 100 x 100-quad patch (20,000 triangles) on its floor. A median split
