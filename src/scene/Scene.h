@@ -42,6 +42,10 @@ struct ScenePolygon {
   double area = 0;
   int material = 0;
   int object = 0;
+  // Signed distance of p in front of the plane (negative behind it).
+  double height(const glm::dvec3& p) const { return glm::dot(normal, p - vertices[0]); }
+  // p moved along the normal onto the plane (as shaders/scene.glsl's ontoPlane).
+  glm::dvec3 ontoPlane(const glm::dvec3& p) const { return p - normal * height(p); }
 };
 
 class Scene {

@@ -15,22 +15,13 @@ std::vector<std::vector<glm::dvec3>> polygonList(const Scene& scene) {
 ExactReference::ExactReference(const Scene& scene, const Atlas& atlas)
     : scene_(scene), atlas_(atlas), visibility_(polygonList(scene)) {}
 
-namespace {
-
-// p moved along the polygon's normal onto its plane: where light leaves or arrives. A curved
-// chart's element centre, the mean of its pieces' centroids, sits off its facets (inside a convex
-// object), and a segment from it crosses its own surface; on a planar chart this moves nothing.
-glm::dvec3 ontoPlane(const glm::dvec3& p, const ScenePolygon& polygon) {
-  return p - polygon.normal * glm::dot(polygon.normal, p - polygon.vertices[0]);
-}
-
-}  // namespace
-
 std::vector<PairSample> ExactReference::fromShooter(std::size_t s) const {
   const int sx = int(s % atlas_.width), sy = int(s / atlas_.width);
   const int shooterPolygon = int(atlas_.polygonOf[s]);
   const glm::dvec3 ps(atlas_.positionArea[s]), ns = glm::normalize(glm::dvec3(atlas_.normalOf[s]));
-  const glm::dvec3 leaves = ontoPlane(ps, scene_.polygons()[std::size_t(shooterPolygon)]);
+  // Where light leaves and arrives: a curved chart's centre, the mean of its pieces' centroids, sits
+  // off its facets (inside a convex object), and a segment from it crosses its own surface.
+  const glm::dvec3 leaves = scene_.polygons()[std::size_t(shooterPolygon)].ontoPlane(ps);
   const std::vector<Poly3> element = atlas_.elementShape(scene_, sx, sy);
   const std::uint32_t shooterChart = atlas_.chartAt(s);
   std::vector<PairSample> out(atlas_.polygonOf.size());
@@ -53,15 +44,14 @@ std::vector<PairSample> ExactReference::fromShooter(std::size_t s) const {
           if (p == shooterPolygon || p == int(rp) || c == receiverChart || c == passing) return true;
           const ScenePolygon& poly = scene_.polygons()[std::size_t(p)];
           const double tolerance = 1e-9 * (1 + glm::length(poly.vertices[0]));
-          return std::abs(glm::dot(poly.normal, q - poly.vertices[0])) <= tolerance ||
-                 std::abs(glm::dot(poly.normal, x - poly.vertices[0])) <= tolerance;
+          return std::abs(poly.height(q)) <= tolerance || std::abs(poly.height(x)) <= tolerance;
         });
       };
       // Element to element: between the surface points the centres stand for, both charts passing
       // (point visibility cannot resolve a surface against itself), as the traced test asks; not
       // from a curved chart's centre inside its own object, which its facets would hide.
-      p.visible = between(leaves, ontoPlane(pr, scene_.polygons()[rp]), shooterChart);
-      auto seen = [&](const glm::dvec3& q) { return between(q, pr, receiverChart); };
+      p.visible = between(leaves, scene_.polygons()[rp].ontoPlane(pr), shooterChart);
+      auto seen = [&](const glm::dvec3& q) { return between(q, pr, receiverChart); };  // no further chart
       for (const Poly3& piece : element) {  // linear in the shape: the pieces' sum is the element's
         cpu::ElementFormFactor f = cpu::pointToElement(pr, nr, piece, glm::normalize(newellNormal(piece)), seen);
         p.formFactor += f.value;

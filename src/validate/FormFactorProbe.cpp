@@ -43,10 +43,9 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   for (int k = 0; k < 4; ++k) shooter.positionArea[k] = a.positionArea[s][k];
   {  // where it sees from, as scene.glsl's shooterEye: a centre behind its polygon's plane moved onto it
     const ScenePolygon& p = state_.scene.polygons()[polygon];
-    const glm::dvec3 centre(a.positionArea[s]);
-    const double behind = -glm::dot(p.normal, centre - p.vertices[0]);
-    if (behind > 1e-4 * std::sqrt(double(a.positionArea[s].w)))
-      for (int k = 0; k < 3; ++k) shooter.positionArea[k] = float(centre[k] + behind * p.normal[k]);
+    const glm::dvec3 centre(a.positionArea[s]), onto = p.ontoPlane(centre);
+    if (-p.height(centre) > 1e-4 * std::sqrt(double(a.positionArea[s].w)))
+      for (int k = 0; k < 3; ++k) shooter.positionArea[k] = float(onto[k]);
   }
   shooter.normal[0] = float(n.x), shooter.normal[1] = float(n.y), shooter.normal[2] = float(n.z);
   shooter.rect[0] = int(s % a.width), shooter.rect[1] = int(s / a.width), shooter.rect[2] = shooter.rect[3] = 1;
