@@ -179,3 +179,24 @@ TEST_CASE("Batched passes converge to the one-shooter solution", "[gl]") {
   }
   CHECK(b.status.shots <= a.status.shots + 16 * 4);
 }
+
+TEST_CASE("Running ahead of the status readback gives advance()'s radiosity bits and final status", "[gl]") {
+  // advanceAhead() returns the status a batch late; the passes enqueued after the stop rule fired
+  // are empty, so settle() ends where advance() does, whatever the batch sizes.
+  Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  ProgressiveSettings settings;
+  settings.stop = GENERATE(StopRule{0, 0.95}, StopRule{200, 0});
+  const test::Solved synced = test::solve(s, 20.0, settings);
+  SolverState state(s, synced.atlas);
+  ProgressiveSolver solver(state, settings);
+  SolveStatus status;
+  unsigned batches = 0;
+  for (unsigned batch = 1; !status.done; batch = batch % 5 + 1, ++batches) status = solver.advanceAhead(batch * 16);
+  const SolveStatus settled = solver.settle(status);
+  INFO("synced: " << synced.status.shots << " shots, ahead: " << settled.shots << " in " << batches << " batches");
+  CHECK(batches > 2);
+  CHECK(settled.done);
+  CHECK(settled.shots == synced.status.shots);
+  CHECK(settled.convergence == synced.status.convergence);
+  CHECK(radiosityHash(synced.atlas, state.readRadiosity()) == synced.hash);
+}

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "gl/Objects.h"
+#include "gl/Readback.h"
 #include "gl/Shader.h"
 #include "gl/Timer.h"
 #include "src/scene/Camera.h"
@@ -113,6 +114,8 @@ class ProgressiveSolver final : public Solver {
   std::vector<float> directImportance() const { return view_ ? view_->readDirect() : std::vector<float>{}; }
   // Runs passes of up to shootersPerPass shots until `shots` more have been enqueued.
   SolveStatus advance(unsigned shots) override;
+  SolveStatus advanceAhead(unsigned shots) override;
+  SolveStatus settle(SolveStatus last) override;
   const PassTimings& timings() const override { return timings_; }
   std::vector<float> convergenceHistory() const override;
   std::vector<std::uint8_t> saveState() const override;  // the control block's status and history
@@ -157,7 +160,8 @@ class ProgressiveSolver final : public Solver {
   bool openWholeView();                       // out of light with entries held back
   unsigned shootToNextStep(unsigned budget);  // returns the shots enqueued
   bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
-  SolveStatus readStatus();
+  SolveStatus readStatus();     // after every pass enqueued so far
+  SolveStatus collectStatus();  // the oldest pending status copy
 
   SolverState& state_;
   ProgressiveSettings settings_;
@@ -171,6 +175,7 @@ class ProgressiveSolver final : public Solver {
   std::vector<StatsGroup> stats_;
   gl::Program reduce_, select_, gather_;
   gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
+  gl::Readback statusCopies_;               // the control block's status header, read back
   std::size_t discShapes_ = 0;
   gl::Buffer shapes_;  // per node: its exact shape (shapeTable), what the gather integrates over
   int treeDepth_ = 0;  // levels below the deepest block

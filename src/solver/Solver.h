@@ -60,7 +60,8 @@ class Solver;
 // sizes never change the result, only how often the status is read.
 template <class More>
 SolveStatus advanceWhile(Solver& solver, SolveStatus status, unsigned& batch, More more);
-// The same until the stop rule fires, calling `afterBatch(status)` after each batch (a progress bar).
+// Batches until the stop rule fires, running ahead of the status readback (advanceAhead), calling
+// `afterBatch(status)` after each batch (a progress bar).
 template <class AfterBatch>
 SolveStatus advanceToStop(Solver& solver, SolveStatus status, AfterBatch afterBatch);
 SolveStatus advanceToStop(Solver& solver, SolveStatus status);
@@ -71,6 +72,12 @@ class Solver {
   virtual std::string algorithm() const = 0;
   // Runs up to `shots` more shots, fewer if the stop rule fires, and reports the state after.
   virtual SolveStatus advance(unsigned shots) = 0;
+  // advance() for runs to the stop rule: the status it returns may be a batch behind (a GPU
+  // solver reads the status of the passes before while the GPU runs the ones after), and
+  // settle() returns the status after everything enqueued. Passes after the stop rule fired are
+  // empty, so the result is advance()'s, bit for bit.
+  virtual SolveStatus advanceAhead(unsigned shots) { return advance(shots); }
+  virtual SolveStatus settle(SolveStatus last) { return last; }
   virtual const PassTimings& timings() const = 0;
   // Convergence after 0, 1, 2, ... shots.
   virtual std::vector<float> convergenceHistory() const = 0;
@@ -95,16 +102,16 @@ template <class AfterBatch>
 SolveStatus advanceToStop(Solver& solver, SolveStatus status, AfterBatch afterBatch) {
   unsigned batch = 1;
   while (!status.done) {
-    bool once = true;  // one batch per advanceWhile, sized as it sizes them
-    status = advanceWhile(solver, status, batch, [&] { return std::exchange(once, false); });
+    const auto t0 = std::chrono::steady_clock::now();
+    status = solver.advanceAhead(batch);
+    batch = nextBatch(batch, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     afterBatch(status);
   }
-  return status;
+  return solver.settle(status);
 }
 
 inline SolveStatus advanceToStop(Solver& solver, SolveStatus status) {
-  unsigned batch = 1;
-  return advanceWhile(solver, status, batch, [] { return true; });
+  return advanceToStop(solver, status, [](const SolveStatus&) {});
 }
 
 }  // namespace hemirad
