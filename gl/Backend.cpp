@@ -1,4 +1,5 @@
 #include "gl/Backend.h"
+#include "gl/ProgramPool.h"
 
 #include <fmt/format.h>
 
@@ -52,6 +53,7 @@ void RenderBackend::loadFunctions(void* (*resolve)(const char*), bool debug) {
   if (major * 10 + minor < 45)
     throw Error(fmt::format("{}: GL {}.{} found, hemirad needs GL 4.5 core", name(), major, minor));
   forgetLimits();  // another context may be another driver
+  openProgramPool();
   if (debug) enableDebugOutput();
 }
 

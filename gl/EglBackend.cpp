@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gl/Backend.h"
+#include "gl/ProgramPool.h"
 
 namespace hemirad::gl {
 
@@ -118,6 +119,7 @@ class EglBackend final : public RenderBackend {
   }
 
   ~EglBackend() override {
+    closeProgramPool();  // while the context is current
     makeCurrent_(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     destroyContext_(display_, context_);
     terminate_(display_);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gl/Backend.h"
+#include "gl/ProgramPool.h"
 
 namespace hemirad::gl {
 
@@ -82,7 +83,10 @@ class OSMesaBackend final : public RenderBackend {
     }
     loadFunctions(resolve, options.debug);
   }
-  ~OSMesaBackend() override { api().destroyContext(context_); }
+  ~OSMesaBackend() override {
+    closeProgramPool();  // while the context is current
+    api().destroyContext(context_);
+  }
   std::string name() const override { return "osmesa"; }
 
  private:

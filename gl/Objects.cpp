@@ -1,4 +1,5 @@
 #include "gl/Objects.h"
+#include "gl/ProgramPool.h"
 
 #include <fmt/format.h>
 
@@ -81,7 +82,9 @@ bool isBuffer(GLuint id) { return glIsBuffer(id) == GL_TRUE; }
 bool isTexture(GLuint id) { return glIsTexture(id) == GL_TRUE; }
 void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
 void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
-void deleteProgram(GLuint id) { glDeleteProgram(id); }
+void deleteProgram(GLuint id) {
+  if (!returnProgram(id)) glDeleteProgram(id);
+}
 void deleteQuery(GLuint id) { glDeleteQueries(1, &id); }
 void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
 

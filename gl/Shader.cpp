@@ -1,4 +1,5 @@
 #include "gl/Shader.h"
+#include "gl/ProgramPool.h"
 
 #include <fmt/format.h>
 
@@ -116,10 +117,16 @@ void checkCompiles(const std::string& file, const Defines& defines) {
 }
 
 Program computeProgram(const std::string& file, const Defines& defines) {
-  return link({compile(GL_COMPUTE_SHADER, file, defines)}, file);
+  const std::string key = shaderSource(file, defines);
+  if (GLuint id = takeProgram(key)) return Program(id);
+  Program p = link({compile(GL_COMPUTE_SHADER, file, defines)}, file);
+  poolProgram(p.id(), key);
+  return p;
 }
 
 Program renderProgram(const std::string& vertexFile, const std::string& fragmentFile, const Defines& defines) {
+  const std::string key = shaderSource(vertexFile, defines) + shaderSource(fragmentFile, defines);
+  if (GLuint id = takeProgram(key)) return Program(id);
   GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
   GLuint fs;
   try {
@@ -128,7 +135,9 @@ Program renderProgram(const std::string& vertexFile, const std::string& fragment
     glDeleteShader(vs);
     throw;
   }
-  return link({vs, fs}, vertexFile + "+" + fragmentFile);
+  Program p = link({vs, fs}, vertexFile + "+" + fragmentFile);
+  poolProgram(p.id(), key);
+  return p;
 }
 
 }  // namespace hemirad::gl
