@@ -1,7 +1,9 @@
 #include "gl/ProgramPool.h"
 
+#include <algorithm>
 #include <cstdint>
-#include <map>
+#include <iterator>
+#include <list>
 #include <mutex>
 #include <unordered_map>
 #include <vector>
@@ -144,8 +146,12 @@ struct Pool {
   std::mutex mutex;
   bool open = false;
   std::unordered_map<GLuint, Pooled> known;  // every pooled program, idle or owned
-  std::multimap<std::string, GLuint> idle;
+  std::list<GLuint> idle;                    // oldest first
 };
+
+// Past this many idle programs the oldest is deleted: a process that walks through many
+// configurations (a sweep, the viewer loading scene after scene) keeps the recent ones.
+constexpr std::size_t kMostIdle = 64;
 
 Pool& pool() {
   static Pool p;
@@ -157,10 +163,10 @@ Pool& pool() {
 GLuint takeProgram(const std::string& key) {
   Pool& p = pool();
   std::lock_guard lock(p.mutex);
-  auto it = p.open ? p.idle.find(key) : p.idle.end();
-  if (it == p.idle.end()) return 0;
-  const GLuint id = it->second;
-  p.idle.erase(it);
+  auto it = std::find_if(p.idle.rbegin(), p.idle.rend(), [&](GLuint id) { return p.known.at(id).key == key; });
+  if (!p.open || it == p.idle.rend()) return 0;
+  const GLuint id = *it;
+  p.idle.erase(std::next(it).base());
   for (const Uniform& u : p.known.at(id).linked) restore(id, u);
   return id;
 }
@@ -177,7 +183,12 @@ bool returnProgram(GLuint id) {
   std::lock_guard lock(p.mutex);
   auto it = p.known.find(id);
   if (!p.open || it == p.known.end()) return false;
-  p.idle.emplace(it->second.key, id);
+  p.idle.push_back(id);
+  if (p.idle.size() > kMostIdle) {
+    glDeleteProgram(p.idle.front());
+    p.known.erase(p.idle.front());
+    p.idle.pop_front();
+  }
   return true;
 }
 
@@ -190,7 +201,7 @@ void openProgramPool() {
 void closeProgramPool() {
   Pool& p = pool();
   std::lock_guard lock(p.mutex);
-  for (const auto& [key, id] : p.idle) glDeleteProgram(id);
+  for (GLuint id : p.idle) glDeleteProgram(id);
   p.idle.clear();
   p.known.clear();  // programs still owned are deleted by their owners (returnProgram: false)
   p.open = false;

@@ -46,3 +46,16 @@ TEST_CASE("A program handed back is handed out again for the same sources, its u
   CHECK(uniformOf(again, "threshold") == 0.0f);  // what the last owner set is gone
   CHECK(unitOf(again, "radiosity") == unit);     // what the link set stays
 }
+
+TEST_CASE("The program pool keeps at most 64 idle programs, the most recent", "[gl]") {
+  test::backend();
+  GLuint latest = 0;
+  for (int i = 0; i < 70; ++i) {
+    gl::Program p = computeProgram("gradient.comp", {{"POOL_TEST_VARIANT", std::to_string(i)}});
+    latest = p.id();
+  }
+  CHECK(gl::idlePrograms() == 64);
+  gl::Program again = computeProgram("gradient.comp", {{"POOL_TEST_VARIANT", "69"}});
+  CHECK(again.id() == latest);  // the most recent was kept
+  CHECK(gl::idlePrograms() == 63);
+}
