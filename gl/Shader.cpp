@@ -63,11 +63,21 @@ std::string legend(const std::vector<std::string>& names) {
   return s;
 }
 
-GLuint compile(GLenum stage, const std::string& file, const Defines& defines) {
+// A stage's source as the driver sees it, and the files its #line numbers name.
+struct StageSource {
+  std::string text;
   std::vector<std::string> names;
-  std::string source = shaderSource(file, defines, &names);
+};
+StageSource stageSource(const std::string& file, const Defines& defines) {
+  StageSource s;
+  s.text = shaderSource(file, defines, &s.names);
+  return s;
+}
+
+GLuint compile(GLenum stage, const std::string& file, const StageSource& source) {
+  const std::vector<std::string>& names = source.names;
   GLuint shader = glCreateShader(stage);
-  const char* text = source.c_str();
+  const char* text = source.text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
   glCompileShader(shader);
   GLint ok = 0;
@@ -113,24 +123,25 @@ void checkCompiles(const std::string& file, const Defines& defines) {
                        : endsWith(".frag") ? GL_FRAGMENT_SHADER
                                            : 0;
   if (!stage) throw Error(fmt::format("shader {}: not a stage (.comp, .vert or .frag)", file));
-  glDeleteShader(compile(stage, file, defines));
+  glDeleteShader(compile(stage, file, stageSource(file, defines)));
 }
 
 Program computeProgram(const std::string& file, const Defines& defines) {
-  const std::string key = shaderSource(file, defines);
-  if (GLuint id = takeProgram(key)) return Program(id);
-  Program p = link({compile(GL_COMPUTE_SHADER, file, defines)}, file);
-  poolProgram(p.id(), key);
+  const StageSource source = stageSource(file, defines);  // the pool's key too
+  if (GLuint id = takeProgram(source.text)) return Program(id);
+  Program p = link({compile(GL_COMPUTE_SHADER, file, source)}, file);
+  poolProgram(p.id(), source.text);
   return p;
 }
 
 Program renderProgram(const std::string& vertexFile, const std::string& fragmentFile, const Defines& defines) {
-  const std::string key = shaderSource(vertexFile, defines) + shaderSource(fragmentFile, defines);
+  const StageSource vertex = stageSource(vertexFile, defines), fragment = stageSource(fragmentFile, defines);
+  const std::string key = vertex.text + fragment.text;
   if (GLuint id = takeProgram(key)) return Program(id);
-  GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
+  GLuint vs = compile(GL_VERTEX_SHADER, vertexFile, vertex);
   GLuint fs;
   try {
-    fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
+    fs = compile(GL_FRAGMENT_SHADER, fragmentFile, fragment);
   } catch (...) {
     glDeleteShader(vs);
     throw;
