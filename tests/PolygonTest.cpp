@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <random>
+
 #include "src/base/Polygon.h"
 
 using namespace hemirad;
@@ -18,6 +20,28 @@ TEST_CASE("Clipping a triangle to a box keeps exactly the overlap", "[cpu]") {
   CHECK(signedArea(clipToBox(tri, {0, 0}, {1, 1})) == Approx(1.0));
   CHECK(signedArea(clipToBox(tri, {1, 1}, {3, 3})) == Approx(2.0));
   CHECK(clipToBox(tri, {5, 5}, {6, 6}).empty());
+}
+
+TEST_CASE("A box that overlapsBox rejects leaves no area after clipping, and one it keeps leaves some", "[cpu]") {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  int rejected = 0, kept = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Poly2 tri{{u(rng), u(rng)}, {u(rng), u(rng)}, {u(rng), u(rng)}};
+    const glm::dvec2 lo(u(rng), u(rng)), hi = lo + glm::dvec2(0.05 + 0.5 * (u(rng) + 2), 0.05 + 0.5 * (u(rng) + 2));
+    const double cut = std::abs(signedArea(clipToBox(tri, lo, hi)));
+    if (!overlapsBox(tri, lo, hi)) {
+      ++rejected;
+      CHECK(cut == 0.0);
+    } else if (cut > 0) {
+      ++kept;
+    }
+  }
+  // The random boxes both miss and meet the triangles often, so both branches are exercised.
+  CHECK(rejected > 200);
+  CHECK(kept > 200);
+  // Touching along an edge is no overlap: the clip is degenerate there.
+  CHECK_FALSE(overlapsBox({{0, 0}, {1, 0}, {0, 1}}, {1, 0}, {2, 1}));
 }
 
 TEST_CASE("Ear clipping triangulates a non-convex polygon with its area and winding", "[cpu]") {

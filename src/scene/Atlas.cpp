@@ -403,8 +403,11 @@ std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const 
   const Chart& c = charts[chart];
   glm::dvec2 lo(rect.x - c.origin.x, rect.y - c.origin.y), hi = lo + glm::dvec2(rect.z, rect.w);
   std::vector<Poly3> out;
+  const glm::dvec2 boxLo = c.corner + lo * c.cellSize, boxHi = c.corner + hi * c.cellSize;
   for (std::size_t k = 0; k < c.parts.size(); ++k) {
-    Poly2 cut = clipToBox(c.partInChart(c.parts[k], k), c.corner + lo * c.cellSize, c.corner + hi * c.cellSize);
+    const Poly2 part = c.partInChart(c.parts[k], k);
+    if (!overlapsBox(part, boxLo, boxHi)) continue;  // most of a large chart's parts
+    Poly2 cut = clipToBox(part, boxLo, boxHi);
     if (cut.size() < 3 || signedArea(cut) <= kMinCutFraction * c.cellSize * c.cellSize) continue;
     const ScenePolygon& on = scene.polygons()[std::size_t(c.partPolygon[k])];
     Poly3& piece = out.emplace_back();

@@ -80,6 +80,7 @@ struct Cutter {
   void add(const Chart& c, std::size_t k, glm::dvec2 lo, glm::dvec2 hi, ChartGroup& group) {
     Poly2 q;
     for (auto& v : c.parts[k]) q.push_back(c.frame.project(v));
+    if (!overlapsBox(q, lo, hi)) return;
     const Poly2 piece = clipToBox(q, lo, hi);
     const double finest = c.cellSize / double(1 << tree.maxDepth());
     if (piece.size() < 3 || signedArea(piece) <= kMinCutFraction * finest * finest) return;
