@@ -206,6 +206,11 @@ void VertexArray::bind() const { glBindVertexArray(id_); }
 
 // ---- Query
 Query::Query(GLenum target) { glCreateQueries(target, 1, &id_); }
+bool Query::available() const {
+  GLuint ready = GL_FALSE;
+  glGetQueryObjectuiv(id_, GL_QUERY_RESULT_AVAILABLE, &ready);
+  return ready == GL_TRUE;
+}
 std::uint64_t Query::result() const {
   GLuint64 v = 0;
   glGetQueryObjectui64v(id_, GL_QUERY_RESULT, &v);

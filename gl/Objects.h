@@ -142,6 +142,7 @@ class Query : public Handle<deleteQuery> {
   Query() = default;
   explicit Query(GLenum target);  // GL_TIMESTAMP, GL_TIME_ELAPSED, GL_SAMPLES_PASSED...
   std::uint64_t result() const;   // waits if not yet available
+  bool available() const;         // the result can be read without waiting
 };
 
 class Program : public Handle<deleteProgram> {

@@ -2,6 +2,8 @@
 
 #include "gl/Backend.h"
 
+#include <algorithm>
+
 namespace hemirad::gl {
 
 TimerMode contextTimerMode(TimerMode mode) {
@@ -27,18 +29,24 @@ void GpuTimer::mark(int slot) {
   pending_.emplace_back(std::move(q), slot);
 }
 
-void GpuTimer::collect(std::span<double> totals) {
+void GpuTimer::collect(std::span<double> totals, bool wait) {
   for (size_t i = 0; i + 1 < cpuMarks_.size(); ++i)
     if (cpuMarks_[i].second >= 0)
       totals[size_t(cpuMarks_[i].second)] +=
           std::chrono::duration<double, std::milli>(cpuMarks_[i + 1].first - cpuMarks_[i].first).count();
   cpuMarks_.clear();
-  for (size_t i = 0; i + 1 < pending_.size(); ++i) {
+  std::size_t stamped = pending_.size();  // stamps complete in order: a prefix is ready
+  if (!wait)
+    for (stamped = 0; stamped < pending_.size() && pending_[stamped].first.available();) ++stamped;
+  for (size_t i = 0; i + 1 < stamped; ++i) {
     int slot = pending_[i].second;
     if (slot >= 0) totals[size_t(slot)] += double(pending_[i + 1].first.result() - pending_[i].first.result()) * 1e-6;
   }
-  for (auto& p : pending_) free_.push_back(std::move(p.first));
-  pending_.clear();
+  // Kept: the last stamp read, where it starts an interval whose end is not read yet.
+  const bool closed = stamped == pending_.size() && (pending_.empty() || pending_.back().second < 0);
+  const std::size_t done = closed ? stamped : std::max<std::size_t>(stamped, 1) - 1;
+  for (std::size_t i = 0; i < done; ++i) free_.push_back(std::move(pending_[i].first));
+  pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(done));
 }
 
 }  // namespace hemirad::gl

@@ -32,8 +32,10 @@ class GpuTimer {
   // Marks the start of pass `slot`; the pass ends at the next mark() or stop().
   void mark(int slot);
   void stop() { mark(-1); }
-  // Adds every finished pass's milliseconds to totals[slot]; waits for unfinished queries.
-  void collect(std::span<double> totals);
+  // Adds finished passes' milliseconds to totals[slot]: with `wait`, every marked pass's (waiting
+  // for the GPU to stamp them); without, those the GPU has stamped already, the rest kept for a
+  // later call (a solve running ahead reads its status while the next chunk's stamps are queued).
+  void collect(std::span<double> totals, bool wait = true);
 
  private:
   TimerMode mode_;

@@ -429,13 +429,13 @@ SolveStatus ProgressiveSolver::advanceAhead(unsigned shots) {
     runPasses(chunk);
     passes -= chunk;
     statusCopies_.copy(control_);
-    if (statusCopies_.pending() > 1) collectStatus();
+    if (statusCopies_.pending() > 1) collectStatus(false);  // the chunk just enqueued stays in flight
   }
   return status_;
 }
 
 SolveStatus ProgressiveSolver::settle(SolveStatus) {
-  while (statusCopies_.pending()) collectStatus();
+  while (statusCopies_.pending()) collectStatus(true);
   return status_;
 }
 
@@ -444,12 +444,12 @@ SolveStatus ProgressiveSolver::readStatus() {
   return settle(status_);
 }
 
-SolveStatus ProgressiveSolver::collectStatus() {
+SolveStatus ProgressiveSolver::collectStatus(bool waitForStamps) {
   const auto t0 = std::chrono::steady_clock::now();
   ControlBlock c;
   std::memcpy(&c, statusCopies_.wait(), statusCopies_.bytes());
   timings_.readback += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  timer_.collect(sampled_);
+  timer_.collect(sampled_, waitForStamps);
   scaleSampledTimings(timings_, sampled_, enqueued_, timed_);
   gl::checkErrors("progressive shot");
   status_ = {c.shots, c.convergence, c.done != 0};

@@ -161,7 +161,9 @@ class ProgressiveSolver final : public Solver {
   unsigned shootToNextStep(unsigned budget);  // returns the shots enqueued
   bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
   SolveStatus readStatus();     // after every pass enqueued so far
-  SolveStatus collectStatus();  // the oldest pending status copy
+  // The oldest pending status copy; the pass timings' stamps read so far, or with
+  // `waitForStamps` all of them (until then timings() counts the passes in flight as untimed).
+  SolveStatus collectStatus(bool waitForStamps);
 
   SolverState& state_;
   ProgressiveSettings settings_;
