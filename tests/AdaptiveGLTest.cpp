@@ -3,7 +3,11 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "src/cli/AdaptiveRounds.h"
+#include "src/cli/Solve.h"
+#include "src/method/Registry.h"
 #include "src/output/SeamStitch.h"
+#include "src/scene/SceneLoader.h"
 #include "src/scene/Leaves.h"
 #include "src/solver/Checkpoint.h"
 #include "src/solver/ProgressiveSolver.h"
@@ -244,4 +248,33 @@ TEST_CASE("Lookups across leaves of different density show no step once seams ar
   INFO("largest step " << raw << " unstitched, " << stitched << " stitched; the ramp's " << ramp);
   CHECK(raw > 10 * ramp);
   CHECK(stitched < 4 * ramp);  // measured 1.8: a kink where the densities meet, no step
+}
+
+// A round only decides where leaves split, which the first shots (the direct light) show: it
+// stops at kRoundConvergence, the final layout's solve at the stop rule (docs/adaptive.md).
+TEST_CASE("Adaptive rounds solve to the round convergence, not to the stop rule", "[gl][adaptive]") {
+  gl::RenderBackend& backend = test::backend();
+  const Scene scene = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
+  std::vector<std::unique_ptr<MethodUnit>> methods = makeMethods();
+  auto* progressive = dynamic_cast<AtlasMethod*>(methods.front().get());
+  REQUIRE(progressive);
+  REQUIRE(progressive->name() == "progressive");
+  SolveOptions o;
+  progressive->settle(o);  // the default stop rule: 90 % converged
+  REQUIRE(progressive->stop().targetConvergence == Approx(0.9));
+  const Atlas base = buildAtlas(scene, texelSizeForElements(scene, 500));
+  SubdivideOptions options;
+  options.adaptive = true;
+  options.budget = 2000;
+  const AdaptiveLayout layout = refineAdaptively(options, *progressive, scene, base, resolveCamera(scene, std::nullopt),
+                                                 1.0, backend.maxTextureSize(), 30.0);
+  REQUIRE(!layout.rounds.empty());
+  SolverState state(scene, base);  // the first round's layout, solved to the stop rule
+  const SolveStatus full = advanceToStop(progressive->start(state)->solver(), {});
+  CHECK(full.convergence >= 0.9);
+  const AdaptiveRound& first = layout.rounds.front();
+  CHECK(first.convergence >= kRoundConvergence);
+  CHECK(first.convergence < 0.9);
+  CHECK(first.shots < full.shots);
+  for (const AdaptiveRound& r : layout.rounds) CHECK(r.convergence < 0.9);
 }

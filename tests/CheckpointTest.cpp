@@ -165,3 +165,24 @@ TEST_CASE("A checkpoint made with another atlas layout (or before layouts were h
   saved.erase("atlas_layout");  // written with the gutter-and-shelf atlas
   CHECK_THROWS_WITH(checkResumable("old.ckpt", saved, current), Contains("atlas_layout = (none)"));
 }
+
+// An adaptive solve's rounds stop at the round convergence (kRoundConvergence, 0.8) whatever the
+// run's own target above it, so a finished run resumed with a higher --converge reaches the same
+// layout and takes the solve further: the bits of a run made to that target at once.
+TEST_CASE("An adaptive solve resumed with a higher --converge gives the bits of one run to it", "[cli][checkpoint]") {
+  const std::string args = "solve " + test::sourcePath("scenes/cornell/cornell.obj") +
+                           " --subdivide adaptive --elements 1500 --item-res 64 --quiet";
+  const std::string ck = test::tempPath("adaptive.ckpt"), a = test::tempPath("adaptive_a.json"),
+                    b = test::tempPath("adaptive_b.json");
+  test::Run first = test::hemirad(args + " --converge 0.9 --checkpoint " + ck);
+  INFO(first.output);
+  REQUIRE(first.exitCode == 0);
+  test::Run resumed = test::hemirad(args + " --converge 0.99 --resume " + ck + " --report " + a);
+  INFO(resumed.output);
+  REQUIRE(resumed.exitCode == 0);
+  REQUIRE(test::hemirad(args + " --converge 0.99 --report " + b).exitCode == 0);
+  const nlohmann::json ra = test::readJson(a), rb = test::readJson(b);
+  CHECK(ra["convergence"].get<double>() >= 0.99);
+  CHECK(ra["radiosity_hash"] == rb["radiosity_hash"]);
+  CHECK(ra["shots"] == rb["shots"]);
+}

@@ -15,9 +15,11 @@ std::vector<unsigned> solveAndCount(const SubdivideOptions& o, const AtlasMethod
                                     const Camera& camera, double aspect, AdaptiveRound& round, ElementBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   SolverState state(scene, atlas);
-  const std::unique_ptr<AtlasRun> run = method.start(state);
+  const std::unique_ptr<AtlasRun> run = method.startRound(state);
   run->look(camera, aspect);
-  round.shots = advanceToStop(run->solver(), {}).shots;
+  const SolveStatus solved = advanceToStop(run->solver(), {});
+  round.shots = solved.shots;
+  round.convergence = solved.convergence;
   const std::vector<glm::vec4> B = state.readRadiosity();
   const std::vector<std::int32_t> leafOf = leafOfTexel(atlas, baseChart, tree);
   const std::vector<unsigned> counts = GradientPass().count(state, leafOf, tree.nodes().size(), float(o.rule.threshold),
@@ -45,8 +47,9 @@ AdaptiveLayout refineAdaptively(const SubdivideOptions& o, const AtlasMethod& me
     ElementBudget budget;
     const std::vector<unsigned> counts = solveAndCount(o, method, s, a, baseChart, tree, camera, aspect, round, budget);
     round.split = splitSteepLeaves(tree, counts, o.rule, budget);
-    fmt::print(stderr, "hemirad: adaptive round {}: {} elements, {} leaves, {} shots in {:.0f} ms; {} leaves split\n",
-               depth, round.elements, round.leaves, round.shots, round.ms, round.split);
+    fmt::print(stderr,
+               "hemirad: adaptive round {}: {} elements, {} leaves, {} shots to {:.2f} in {:.0f} ms; {} leaves split\n",
+               depth, round.elements, round.leaves, round.shots, round.convergence, round.ms, round.split);
     if (round.split == 0) break;
     RefinedLayout next = refineLayout(scene, tree);
     out.atlas =

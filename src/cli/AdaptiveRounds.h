@@ -1,6 +1,6 @@
-// `--subdivide adaptive`'s rounds (src/scene/Leaves.h, src/solver/Subdivide.h): solve the layout,
-// count steep texels per leaf on the GPU, split, lay out the refined scene and atlas, until no
-// leaf splits or every split leaf is at --leaf-depth. The caller then solves the final layout
+// `--subdivide adaptive`'s rounds (src/scene/Leaves.h, src/solver/Subdivide.h): solve the layout
+// (to roundStop's convergence at most), count steep texels per leaf on the GPU, split, lay out the
+// refined scene and atlas, until no leaf splits or every split leaf is at --leaf-depth. The caller then solves the final layout
 // from scratch: every element's B comes from one solve, exact for its layout (no inherited error).
 #pragma once
 #include <memory>
@@ -16,7 +16,7 @@ namespace hemirad {
 struct AdaptiveRound {
   std::size_t elements = 0, leaves = 0, split = 0;
   unsigned shots = 0;
-  double ms = 0;
+  double convergence = 0, ms = 0;
 };
 
 struct AdaptiveLayout {

@@ -95,6 +95,9 @@ class AtlasMethod : public MethodUnit {
   int solve(const SolveOptions& o) const override;  // src/cli/Solve.cpp
   bool checkpoints() const override { return true; }
   virtual std::unique_ptr<AtlasRun> start(SolverState& state) const = 0;
+  // An adaptive round's solve (src/cli/AdaptiveRounds.h), which only has to show where the light
+  // is steep: a method whose stop rule is a convergence stops it at roundStop's.
+  virtual std::unique_ptr<AtlasRun> startRound(SolverState& state) const { return start(state); }
   // Its parameters a checkpoint must have been made with (beside the scene and atlas).
   virtual nlohmann::json identity() const = 0;
   virtual const StopRule& stop() const = 0;

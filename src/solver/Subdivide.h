@@ -10,6 +10,7 @@
 
 #include "gl/Objects.h"
 #include "src/scene/Leaves.h"
+#include "src/solver/Solver.h"
 #include "src/solver/SolverState.h"
 
 namespace hemirad {
@@ -31,6 +32,18 @@ struct SubdivideOptions {
   std::size_t budget = 0;
   static constexpr std::size_t kFirstRoundShare = 4;
 };
+
+// An adaptive round's stop rule: a convergence target above kRoundConvergence stops there. A
+// round only decides which leaves split, and the steep places (shadow edges, contacts, a light's
+// outline) are drawn by the first shots, the direct light's; the final layout is solved to the
+// full rule. Cornell box, 10k elements to 0.999 on llvmpipe: every region's error against the
+// path-traced reference the same to 0.07 points (within its noise), the rounds 754 -> 304 ms;
+// 100k to 0.9: 8.7 -> 1.1 s (docs/adaptive.md).
+inline constexpr double kRoundConvergence = 0.8;
+inline StopRule roundStop(StopRule stop) {
+  if (stop.targetConvergence > kRoundConvergence) stop.targetConvergence = kRoundConvergence;
+  return stop;
+}
 
 // Elements a layout has and may grow to: a split leaf's texels count four times over (each
 // quarter keeps its cell count).

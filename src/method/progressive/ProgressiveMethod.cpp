@@ -10,6 +10,7 @@
 #include "src/solver/DirectSplit.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/solver/Projection.h"
+#include "src/solver/Subdivide.h"
 #include "src/walk/CameraPath.h"
 #include "src/walk/Walkthrough.h"
 
@@ -125,6 +126,11 @@ class ProgressiveMethod final : public AtlasMethod {
   ClosedBoxRun closedBox() const override { return {"--elements 300 --converge 0.9995", 2, 0.001}; }
   std::unique_ptr<AtlasRun> start(SolverState& state) const override {
     return std::make_unique<ProgressiveRun>(state, settings_, perPixelDirect_, nearGather_);
+  }
+  std::unique_ptr<AtlasRun> startRound(SolverState& state) const override {
+    ProgressiveSettings round = settings_;
+    round.stop = roundStop(settings_.stop);
+    return std::make_unique<ProgressiveRun>(state, round, perPixelDirect_, nearGather_);
   }
   nlohmann::json identity() const override {
     const ProgressiveSettings& p = settings_;
