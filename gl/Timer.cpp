@@ -1,8 +1,8 @@
 #include "gl/Timer.h"
 
-#include "gl/Backend.h"
-
 #include <algorithm>
+
+#include "gl/Backend.h"
 
 namespace hemirad::gl {
 

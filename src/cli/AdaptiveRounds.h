@@ -1,7 +1,8 @@
 // `--subdivide adaptive`'s rounds (src/scene/Leaves.h, src/solver/Subdivide.h): solve the layout
 // (to roundStop's convergence at most), count steep texels per leaf on the GPU, split, lay out the
-// refined scene and atlas, until no leaf splits or every split leaf is at --leaf-depth. The caller then solves the final layout
-// from scratch: every element's B comes from one solve, exact for its layout (no inherited error).
+// refined scene and atlas, until no leaf splits or every split leaf is at --leaf-depth. The caller
+// then solves the final layout from scratch, to its stop rule: every element's B comes from one
+// solve, exact for its layout (no inherited error).
 #pragma once
 #include <memory>
 #include <optional>

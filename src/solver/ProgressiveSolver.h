@@ -160,9 +160,9 @@ class ProgressiveSolver final : public Solver {
   bool openWholeView();                       // out of light with entries held back
   unsigned shootToNextStep(unsigned budget);  // returns the shots enqueued
   bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
-  SolveStatus readStatus();     // after every pass enqueued so far
+  SolveStatus readStatus();  // after every pass enqueued so far
   // The oldest pending status copy; the pass timings' stamps read so far, or with
-  // `waitForStamps` all of them (until then timings() counts the passes in flight as untimed).
+  // `waitForStamps` all of them (until then timings() is short by the timed passes in flight).
   SolveStatus collectStatus(bool waitForStamps);
 
   SolverState& state_;
