@@ -20,6 +20,7 @@ std::vector<unsigned> solveAndCount(const SubdivideOptions& o, const AtlasMethod
   const SolveStatus solved = advanceToStop(run->solver(), {});
   round.shots = solved.shots;
   round.convergence = solved.convergence;
+  round.reached = run->reached(solved);
   const std::vector<glm::vec4> B = state.readRadiosity();
   const std::vector<std::int32_t> leafOf = leafOfTexel(atlas, baseChart, tree);
   const std::vector<unsigned> counts = GradientPass().count(state, leafOf, tree.nodes().size(), float(o.rule.threshold),
@@ -47,9 +48,8 @@ AdaptiveLayout refineAdaptively(const SubdivideOptions& o, const AtlasMethod& me
     ElementBudget budget;
     const std::vector<unsigned> counts = solveAndCount(o, method, s, a, baseChart, tree, camera, aspect, round, budget);
     round.split = splitSteepLeaves(tree, counts, o.rule, budget);
-    fmt::print(stderr,
-               "hemirad: adaptive round {}: {} elements, {} leaves, {} shots to {:.2f} in {:.0f} ms; {} leaves split\n",
-               depth, round.elements, round.leaves, round.shots, round.convergence, round.ms, round.split);
+    fmt::print(stderr, "hemirad: adaptive round {}: {} elements, {} leaves, {} in {:.0f} ms; {} leaves split\n", depth,
+               round.elements, round.leaves, round.reached, round.ms, round.split);
     if (round.split == 0) break;
     RefinedLayout next = refineLayout(scene, tree);
     out.atlas =

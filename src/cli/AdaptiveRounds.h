@@ -6,6 +6,7 @@
 #pragma once
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "src/method/MethodUnit.h"
 #include "src/scene/Camera.h"
@@ -18,6 +19,7 @@ struct AdaptiveRound {
   std::size_t elements = 0, leaves = 0, split = 0;
   unsigned shots = 0;
   double convergence = 0, ms = 0;
+  std::string reached;  // the method's account of its solve (MethodUnit::reached)
 };
 
 struct AdaptiveLayout {
