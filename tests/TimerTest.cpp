@@ -33,16 +33,16 @@ TEST_CASE("GPU timing stamps one pass in 16 by default, every pass for the bench
 // timer then reads only what the GPU has stamped and keeps an interval whose end is not stamped.
 TEST_CASE("Collecting without waiting keeps an interval whose end is not yet stamped, and reads it later",
           "[gl][timer]") {
-  test::backend();
+  gl::RenderBackend& backend = test::backend();
   GpuTimer timer(TimerMode::GpuEveryPass);  // stamps even on a CPU rasterizer: the queries are tested
   double totals[2] = {0, 0};
   timer.mark(0);
-  glFinish();
+  backend.finish();
   timer.collect(totals, false);  // one stamp, no interval yet
   CHECK(totals[0] == 0.0);
   timer.mark(1);
   timer.stop();
-  glFinish();
+  backend.finish();
   timer.collect(totals, false);  // every stamp is there now: both intervals
   const double first = totals[0], second = totals[1];
   CHECK(first > 0.0);
