@@ -61,7 +61,7 @@ class ProgressiveRun final : public AtlasRun {
                   const Camera& camera) override;
 
  private:
-  const ProgressiveSettings& settings_;
+  const ProgressiveSettings settings_;  // its own: startRound hands it settings made for the round
   ProgressiveSolver solver_;
   const SolverState& state_;
   bool perPixelDirect_, nearGather_;
