@@ -37,8 +37,8 @@ struct SubdivideOptions {
 // round only decides which leaves split, and the steep places (shadow edges, contacts, a light's
 // outline) are drawn by the first shots, the direct light's; the final layout is solved to the
 // full rule. Cornell box, 10k elements to 0.999 on llvmpipe: every region's error against the
-// path-traced reference the same to 0.07 points (within its noise), the rounds 754 -> 304 ms;
-// 100k to 0.9: 8.7 -> 1.1 s (docs/adaptive.md).
+// path-traced reference the same to 0.03 points (within its noise), the rounds 2.8 -> 0.6 s;
+// 100k to 0.9: 8.7 -> 6.2 s (docs/adaptive.md).
 inline constexpr double kRoundConvergence = 0.8;
 inline StopRule roundStop(StopRule stop) {
   if (stop.targetConvergence > kRoundConvergence) stop.targetConvergence = kRoundConvergence;
