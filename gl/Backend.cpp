@@ -1,5 +1,6 @@
 #include "gl/Backend.h"
 #include "gl/ProgramPool.h"
+#include "gl/StoragePool.h"
 
 #include <fmt/format.h>
 
@@ -54,6 +55,7 @@ void RenderBackend::loadFunctions(void* (*resolve)(const char*), bool debug) {
     throw Error(fmt::format("{}: GL {}.{} found, hemirad needs GL 4.5 core", name(), major, minor));
   forgetLimits();  // another context may be another driver
   openProgramPool();
+  openStoragePool();
   if (debug) enableDebugOutput();
 }
 

@@ -13,6 +13,7 @@
 
 #include "gl/Backend.h"
 #include "gl/ProgramPool.h"
+#include "gl/StoragePool.h"
 
 namespace hemirad::gl {
 
@@ -120,6 +121,7 @@ class EglBackend final : public RenderBackend {
 
   ~EglBackend() override {
     closeProgramPool();  // while the context is current
+    closeStoragePool();
     makeCurrent_(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     destroyContext_(display_, context_);
     terminate_(display_);

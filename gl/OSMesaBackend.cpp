@@ -13,6 +13,7 @@
 
 #include "gl/Backend.h"
 #include "gl/ProgramPool.h"
+#include "gl/StoragePool.h"
 
 namespace hemirad::gl {
 
@@ -85,6 +86,7 @@ class OSMesaBackend final : public RenderBackend {
   }
   ~OSMesaBackend() override {
     closeProgramPool();  // while the context is current
+    closeStoragePool();
     api().destroyContext(context_);
   }
   std::string name() const override { return "osmesa"; }

@@ -1,5 +1,6 @@
 #include "gl/Objects.h"
 #include "gl/ProgramPool.h"
+#include "gl/StoragePool.h"
 
 #include <fmt/format.h>
 
@@ -42,6 +43,27 @@ std::string formatName(GLenum f, int& bytesPerTexel) {
   }
 }
 
+// The glClearTexImage format and type that zero a texture of `internal` format; false for one the
+// storage pool does not take (none of hemirad's).
+bool clearFormat(GLenum internal, GLenum& format, GLenum& type) {
+  type = internal == GL_R32UI ? GL_UNSIGNED_INT : GL_FLOAT;
+  switch (internal) {
+    case GL_RGBA32F:
+    case GL_R32F:
+    case GL_RGBA8:
+      format = GL_RGBA;
+      return true;
+    case GL_R32UI:
+      format = GL_RED_INTEGER;
+      return true;
+    case GL_DEPTH_COMPONENT32F:
+      format = GL_DEPTH_COMPONENT;
+      return true;
+    default:
+      return false;
+  }
+}
+
 // Storage allocation is where a GPU runs out of memory: GL_OUT_OF_MEMORY (or any error) there is
 // thrown at once, naming the allocation, instead of surfacing later as garbage.
 void checkAllocation(const std::function<std::string()>& what) {
@@ -51,6 +73,21 @@ void checkAllocation(const std::function<std::string()>& what) {
   if (!detail.empty()) detail = ": " + detail;
   if (e == GL_OUT_OF_MEMORY) throw Error(fmt::format("out of GPU memory allocating {}{}", what(), detail));
   throw Error(fmt::format("GL error 0x{:04x} ({}) allocating {}{}", e, errorName(e), what(), detail));
+}
+
+// Fresh storage: `create` makes it in `id`; refused (out of memory), it is tried once more after
+// the idle pool's storage (StoragePool.h) is given back to the driver.
+void allocate(GLuint& id, bool texture, const std::function<void()>& create, const std::function<std::string()>& what) {
+  create();
+  try {
+    checkAllocation(what);
+  } catch (const Error&) {
+    texture ? glDeleteTextures(1, &id) : glDeleteBuffers(1, &id);
+    id = 0;
+    if (!dropIdleStorage()) throw;
+    create();
+    checkAllocation(what);
+  }
 }
 }  // namespace
 
@@ -77,10 +114,14 @@ Allocation& Allocation::operator=(Allocation&& o) noexcept {
   return *this;
 }
 
-void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
+void deleteBuffer(GLuint id) {
+  if (!returnStorage(id, false)) glDeleteBuffers(1, &id);
+}
 bool isBuffer(GLuint id) { return glIsBuffer(id) == GL_TRUE; }
 bool isTexture(GLuint id) { return glIsTexture(id) == GL_TRUE; }
-void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
+void deleteTexture(GLuint id) {
+  if (!returnStorage(id, true)) glDeleteTextures(1, &id);
+}
 void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 void deleteProgram(GLuint id) {
   if (!returnProgram(id)) glDeleteProgram(id);
@@ -90,9 +131,19 @@ void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
 
 // ---- Buffer
 Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
-  glCreateBuffers(1, &id_);
-  glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes ? bytes : 4), data, GL_DYNAMIC_STORAGE_BIT);
-  checkAllocation([&] { return fmt::format("a buffer of {} bytes ({})", bytes, formatBytes(double(bytes))); });
+  const StorageShape shape{0, bytes};
+  if ((id_ = takeStorage(shape))) {  // as fresh storage: the data, or zeros
+    if (data)
+      upload(0, bytes, data);
+    else
+      glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+  } else {
+    allocate(id_, false, [&] {
+      glCreateBuffers(1, &id_);
+      glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes ? bytes : 4), data, GL_DYNAMIC_STORAGE_BIT);
+    }, [&] { return fmt::format("a buffer of {} bytes ({})", bytes, formatBytes(double(bytes))); });
+    poolStorage(id_, shape);
+  }
   allocation_ = Allocation(bytes);
 }
 void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
@@ -119,21 +170,30 @@ void Buffer::copyTo(Buffer& destination, std::size_t from, std::size_t to, std::
 // ---- Texture
 Texture::Texture(GLenum internalFormat, int width, int height, int layers)
     : width_(width), height_(height), layers_(layers), format_(internalFormat) {
-  glCreateTextures(layers ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &id_);
-  if (layers)
-    glTextureStorage3D(id_, 1, internalFormat, width, height, layers);
-  else
-    glTextureStorage2D(id_, 1, internalFormat, width, height);
   int texel = 0;
   const std::string name = formatName(internalFormat, texel);
   const std::size_t bytes =
       std::size_t(texel) * std::size_t(width) * std::size_t(height) * std::size_t(std::max(layers, 1));
-  checkAllocation([&] {
-    return fmt::format("a {} x {}{} {} texture ({})", width, height, layers ? fmt::format(" x {}", layers) : "", name,
-                       formatBytes(double(bytes)));
-  });
+  const StorageShape shape{internalFormat, bytes, width, height, layers};
+  GLenum zeroFormat = 0, zeroType = 0;
+  const bool pooled = clearFormat(internalFormat, zeroFormat, zeroType);
+  if (pooled && (id_ = takeStorage(shape))) {  // as fresh storage: zeros
+    glClearTexImage(id_, 0, zeroFormat, zeroType, nullptr);
+  } else {
+    allocate(id_, true, [&] {
+      glCreateTextures(layers ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &id_);
+      if (layers)
+        glTextureStorage3D(id_, 1, internalFormat, width, height, layers);
+      else
+        glTextureStorage2D(id_, 1, internalFormat, width, height);
+    }, [&] {
+      return fmt::format("a {} x {}{} {} texture ({})", width, height, layers ? fmt::format(" x {}", layers) : "",
+                         name, formatBytes(double(bytes)));
+    });
+    if (pooled) poolStorage(id_, shape);
+  }
   allocation_ = Allocation(bytes);
-  glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // (a pooled one may have been linearFiltering'd)
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
