@@ -21,6 +21,6 @@ void main() {
   }
   bool facing;
   float visible;
-  float F = shooterFormFactor(0u, t, polygon, facing, visible);
+  float F = shooterFormFactor(0u, receiverAt(t, polygon), facing, visible);
   imageStore(probe, t, vec4(visible, F, facing ? 1.0 : 0.0, 0.0));
 }

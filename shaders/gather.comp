@@ -49,6 +49,7 @@ void main() {
 #else
   const bool deferred = false, receivesRadiosity = true;
 #endif
+  Receiver r = receiverAt(t, polygon);
   vec4 received = vec4(0.0);
   vec4 keep = vec4(1.0);  // 0 in the channels this texel's own block shoots this pass
 #ifdef REFINE_NEAR
@@ -73,17 +74,16 @@ void main() {
 #ifdef REFINE_NEAR
     // Near-shooter refinement (transfer_split.glsl): a radiosity shot (not a stored entry's
     // delivery) near its receiver in phase 0, part by part; every other pair in phase 1.
-    vec3 x = texelFetch(atlasPositionArea, t, 0).xyz;
-    bool near = s < control.shootersPerPass && !deferred && nearNode(control.shooter[s].shape, x);
+    bool near = s < control.shootersPerPass && !deferred && nearNode(control.shooter[s].shape, r.x);
     if (near != (splitPhase == 0u)) continue;
     if (near) {
-      received.rgb += nearTransfer(s, t, x, polygon);
+      received.rgb += nearTransfer(s, t, r.x, polygon);
       continue;
     }
-    float F = shooterFormFactor(s, t, polygon, facing, visible);
+    float F = shooterFormFactor(s, r, facing, visible);
     if (s < control.shootersPerPass && !deferred) F *= farScale(s);
 #else
-    float F = shooterFormFactor(s, t, polygon, facing, visible);
+    float F = shooterFormFactor(s, r, facing, visible);
 #endif
     if (F > 0.0) received += shot * F;
   }

@@ -23,12 +23,13 @@ void main() {
   if (any(greaterThanEqual(t, atlasSize))) return;
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
   if (polygon == NO_POLYGON) return;
+  Receiver r = receiverAt(t, polygon);
   vec3 received = vec3(0.0);
   for (uint s = 0u; s < control.count; ++s) {
     if (control.shooter[s].polygon == NO_POLYGON || inShooterBlock(s, t, polygon)) continue;
     bool facing;
     float visible;
-    float F = shooterFormFactor(s, t, polygon, facing, visible);
+    float F = shooterFormFactor(s, r, facing, visible);
     if (F > 0.0) received += control.shooter[s].shot.rgb * F;
   }
   vec4 B = imageLoad(radiosity, t);

@@ -71,21 +71,33 @@ float unoccludedFormFactor(uint s, vec3 x, vec3 nr) {
   return shapeFormFactor(control.shooter[s].shape, pa.xyz, pa.w, control.shooter[s].normal.xyz, x, nr);
 }
 
-// Form factor from receiver element t (of `polygon`) to shooter s of the pass, visibility
-// included: V(x, o) F(x -> shape_s), x the element's centroid, o the shooter's origin (its
-// item buffer's eye). `facing` is false when the pair cannot exchange light (x behind the
-// shooter's plane, or the shape behind x's); then the visibility is not looked up and
-// `visible` is 0.
-float shooterFormFactor(uint s, ivec2 t, uint polygon, out bool facing, out float visible) {
-  vec3 x = texelFetch(atlasPositionArea, t, 0).xyz;
+// A receiver element: texel t of `polygon`, its centre x, normal n and area, fetched once for all
+// the shooters of a pass (llvmpipe does not hoist a texelFetch out of the shooter loop).
+struct Receiver {
+  ivec2 t;
+  uint polygon;
+  vec3 x, n;
+  float area;
+};
+
+Receiver receiverAt(ivec2 t, uint polygon) {
+  vec4 pa = texelFetch(atlasPositionArea, t, 0);
+  return Receiver(t, polygon, pa.xyz, texelFetch(atlasNormal, t, 0).xyz, pa.w);
+}
+
+// Form factor from receiver element r to shooter s of the pass, visibility included:
+// V(x, o) F(x -> shape_s), x the element's centroid, o the shooter's origin (its item buffer's
+// eye). `facing` is false when the pair cannot exchange light (x behind the shooter's plane, or
+// the shape behind x's); then the visibility is not looked up and `visible` is 0.
+float shooterFormFactor(uint s, Receiver r, out bool facing, out float visible) {
   vec3 origin = control.shooter[s].positionArea.xyz;
-  facing = dot(x - origin, control.shooter[s].normal.xyz) > 0.0;  // cheap, first: half the scene fails it
-  float F = facing ? unoccludedFormFactor(s, x, texelFetch(atlasNormal, t, 0).xyz) : 0.0;
+  facing = dot(r.x - origin, control.shooter[s].normal.xyz) > 0.0;  // cheap, first: half the scene fails it
+  float F = facing ? unoccludedFormFactor(s, r.x, r.n) : 0.0;
   facing = F > 0.0;
 #ifdef BVH_VISIBILITY
-  visible = facing ? tracedVisibility(s, origin, x, polygon, sqrt(texelFetch(atlasPositionArea, t, 0).w)) : 0.0;
+  visible = facing ? tracedVisibility(s, origin, r.x, r.polygon, sqrt(r.area)) : 0.0;
 #else
-  visible = facing ? visibility(s, origin, x, polygon) : 0.0;
+  visible = facing ? visibility(s, origin, r.x, r.polygon) : 0.0;
 #endif
   return visible * F;
 }
