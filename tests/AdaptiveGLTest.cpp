@@ -7,10 +7,12 @@
 #include "src/cli/Solve.h"
 #include "src/method/Registry.h"
 #include "src/output/SeamStitch.h"
+#include "src/scene/ItemMesh.h"
 #include "src/scene/Leaves.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/Checkpoint.h"
 #include "src/solver/ProgressiveSolver.h"
+#include "src/solver/ShootingPlan.h"
 #include "src/solver/Subdivide.h"
 #include "tests/support/Support.h"
 
@@ -277,4 +279,62 @@ TEST_CASE("Adaptive rounds solve to the round convergence, not to the stop rule"
   CHECK(first.convergence < 0.9);
   CHECK(first.shots < full.shots);
   for (const AdaptiveRound& r : layout.rounds) CHECK(r.convergence < 0.9);
+}
+
+TEST_CASE("On a refined layout the hemicube's item resolution is planned from the base cells, a disc map's from the finest",
+          "[cpu][adaptive]") {
+  const Scene scene = shadowScene();
+  const Atlas base = buildAtlas(scene, kTexel);
+  LeafTree tree(base, 2);
+  REQUIRE(tree.split(0));
+  REQUIRE(tree.split(tree.nodes()[0].firstChild));  // cells of kTexel / 4 there
+  const RefinedLayout refined = refineLayout(scene, tree);
+  const Atlas atlas = buildAtlas(refined.scene, refined.specs, base.texelSize);
+  auto resolution = [&](const Scene& s, const Atlas& a, Projection p) {
+    return planShooting(s, a, kAutoShootLevel, kAutoItemResolution, p).itemResolution;
+  };
+  // 4 pixels an element across the 4-wide scene: 256 at kTexel, 1024 at a quarter of it; the
+  // hemicube a quarter of that, at least 128.
+  CHECK(resolution(scene, base, Projection::Orthographic) == 256);
+  CHECK(resolution(refined.scene, atlas, Projection::Orthographic) == 1024);
+  CHECK(resolution(scene, base, Projection::Hemicube) == 128);
+  CHECK(resolution(refined.scene, atlas, Projection::Hemicube) == 128);  // occluders did not shrink (finest: 256)
+}
+
+TEST_CASE("A refined layout's item buffers draw each cut polygon whole, and see what its parts would show",
+          "[gl][adaptive]") {
+  const Scene scene = shadowScene();
+  const Atlas base = buildAtlas(scene, kTexel);
+  LeafTree tree(base, 2);
+  for (int tile = 5; tile <= 10; tile += 5) REQUIRE(tree.split(tile));  // two floor tiles under the blocker's shadow
+  REQUIRE(tree.split(tree.nodes()[5].firstChild));
+  const RefinedLayout refined = refineLayout(scene, tree);
+  REQUIRE(refined.scene.wholes.size() == 1);  // the floor, cut into parts
+  CHECK(refined.scene.polygons().size() > scene.polygons().size());
+  CHECK(itemTriangleCount(refined.scene, 0) == itemTriangleCount(scene, 0));  // the floor drawn once, whole
+  double parts = 0;
+  for (std::size_t p = 0; p < refined.scene.polygons().size(); ++p)
+    if (refined.scene.wholeOf[p] >= 0) parts += refined.scene.polygons()[p].area;
+  CHECK(parts == Approx(refined.scene.wholes[0].area).epsilon(1e-12));
+
+  // The same layout with its parts drawn instead (no wholes): the same light on every object.
+  Scene drawnInParts = refined.scene;
+  drawnInParts.wholes.clear(), drawnInParts.wholeOf.clear();
+  const Atlas atlas = buildAtlas(refined.scene, refined.specs, base.texelSize);
+  ProgressiveSettings settings;
+  settings.stop.targetConvergence = 0.99;
+  auto solved = [&](const Scene& s) {
+    test::backend();
+    SolverState state(s, atlas);
+    ProgressiveSolver solver(state, settings);
+    advanceToStop(solver, {});
+    return objectRadiosity(s, atlas, state.readRadiosity());
+  };
+  const auto whole = solved(refined.scene), inParts = solved(drawnInParts);
+  REQUIRE(whole.size() == inParts.size());
+  for (std::size_t o = 0; o < whole.size(); ++o) {
+    CAPTURE(whole[o].name);
+    CHECK(luminance(glm::dvec3(whole[o].mean)) ==
+          Approx(luminance(glm::dvec3(inParts[o].mean))).epsilon(1e-6).margin(1e-9));
+  }
 }

@@ -30,9 +30,9 @@ void split(const Tri& t, int level, std::uint32_t polygon, std::vector<ItemVerte
 std::vector<ItemVertex> buildItemMesh(const Scene& scene, int level) {
   std::vector<ItemVertex> out;
   out.reserve(3 * itemTriangleCount(scene, level));
-  const auto& polys = scene.polygons();
-  for (std::uint32_t id = 0; id < polys.size(); ++id) {
-    const Poly3& v = polys[id].vertices;
+  for (std::uint32_t id = 0; id < scene.occluderCount(); ++id) {
+    if (!scene.drawn(id)) continue;
+    const Poly3& v = scene.occluder(id).vertices;
     for (size_t k = 1; k + 1 < v.size(); ++k) split({v[0], v[k], v[k + 1]}, level, id, out);  // convex: a fan
   }
   return out;

@@ -29,7 +29,8 @@ IndexedItemMesh indexItemMesh(const std::vector<ItemVertex>& triangles);
 
 inline std::size_t itemTriangleCount(const Scene& scene, int level) {
   std::size_t base = 0;
-  for (auto& p : scene.polygons()) base += p.vertices.size() - 2;
+  for (std::size_t id = 0; id < scene.occluderCount(); ++id)
+    if (scene.drawn(id)) base += scene.occluder(id).vertices.size() - 2;
   return base << (2 * level);
 }
 

@@ -61,6 +61,7 @@ struct Cutter {
   const Scene& scene;
   const LeafTree& tree;
   RefinedLayout& out;
+  std::map<int, int> wholes;  // base polygon -> its index in out.scene.wholes
 
   // Base chart c's parts clipped to `rect` (units) in squares of the finest node's side, so two
   // charts meet along whole square sides: no T-junctions, seams shared edge for edge
@@ -89,6 +90,10 @@ struct Cutter {
     for (auto& p : piece) lifted.push_back(c.frame.lift(p));
     if (!out.scene.addPolygon(lifted, on.material, on.object)) return;
     const int id = int(out.scene.polygons().size()) - 1;
+    auto [whole, added] = wholes.try_emplace(c.partPolygon[k], int(out.scene.wholes.size()));
+    if (added) out.scene.wholes.push_back(on);
+    out.scene.wholeOf.resize(out.scene.polygons().size(), -1);
+    out.scene.wholeOf.back() = whole->second;
     group.polygons.push_back(id), group.parts.push_back(lifted), group.partPolygon.push_back(id);
   }
 };
@@ -149,6 +154,7 @@ RefinedLayout refineLayout(const Scene& scene, const LeafTree& tree) {
         out.specs.push_back(specOf(chart, std::move(children), n.rect, n.depth + 1)), out.specChart.push_back(int(c));
     }
   }
+  if (!out.scene.wholes.empty()) out.scene.wholeOf.resize(out.scene.polygons().size(), -1);
   return out;
 }
 

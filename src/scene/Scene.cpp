@@ -55,10 +55,11 @@ int Scene::addObject(std::string name) {
 }
 
 void Scene::rescale(double factor) {
-  for (ScenePolygon& p : polygons_) {
-    for (glm::dvec3& v : p.vertices) v *= factor;
-    p.area *= factor * factor;
-  }
+  for (std::vector<ScenePolygon>* list : {&polygons_, &wholes})
+    for (ScenePolygon& p : *list) {
+      for (glm::dvec3& v : p.vertices) v *= factor;
+      p.area *= factor * factor;
+    }
   for (Mesh::VertexHandle v : mesh_.vertices()) mesh_.set_point(v, mesh_.point(v) * factor);
 }
 

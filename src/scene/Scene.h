@@ -67,6 +67,13 @@ class Scene {
   // Discontinuity lines (D0 contact lines, src/scene/ContactCuts.h): edges along them are where
   // the light jumps, so seam stitching leaves them be.
   std::vector<std::array<glm::dvec3, 2>> creases;
+  // A refined layout (src/scene/Leaves.h) cuts polygons along its leaves; `wholes` keeps each cut
+  // polygon whole, and wholeOf[p] names the whole polygon p was cut from (-1: p is not a cut
+  // part; empty: none is). Item buffers draw the wholes in place of their parts, as occluders
+  // [polygons().size(), occluderCount()): a receiver's window then names one polygon to test
+  // exactly where it named several parts (adaptive Cornell at 100k: 2x the gather's time).
+  std::vector<ScenePolygon> wholes;
+  std::vector<int> wholeOf;
 
   // Adds a polygon; returns false (and records nothing) if it has no area.
   bool addPolygon(const Poly3& vertices, int material, int object);
@@ -75,6 +82,12 @@ class Scene {
   void rescale(double factor);      // every vertex times `factor` (areas times its square)
 
   const std::vector<ScenePolygon>& polygons() const { return polygons_; }
+  // What item buffers draw, by id: the polygons, then the wholes; a cut part is not drawn.
+  std::size_t occluderCount() const { return polygons_.size() + wholes.size(); }
+  const ScenePolygon& occluder(std::size_t id) const {
+    return id < polygons_.size() ? polygons_[id] : wholes[id - polygons_.size()];
+  }
+  bool drawn(std::size_t id) const { return id >= polygons_.size() || wholeOf.empty() || wholeOf[id] < 0; }
   const Mesh& mesh() const { return mesh_; }
   double totalArea() const;
   double emittedPower() const;  // sum of luminance(E) * A

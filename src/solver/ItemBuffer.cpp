@@ -93,9 +93,11 @@ ItemBuffer::ItemBuffer(const Scene& scene, int subdivision, int resolution, doub
   cull_.set("farDistance", float(farDistance));
   cull_.set("chunkCount", unsigned(chunkCount_));
   program_.set("faceSize", float(faceResolution_));
-  std::vector<glm::vec4> planes;
-  for (auto& p : scene.polygons())
+  std::vector<glm::vec4> planes;  // by item id: the polygons, then the wholes (Scene::occluder)
+  for (std::size_t id = 0; id < scene.occluderCount(); ++id) {
+    const ScenePolygon& p = scene.occluder(id);
     planes.push_back(glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))));
+  }
   planes_ = gl::Buffer(std::span<const glm::vec4>(planes));
 }
 

@@ -45,9 +45,13 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
                                   ? shootLevel
                                   : levelFor(extent * (emitter ? kEmitterSide : kShooterSide), c.cellSize));
   }
-  double finest = atlas.texelSize;  // refined leaves see at their own cells' scale
-  for (const Chart& c : atlas.charts) finest = std::min(finest, c.cellSize);
-  const int divisor = projection == Projection::Hemicube ? kHemicubeDivisor : 1;
+  // Refined leaves (src/scene/Leaves.h) see at their own cells' scale; but the hemicube resolves
+  // occluders, which a leaf split does not make smaller: it is planned from the base cells
+  // (adaptive Cornell at 100k elements: 128^2, not 256^2, as uniform subdivision at 100k).
+  const bool hemicube = projection == Projection::Hemicube;
+  double finest = atlas.texelSize;
+  for (const Chart& c : atlas.charts) finest = hemicube ? finest : std::min(finest, c.cellSize);
+  const int divisor = hemicube ? kHemicubeDivisor : 1;
   plan.itemResolution =
       itemResolution != kAutoItemResolution
           ? itemResolution

@@ -26,10 +26,10 @@ SolverState::SolverState(const Scene& s, const Atlas& a)
       deltaB(GL_RGBA32F, a.width, a.height) {
   std::vector<GpuPolygon> table;
   std::vector<glm::vec4> vertices;
-  for (std::size_t id = 0; id < s.polygons().size(); ++id) {
-    const ScenePolygon& p = s.polygons()[id];
+  for (std::size_t id = 0; id < s.occluderCount(); ++id) {  // the polygons, then the wholes (Scene.h)
+    const ScenePolygon& p = s.occluder(id);
     const Material& m = s.materials[p.material];
-    const std::uint32_t chart = a.chartOf[id];
+    const std::uint32_t chart = id < a.chartOf.size() ? a.chartOf[id] : kNoPolygon;  // a whole is no chart's
     table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
                      glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
                      glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), chart, 0u)});
