@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "cpu/ExactFormFactor.h"
 #include "src/scene/Atlas.h"
 #include "tests/support/Support.h"
 
@@ -199,4 +200,42 @@ TEST_CASE("Shooter blocks at level k tile every element exactly once", "[cpu]") 
 TEST_CASE("An atlas over the texture limit is refused with a texel size that fits", "[cpu]") {
   Scene s = shapes();
   CHECK_THROWS_WITH(buildAtlas(s, 1e-4, 4096), Catch::Contains("--texel-size"));
+}
+
+TEST_CASE("A block's outline is one convex piece where its pieces tile a convex region, shooting what they shoot",
+          "[cpu]") {
+  const Scene s = charted();
+  const Atlas a = buildAtlas(s, 0.05, 16384, 0, 30, UvSource::Projection);
+  int lMerged = 0, curvedMerged = 0, compared = 0;
+  for (std::uint32_t c = 0; c < a.charts.size(); ++c) {
+    const Chart& chart = a.charts[c];
+    const glm::ivec2 o = chart.origin, n = chart.size, h = glm::max(n / 2, 1);
+    // The whole chart and its halves: the L of three quads (concave) has two halves of two quads
+    // side by side (convex), whichever way its grid lies; the cylinder's charts are curved.
+    for (const glm::ivec4 r : {glm::ivec4(o, n), glm::ivec4(o, n.x, h.y), glm::ivec4(o.x, o.y + h.y, n.x, n.y - h.y),
+                               glm::ivec4(o, h.x, n.y), glm::ivec4(o.x + h.x, o.y, n.x - h.x, n.y)}) {
+      const std::vector<Poly3> pieces = a.blockShape(s, r), outline = a.blockOutline(s, r);
+      if (pieces.size() < 2) continue;
+      CAPTURE(c, pieces.size(), chart.polygons.size());
+      const bool l = chart.planar && chart.polygons.size() == 3;
+      if (l && r == glm::ivec4(o, n)) CHECK(outline == pieces);  // concave: kept
+      if (l) lMerged += outline.size() == 1;
+      if (!chart.planar) curvedMerged += outline != pieces;
+      double whole = 0, outlined = 0;
+      for (const Poly3& p : pieces) whole += area(p);
+      for (const Poly3& p : outline) outlined += area(p);
+      CHECK(outlined == Approx(whole).epsilon(1e-12));
+      // What a receiver in front of it sees: the contour integral is linear in the shape.
+      const glm::dvec3 front = glm::normalize(newellNormal(pieces[0]));
+      const glm::dvec3 at = pieces[0][0] + 0.3 * front + glm::dvec3(0.05, 0.02, 0.01);
+      double F = 0, G = 0;
+      for (const Poly3& p : pieces) F += cpu::pointToPolygon(at, -front, p, newellNormal(p));
+      for (const Poly3& p : outline) G += cpu::pointToPolygon(at, -front, p, newellNormal(p));
+      CHECK(G == Approx(F).epsilon(1e-10));
+      compared += F > 0;
+    }
+  }
+  CHECK(lMerged == 2);
+  CHECK(curvedMerged == 0);
+  CHECK(compared > 10);
 }

@@ -395,10 +395,21 @@ std::vector<Poly3> Atlas::elementShape(const Scene& scene, int x, int y) const {
   return blockShape(scene, glm::ivec4(x, y, 1, 1));
 }
 
-std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const {
+namespace {
+// Pieces' areas and their hull's agree to rounding when they tile it; a gap or notch of a
+// millionth of the block is not rounding.
+constexpr double kTilingTolerance = 1e-6;
+}  // namespace
+
+std::uint32_t Atlas::chartUnder(glm::ivec4 rect) const {
   std::uint32_t chart = kNoPolygon;
   for (int y = rect.y; y < rect.y + rect.w && chart == kNoPolygon; ++y)
     for (int x = rect.x; x < rect.x + rect.z && chart == kNoPolygon; ++x) chart = chartAt(size_t(y) * width + x);
+  return chart;
+}
+
+std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const {
+  const std::uint32_t chart = chartUnder(rect);
   if (chart == kNoPolygon) return {};
   const Chart& c = charts[chart];
   glm::dvec2 lo(rect.x - c.origin.x, rect.y - c.origin.y), hi = lo + glm::dvec2(rect.z, rect.w);
@@ -414,6 +425,27 @@ std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const 
     for (auto& q : cut) piece.push_back(c.toSurface(c.parts[k], k, on, q));
   }
   return out;
+}
+
+std::vector<Poly3> Atlas::blockOutline(const Scene& scene, glm::ivec4 rect) const {
+  std::vector<Poly3> pieces = blockShape(scene, rect);
+  if (pieces.size() < 2) return pieces;
+  const Chart& c = charts[chartUnder(rect)];
+  if (!c.planar || c.uvMapped()) return pieces;
+  // Convex pieces that do not overlap tile a convex region exactly when their areas sum to their hull's.
+  std::vector<glm::dvec2> corners;
+  double sum = 0;
+  for (const Poly3& piece : pieces) {
+    Poly2 flat;
+    for (const glm::dvec3& p : piece) flat.push_back(c.frame.project(p));
+    sum += std::abs(signedArea(flat));
+    corners.insert(corners.end(), flat.begin(), flat.end());
+  }
+  const Poly2 hull = convexHull(std::move(corners));
+  if (hull.size() < 3 || std::abs(signedArea(hull) - sum) > kTilingTolerance * sum) return pieces;
+  Poly3 outline;  // counter-clockwise in the frame, as blockShape's cuts are
+  for (const glm::dvec2& q : hull) outline.push_back(c.frame.lift(q));
+  return {outline};
 }
 
 glm::vec3 Atlas::sample(const std::vector<glm::vec4>& values, int polygon, glm::dvec2 coord) const {

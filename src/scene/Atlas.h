@@ -79,7 +79,13 @@ class Atlas {
   // The pieces of the chart under an atlas rectangle of one chart (x, y, w, h): what a shooter
   // block emits from, each convex (elementShape for a 1 x 1 block).
   std::vector<Poly3> blockShape(const Scene& scene, glm::ivec4 rect) const;
+  // The same region as few convex pieces as its chart allows: on a planar chart (not UV-mapped)
+  // whose pieces tile a convex region, that region's outline, one piece (a block over a
+  // triangulated wall, or over a refined chart's parts, costs the gather one contour, not one
+  // a part); else blockShape's pieces. What shooter blocks emit from (shapeTable).
+  std::vector<Poly3> blockOutline(const Scene& scene, glm::ivec4 rect) const;
   std::vector<ShooterBlock> shooterBlocks(int level) const;
+  std::uint32_t chartUnder(glm::ivec4 rect) const;  // the chart of the rectangle's first element, or kNoPolygon
   // A hash of where every chart lies and how its grid is laid (origin, size, frame, corner):
   // checkpoints carry it, so one made with another layout is refused, not misread.
   std::uint64_t layoutHash() const;

@@ -70,11 +70,15 @@ ShapeTable shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<
     out.slots[base] = glm::vec4(float(piece.size()), 0, 0, 0);
     for (std::size_t i = 0; i < piece.size(); ++i) out.slots[base + 1 + i] = glm::vec4(glm::vec3(piece[i]), 1);
   };
+  auto fits = [](const std::vector<Poly3>& shape) {
+    bool ok = !shape.empty() && shape.size() <= std::size_t(kMaxShapePieces);
+    for (const Poly3& piece : shape) ok = ok && piece.size() >= 3 && piece.size() <= std::size_t(kMaxShapeVertices);
+    return ok;
+  };
   for (std::size_t b = 0; b < rects.size(); ++b) {
-    const std::vector<Poly3> shape = atlas.blockShape(scene, rects[b]);
-    bool fits = !shape.empty() && shape.size() <= std::size_t(kMaxShapePieces);
-    for (const Poly3& piece : shape) fits = fits && piece.size() >= 3 && piece.size() <= std::size_t(kMaxShapeVertices);
-    if (!fits) {  // count 0: the gather takes the disc form factor
+    std::vector<Poly3> shape = atlas.blockOutline(scene, rects[b]);
+    if (shape.size() == 1 && !fits(shape)) shape = atlas.blockShape(scene, rects[b]);  // an outline of many corners
+    if (!fits(shape)) {  // count 0: the gather takes the disc form factor
       out.discShapes += !shape.empty();
       continue;
     }

@@ -41,7 +41,7 @@ class SolverState {
 
 // Shooter shapes for shaders/formfactor.glsl: per atlas rectangle (shooter block) a slot of
 // kShapeStride vec4s, its header the vertex count, the piece count (bits) and the offset of the
-// next piece (in vec4s, bits; 0: none), then the vertices of Atlas::blockShape's first piece; the
+// next piece (in vec4s, bits; 0: none), then the vertices of Atlas::blockOutline's first piece; the
 // other pieces follow the rectangles' slots packed (a header linking the next, then its vertices),
 // so a curved chart's many small pieces take a third of a slot each. A shape of more than kMaxShapePieces pieces or a
 // piece of more than kMaxShapeVertices vertices gets count 0: the gather then takes the disc.
