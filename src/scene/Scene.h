@@ -70,8 +70,9 @@ class Scene {
   // A refined layout (src/scene/Leaves.h) cuts polygons along its leaves; `wholes` keeps each cut
   // polygon whole, and wholeOf[p] names the whole polygon p was cut from (-1: p is not a cut
   // part; empty: none is). Item buffers draw the wholes in place of their parts, as occluders
-  // [polygons().size(), occluderCount()): a receiver's window then names one polygon to test
-  // exactly where it named several parts (adaptive Cornell at 100k: 2x the gather's time).
+  // [polygons().size(), occluderCount()): fewer triangles to draw, and a receiver's window
+  // names one polygon to test where it named several parts (adaptive Cornell at 100k: 38 item
+  // triangles, not 3,474; the item buffer's time on llvmpipe 0.70 -> 0.09 s).
   std::vector<ScenePolygon> wholes;
   std::vector<int> wholeOf;
 
