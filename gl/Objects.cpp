@@ -20,48 +20,27 @@ std::string formatBytes(double bytes) {
   return bytes >= 1 << 30 ? fmt::format("{:.2f} GiB", bytes / (1 << 30)) : fmt::format("{:.1f} MiB", bytes / (1 << 20));
 }
 
-std::string formatName(GLenum f, int& bytesPerTexel) {
-  switch (f) {
-    case GL_RGBA32F:
-      bytesPerTexel = 16;
-      return "GL_RGBA32F";
-    case GL_R32UI:
-      bytesPerTexel = 4;
-      return "GL_R32UI";
-    case GL_R32F:
-      bytesPerTexel = 4;
-      return "GL_R32F";
-    case GL_DEPTH_COMPONENT32F:
-      bytesPerTexel = 4;
-      return "GL_DEPTH_COMPONENT32F";
-    case GL_RGBA8:
-      bytesPerTexel = 4;
-      return "GL_RGBA8";
-    default:
-      bytesPerTexel = 16;
-      return fmt::format("format 0x{:04x}", f);
-  }
-}
+// The texture formats hemirad allocates: name, bytes a texel, and the glClearTexImage format and
+// type that zero one (a pooled texture handed out again, StoragePool.h).
+struct TextureFormat {
+  GLenum internal;
+  const char* name;
+  int bytes;
+  GLenum zeroFormat, zeroType;
+};
+constexpr TextureFormat kTextureFormats[] = {
+    {GL_RGBA32F, "GL_RGBA32F", 16, GL_RGBA, GL_FLOAT},
+    {GL_R32UI, "GL_R32UI", 4, GL_RED_INTEGER, GL_UNSIGNED_INT},
+    {GL_R32F, "GL_R32F", 4, GL_RGBA, GL_FLOAT},
+    {GL_DEPTH_COMPONENT32F, "GL_DEPTH_COMPONENT32F", 4, GL_DEPTH_COMPONENT, GL_FLOAT},
+    {GL_RGBA8, "GL_RGBA8", 4, GL_RGBA, GL_FLOAT},
+};
 
-// The glClearTexImage format and type that zero a texture of `internal` format; false for one the
-// storage pool does not take (none of hemirad's).
-bool clearFormat(GLenum internal, GLenum& format, GLenum& type) {
-  type = internal == GL_R32UI ? GL_UNSIGNED_INT : GL_FLOAT;
-  switch (internal) {
-    case GL_RGBA32F:
-    case GL_R32F:
-    case GL_RGBA8:
-      format = GL_RGBA;
-      return true;
-    case GL_R32UI:
-      format = GL_RED_INTEGER;
-      return true;
-    case GL_DEPTH_COMPONENT32F:
-      format = GL_DEPTH_COMPONENT;
-      return true;
-    default:
-      return false;
-  }
+// Its entry, or null for another format (then 16 bytes a texel are counted, and it is not pooled).
+const TextureFormat* textureFormat(GLenum f) {
+  for (const TextureFormat& t : kTextureFormats)
+    if (t.internal == f) return &t;
+  return nullptr;
 }
 
 // Storage allocation is where a GPU runs out of memory: GL_OUT_OF_MEMORY (or any error) there is
@@ -170,15 +149,13 @@ void Buffer::copyTo(Buffer& destination, std::size_t from, std::size_t to, std::
 // ---- Texture
 Texture::Texture(GLenum internalFormat, int width, int height, int layers)
     : width_(width), height_(height), layers_(layers), format_(internalFormat) {
-  int texel = 0;
-  const std::string name = formatName(internalFormat, texel);
-  const std::size_t bytes =
-      std::size_t(texel) * std::size_t(width) * std::size_t(height) * std::size_t(std::max(layers, 1));
+  const TextureFormat* known = textureFormat(internalFormat);
+  const std::string name = known ? known->name : fmt::format("format 0x{:04x}", internalFormat);
+  const std::size_t bytes = std::size_t(known ? known->bytes : 16) * std::size_t(width) * std::size_t(height) *
+                            std::size_t(std::max(layers, 1));
   const StorageShape shape{internalFormat, bytes, width, height, layers};
-  GLenum zeroFormat = 0, zeroType = 0;
-  const bool pooled = clearFormat(internalFormat, zeroFormat, zeroType);
-  if (pooled && (id_ = takeStorage(shape))) {  // as fresh storage: zeros
-    glClearTexImage(id_, 0, zeroFormat, zeroType, nullptr);
+  if (known && (id_ = takeStorage(shape))) {  // as fresh storage: zeros
+    glClearTexImage(id_, 0, known->zeroFormat, known->zeroType, nullptr);
   } else {
     allocate(id_, true, [&] {
       glCreateTextures(layers ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &id_);
@@ -190,7 +167,7 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
       return fmt::format("a {} x {}{} {} texture ({})", width, height, layers ? fmt::format(" x {}", layers) : "",
                          name, formatBytes(double(bytes)));
     });
-    if (pooled) poolStorage(id_, shape);
+    if (known) poolStorage(id_, shape);
   }
   allocation_ = Allocation(bytes);
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // (a pooled one may have been linearFiltering'd)

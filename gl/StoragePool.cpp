@@ -25,8 +25,8 @@ struct StoragePool {
 };
 
 // Past either cap the oldest idle objects are deleted: a process that walks through scenes of
-// many sizes (a bench's rows, the viewer) keeps the recent ones, and a 1M-element solve's
-// buffers (~1.3 GiB, bench --elements 1000000) are not held twice.
+// many sizes (a bench's rows, the viewer) keeps the recent ones, and idle storage never holds
+// more than a large solve's own (bench --elements 1000000 allocates ~94 MiB).
 constexpr std::size_t kMostIdleStorage = 256;
 constexpr std::size_t kMostIdleBytes = std::size_t(1) << 30;
 

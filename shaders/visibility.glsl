@@ -71,10 +71,9 @@ float unoccludedFormFactor(uint s, vec3 x, vec3 nr) {
   return shapeFormFactor(control.shooter[s].shape, pa.xyz, pa.w, control.shooter[s].normal.xyz, x, nr);
 }
 
-// A receiver element: texel t of `polygon`, its centre x, normal n and area, fetched once for all
-// the shooters of a pass (llvmpipe does not hoist a texelFetch out of the shooter loop).
+// A receiver element of `polygon`: its centre x, normal n and area, fetched from its texel once
+// for all the shooters of a pass.
 struct Receiver {
-  ivec2 t;
   uint polygon;
   vec3 x, n;
   float area;
@@ -82,7 +81,7 @@ struct Receiver {
 
 Receiver receiverAt(ivec2 t, uint polygon) {
   vec4 pa = texelFetch(atlasPositionArea, t, 0);
-  return Receiver(t, polygon, pa.xyz, texelFetch(atlasNormal, t, 0).xyz, pa.w);
+  return Receiver(polygon, pa.xyz, texelFetch(atlasNormal, t, 0).xyz, pa.w);
 }
 
 // Form factor from receiver element r to shooter s of the pass, visibility included:

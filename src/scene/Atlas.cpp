@@ -421,12 +421,9 @@ std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const 
   std::vector<Poly3> out;
   const glm::dvec2 boxLo = c.corner + lo * c.cellSize, boxHi = c.corner + hi * c.cellSize;
   for (std::size_t k = 0; k < c.parts.size(); ++k) {
-    if (k < c.partBox.size()) {  // overlapsBox's test on the stored box: most of a large chart's parts
-      const glm::dvec4& b = c.partBox[k];
-      if (!(b.x < boxHi.x && b.y < boxHi.y && b.z > boxLo.x && b.w > boxLo.y)) continue;
-    }
+    const glm::dvec4& b = c.partBox[k];  // overlapsBox's test, on the stored box: most of a large chart's parts
+    if (!(b.x < boxHi.x && b.y < boxHi.y && b.z > boxLo.x && b.w > boxLo.y)) continue;
     const Poly2 part = c.partInChart(c.parts[k], k);
-    if (!overlapsBox(part, boxLo, boxHi)) continue;
     Poly2 cut = clipToBox(part, boxLo, boxHi);
     if (cut.size() < 3 || signedArea(cut) <= kMinCutFraction * c.cellSize * c.cellSize) continue;
     const ScenePolygon& on = scene.polygons()[std::size_t(c.partPolygon[k])];

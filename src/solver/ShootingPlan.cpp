@@ -50,7 +50,8 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
   // (adaptive Cornell at 100k elements: 128^2, not 256^2, as uniform subdivision at 100k).
   const bool hemicube = projection == Projection::Hemicube;
   double finest = atlas.texelSize;
-  for (const Chart& c : atlas.charts) finest = hemicube ? finest : std::min(finest, c.cellSize);
+  if (!hemicube)
+    for (const Chart& c : atlas.charts) finest = std::min(finest, c.cellSize);
   const int divisor = hemicube ? kHemicubeDivisor : 1;
   plan.itemResolution =
       itemResolution != kAutoItemResolution
