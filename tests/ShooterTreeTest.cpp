@@ -95,6 +95,7 @@ TEST_CASE(
   }
   planned.shootLevel = whole.shootLevel = refined.shootLevel = kAutoShootLevel;
   whole.splitDepth = 0;
+  planned.refineNear = whole.refineNear = 0;  // unrefined (auto would refine at 0.99)
   refined.refineNear = 4;
   test::Solved a = test::solve(s, texel, fine), b = test::solve(s, texel, planned), c = test::solve(s, texel, whole),
                d = test::solve(s, texel, refined);

@@ -379,12 +379,12 @@ void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const ch
 void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, const Say& say) {
   say(
       fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, chart angle {}, preset {}: shoot level {}, item mesh "
-                  "L{}, {} item buffer {}, visibility {}\n\n",
+                  "L{}, {} item buffer {}, visibility {}, refine near {:g}\n\n",
                   date, backend.name(), backend.renderer(), algorithmName(o.progressive.algorithm), o.converge,
                   o.chartAngle, o.progressive.presetLabel(), printedSetting(o.progressive.shootLevel, kAutoShootLevel),
                   o.progressive.itemSubdivision, projectionName(o.progressive.projection),
                   printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2"),
-                  visibilityName(o.progressive.visibility)));
+                  visibilityName(o.progressive.visibility), refineNearFor(o.progressive.refineNear, o.converge)));
   Ceilings ceiling;
   if (o.ceiling) {
     ceiling = measureCeilings(backend, o.scenes.front());
@@ -424,6 +424,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
                           {"item_resolution", o.progressive.itemResolution},
                           {"projection", projectionName(o.progressive.projection)},
                           {"visibility", visibilityName(o.progressive.visibility)},
+                          {"refine_near", refineNearFor(o.progressive.refineNear, o.converge)},
                           {"rows", rows},
                           {"provenance", provenanceJson(provenance(backend.name(), backend.renderer()))}};
     if (o.ceiling)

@@ -101,19 +101,20 @@ const CLI::Validator kScene(
 
 // "auto" (planned from the scene, src/solver/ShootingPlan.h; stored as autoValue) or an integer
 // in [lo, hi].
-CLI::Validator autoOr(int autoValue, int lo, int hi) {
-  const std::string range = fmt::format("{} to {}", lo, hi);
+// "auto" (stored as autoValue) or a number from lo to hi: an integer unless `real`.
+CLI::Validator autoOr(double autoValue, double lo, double hi, bool real = false) {
+  const std::string range = fmt::format("{:g} to {:g}", lo, hi);
   return CLI::Validator(
       [=](std::string& v) {
         if (v == "auto") {
-          v = std::to_string(autoValue);
+          v = fmt::format("{:g}", autoValue);
           return std::string();
         }
         char* end = nullptr;
-        const long x = std::strtol(v.c_str(), &end, 10);
+        const double x = real ? std::strtod(v.c_str(), &end) : double(std::strtol(v.c_str(), &end, 10));
         return end != v.c_str() && *end == '\0' && x >= lo && x <= hi
                    ? std::string()
-                   : fmt::format("must be auto or an integer from {}, not '{}'", range, v);
+                   : fmt::format("must be auto or {} from {}, not '{}'", real ? "a number" : "an integer", range, v);
       },
       "auto or " + range);
 }
@@ -204,11 +205,16 @@ std::vector<Flag> sceneAndSolverFlags() {
        "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
        "scene wide (emitters 1/16)",
        autoOr(kAutoShootLevel, 0, 8)},
-      {"--refine-near", "K",
-       "A receiver nearer a shooter block than K times the block's side gets the block's quadrants' own light one by "
-       "one, each from its own origin with exact visibility, and the far receivers what the near ones took less, so "
-       "the shot is conserved (hierarchical radiosity's link refinement; 0: off; 4: preset refined)",
-       CLI::Range(0.0, 16.0)},
+      {"--refine-near", "K|auto",
+       fmt::format(
+           "A receiver nearer a shooter block than K times the block's side gets the block's quadrants' own light one "
+           "by one, each from its own origin with exact visibility, and the far receivers what the near ones took "
+           "less, so the shot is conserved (hierarchical radiosity's link refinement; 0: off; {0:g}: preset refined); "
+           "auto: {0:g} where the solve stops at --converge {1:g} or more, whose accuracy needs it (every Cornell "
+           "object within 0.2 % of element-by-element shooting at 0.999), else 0 "
+           "(docs/design.md#near-shooter-refinement)",
+           kRefinedPlan.refineNear, kRefineFrom),
+       autoOr(kAutoRefineNear, 0, 16, true)},
       {"--visibility", "HOW",
        "Whether a receiver sees a shooter: item-buffer (seed 003: the shooter's item buffer nominates occluders, "
        "exact segment tests decide; an occluder thinner than a pixel can be missed), bvh (exact segment tests "
@@ -467,7 +473,10 @@ std::string defaultText(const std::string& flag) {
   if (flag == "--item-subdiv") return fmt::format("{} (preset {})", kFastPlan.itemSubdivision, kDefaultPreset);
   if (flag == "--item-res") return autoText(kFastPlan.itemResolution, kAutoItemResolution);
   if (flag == "--shoot-level") return autoText(kFastPlan.shootLevel, kAutoShootLevel);
-  if (flag == "--refine-near") return fmt::format("{:g} (preset {})", kFastPlan.refineNear, kDefaultPreset);
+  if (flag == "--refine-near")
+    return fmt::format("{} (preset {})",
+                       kFastPlan.refineNear == kAutoRefineNear ? "auto" : fmt::format("{:g}", kFastPlan.refineNear),
+                       kDefaultPreset);
   throw std::logic_error(flag + " is not set by a preset");
 }
 

@@ -12,6 +12,7 @@
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
 #include "src/base/Hash.h"
+#include "src/solver/Presets.h"
 #include "src/solver/Projection.h"
 
 namespace hemirad {
@@ -150,8 +151,13 @@ void checkResumable(const std::string& path, const nlohmann::json& savedAsWritte
     if (it == saved.end() || *it != value)
       fail(
           "--resume {}: the checkpoint was made with {} = {}, this run has {}; resume with the same scene and "
-          "parameters",
-          path, key, it == saved.end() ? "(none)" : it->dump(), value.dump());
+          "parameters{}",
+          path, key, it == saved.end() ? "(none)" : it->dump(), value.dump(),
+          key == "refine_near" && it != saved.end() && it->is_number()
+              ? fmt::format(" (--refine-near auto refines from --converge {:g}: give --refine-near {:g} to go on "
+                            "as it began)",
+                            kRefineFrom, it->get<double>())
+              : "");
   }
 }
 

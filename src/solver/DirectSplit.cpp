@@ -7,6 +7,7 @@ namespace hemirad {
 std::vector<glm::vec4> directOnlyRadiosity(const Scene& scene, const Atlas& atlas, ProgressiveSettings settings,
                                            const Camera& camera, double aspect) {
   settings.directOnly = true;
+  settings.refineNear = settings.nearRefinement();  // the full solve's, which the stop rule below no longer gives
   // No target: select.comp stops once nothing is unshot, i.e. once every emitter has shot.
   settings.stop.targetConvergence = 0;
   settings.timings = gl::TimerMode::Off;

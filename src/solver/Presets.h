@@ -19,7 +19,8 @@ struct ItemPlan {
   int itemSubdivision;  // item-mesh 1-to-4 splits
   int itemResolution;   // pixels a side; kAutoItemResolution: planned from the element size
   int shootLevel;       // 2^k x 2^k texel shooter blocks; kAutoShootLevel: planned from the scene
-  double refineNear;    // a receiver nearer a shooter than this many times its side sees it part by part (0: off)
+  double refineNear;    // a receiver nearer a shooter than this many times its side sees it part by part (0:
+                        // off); kAutoRefineNear: refineNearFor's choice from the stop rule
   bool operator==(const ItemPlan&) const = default;
 };
 
@@ -30,12 +31,13 @@ struct Preset {
   std::string_view measured;  // its speed and accuracy on the Cornell box (docs/cli.md)
 };
 
+inline constexpr double kAutoRefineNear = -1.0;  // ItemPlan::refineNear: refineNearFor decides
 // The exact fast plan: hemicube item buffers at item-mesh level 0 (straight edges, so exact),
-// planned shooter blocks and resolution. Near-shooter refinement (--refine-near) is not in it: it
-// costs 2-3x the time on the H200 (docs/design.md#near-shooter-refinement).
-inline constexpr ItemPlan kFastPlan{Projection::Hemicube, 0, kAutoItemResolution, kAutoShootLevel, 0.0};
+// planned shooter blocks and resolution, refined near its shooters where the stop rule asks for
+// the accuracy that refinement gives (refineNearFor).
+inline constexpr ItemPlan kFastPlan{Projection::Hemicube, 0, kAutoItemResolution, kAutoShootLevel, kAutoRefineNear};
 // The fast plan with near-shooter refinement (visibility and transfer, conserving) within 4 block
-// sides: every Cornell object within 0.2 % of element-by-element shooting.
+// sides at any convergence: every Cornell object within 0.2 % of element-by-element shooting.
 inline constexpr ItemPlan kRefinedPlan{Projection::Hemicube, 0, kAutoItemResolution, kAutoShootLevel, 4.0};
 // Seed 003's configuration, the default until issue 30: orthographic hemisphere, L3, 512^2, level 1.
 inline constexpr ItemPlan kSeed003Plan{Projection::Orthographic, 3, 512, 1, 0.0};
@@ -44,10 +46,22 @@ inline constexpr ItemPlan kReferencePlan{Projection::Hemicube, 0, 1024, 0, 0.0};
 
 inline constexpr std::string_view kDefaultPreset = "fast";
 
+// --refine-near auto: near-shooter refinement where a solve stops at convergence kRefineFrom or
+// more, else none. Unrefined, a coarse block's near receivers are off by up to ~1 % of their light
+// (Cornell box, 2,508 elements: short block -1.03 % at 0.999); a solve stopped with more than 1 %
+// of its light unshot is off by far more (at 0.9 every object is 9-14 % low, refined or not, the
+// two within 0.5 %), so refining it buys nothing and costs 3x (H200) to 6x (llvmpipe) a shot. At
+// 0.99 refinement takes the short block from -2.05 to -1.28 %, at 0.999 from -1.03 to -0.17 %
+// (docs/design.md#near-shooter-refinement). Hierarchical radiosity likewise refines links only
+// while their error is above the solution's tolerance.
+inline constexpr double kRefineFrom = 0.99;
+// refineNear as given, or for auto: kRefinedPlan's where targetConvergence >= kRefineFrom, else 0.
+double refineNearFor(double refineNear, double targetConvergence);
+
 const std::vector<Preset>& presets();  // `fast` (the default) first
 // The preset of that name; InputError naming the presets otherwise.
 const Preset& findPreset(std::string_view name);
-// "--hemisphere hemicube --item-subdiv 0 --item-res auto --shoot-level auto --refine-near 0": the flags a plan sets.
+// "--hemisphere hemicube --item-subdiv 0 --item-res auto --shoot-level auto --refine-near auto": the flags a plan sets.
 std::string presetFlags(const ItemPlan& plan);
 // "fast, seed003, reference", for messages.
 std::string presetNames();

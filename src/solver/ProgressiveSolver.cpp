@@ -74,7 +74,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   if (settings.directOnly) gatherDefines.push_back({"DIRECT_ONLY", "1"});
   gatherDefines.push_back({"GATHER_GROUP", std::to_string(kGatherGroup)});
   gather_ = computeProgram("gather.comp", gatherDefines);
-  if (refinesNear()) gather_.set("refineNear", float(settings.refineNear));
+  if (refinesNear()) gather_.set("refineNear", float(settings.nearRefinement()));
   if (perspective) {
     perspective_ = std::make_unique<PerspectiveView>(
         state, nodes_, blockCount_,

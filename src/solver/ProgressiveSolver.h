@@ -51,7 +51,8 @@ struct ProgressiveSettings {
           .itemResolution;  // item buffer pixels per side (the hemicube's budget too); kAutoItemResolution: planned
   Projection projection = kFastPlan.projection;
   int shootLevel = kFastPlan.shootLevel;  // substructuring: shoot from 2^k x 2^k texel blocks; kAutoShootLevel: planned
-  double refineNear = kFastPlan.refineNear;  // receivers nearer than this many shooter sides see its parts (0: off)
+  double refineNear = kFastPlan.refineNear;  // receivers nearer than this many shooter sides see its parts (0: off;
+                                             // kAutoRefineNear: refineNearFor the stop rule, nearRefinement())
   std::string preset{kDefaultPreset};        // the preset the five above started from (the report names it)
   Visibility visibility = Visibility::Auto;
   ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel, refineNear}; }
@@ -63,6 +64,8 @@ struct ProgressiveSettings {
     itemResolution = p.plan.itemResolution, shootLevel = p.plan.shootLevel, refineNear = p.plan.refineNear;
   }
   std::string presetLabel() const { return hemirad::presetLabel(preset, plan()); }
+  // The near-shooter refinement this solve runs with: refineNear, auto resolved by the stop rule.
+  double nearRefinement() const { return refineNearFor(refineNear, stop.targetConvergence); }
   // A block whose elements' unshot radiosity spans more than uniformRatio (least / largest
   // luminance) shoots its brightest quadrant, down to splitDepth levels (ShooterTree.h).
   // Depth 3 and 0.1: within 1 % of per-element shooting on the Cornell box's objects with
@@ -145,7 +148,7 @@ class ProgressiveSolver final : public Solver {
   void setUpTree(const std::vector<ShooterBlock>& blocks, const gl::Defines& defines);
   void setUpReduction(unsigned keep, const gl::Defines& defines);
   void setUpControl(const StopRule& stop, unsigned keep);
-  bool refinesNear() const { return settings_.refineNear > 0 && treeDepth_ > 0; }
+  bool refinesNear() const { return settings_.nearRefinement() > 0 && treeDepth_ > 0; }
   bool tracesBvh() const { return refinesNear() || visibility_ == Visibility::Bvh; }
   void setUpBvh(gl::Defines& gatherDefines);
   void renderItemBuffer();                       // the pass's item buffers, unless visibility is traced

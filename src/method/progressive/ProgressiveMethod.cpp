@@ -38,7 +38,7 @@ class ProgressiveRun final : public AtlasRun {
     run.itemSubdivision = settings_.itemSubdivision;
     run.itemResolution = solver_.plan().itemResolution;
     run.shootLevel = settings_.shootLevel;
-    run.refineNear = settings_.refineNear;
+    run.refineNear = settings_.nearRefinement();
     run.visibility = visibilityName(solver_.visibility());
     run.shootersPerPass = settings_.shootersPerPass;
     run.importanceShots = solver_.importanceShots();
@@ -138,7 +138,7 @@ class ProgressiveMethod final : public AtlasMethod {
                                {"item_resolution", p.itemResolution},
                                {"projection", projectionName(p.projection)},
                                {"shoot_level", p.shootLevel},
-                               {"refine_near", p.refineNear},
+                               {"refine_near", p.nearRefinement()},
                                {"shooters_per_pass", p.shootersPerPass}};
     if (p.algorithm == Algorithm::Perspective) identity["fov_decay"] = p.fovDecayShots;  // 0: the default
     if (p.visibility != Visibility::Auto) identity["visibility"] = visibilityName(p.visibility);
