@@ -99,9 +99,8 @@ const CLI::Validator kScene(
     },
     "FILE");
 
-// "auto" (planned from the scene, src/solver/ShootingPlan.h; stored as autoValue) or an integer
-// in [lo, hi].
-// "auto" (stored as autoValue) or a number from lo to hi: an integer unless `real`.
+// "auto" (planned: src/solver/ShootingPlan.h, Presets.h; stored as autoValue) or a number from lo
+// to hi: an integer unless `real`.
 CLI::Validator autoOr(double autoValue, double lo, double hi, bool real = false) {
   const std::string range = fmt::format("{:g} to {:g}", lo, hi);
   return CLI::Validator(
@@ -474,9 +473,7 @@ std::string defaultText(const std::string& flag) {
   if (flag == "--item-res") return autoText(kFastPlan.itemResolution, kAutoItemResolution);
   if (flag == "--shoot-level") return autoText(kFastPlan.shootLevel, kAutoShootLevel);
   if (flag == "--refine-near")
-    return fmt::format("{} (preset {})",
-                       kFastPlan.refineNear == kAutoRefineNear ? "auto" : fmt::format("{:g}", kFastPlan.refineNear),
-                       kDefaultPreset);
+    return fmt::format("{} (preset {})", refineNearText(kFastPlan.refineNear), kDefaultPreset);
   throw std::logic_error(flag + " is not set by a preset");
 }
 

@@ -9,9 +9,6 @@ namespace hemirad {
 namespace {
 
 std::string setting(int value, int autoValue) { return value == autoValue ? "auto" : std::to_string(value); }
-std::string setting(double refineNear) {
-  return refineNear == kAutoRefineNear ? "auto" : fmt::format("{:g}", refineNear);
-}
 
 }  // namespace
 
@@ -51,7 +48,11 @@ std::string presetFlags(const ItemPlan& plan) {
   return fmt::format("--hemisphere {} --item-subdiv {} --item-res {} --shoot-level {} --refine-near {}",
                      projectionName(plan.projection), plan.itemSubdivision,
                      setting(plan.itemResolution, kAutoItemResolution), setting(plan.shootLevel, kAutoShootLevel),
-                     setting(plan.refineNear));
+                     refineNearText(plan.refineNear));
+}
+
+std::string refineNearText(double refineNear) {
+  return refineNear == kAutoRefineNear ? "auto" : fmt::format("{:g}", refineNear);
 }
 
 double refineNearFor(double refineNear, double targetConvergence) {
@@ -83,7 +84,7 @@ std::string presetLabel(std::string_view chosen, const ItemPlan& actual) {
   differs(actual.itemResolution != plan.itemResolution,
           "--item-res " + setting(actual.itemResolution, kAutoItemResolution));
   differs(actual.shootLevel != plan.shootLevel, "--shoot-level " + setting(actual.shootLevel, kAutoShootLevel));
-  differs(actual.refineNear != plan.refineNear, "--refine-near " + setting(actual.refineNear));
+  differs(actual.refineNear != plan.refineNear, "--refine-near " + refineNearText(actual.refineNear));
   return label + with;
 }
 

@@ -57,6 +57,7 @@ inline constexpr std::string_view kDefaultPreset = "fast";
 inline constexpr double kRefineFrom = 0.99;
 // refineNear as given, or for auto: kRefinedPlan's where targetConvergence >= kRefineFrom, else 0.
 double refineNearFor(double refineNear, double targetConvergence);
+std::string refineNearText(double refineNear);  // "auto" or the number
 
 const std::vector<Preset>& presets();  // `fast` (the default) first
 // The preset of that name; InputError naming the presets otherwise.
