@@ -33,7 +33,7 @@ double jsonLuminance(const nlohmann::json& rgb) {
 
 TEST_CASE(
     "The default solve is the fast plan, refined near its shooters at 0.999, and every Cornell object is within "
-    "0.2 % of element-by-element shooting there; unrefined within 1.2 %",
+    "0.2 % of element-by-element shooting there, unrefined within 1.2 %",
     "[heavy][cli][preset]") {
   // Cornell box, 2,500 elements, all solved to convergence 0.999 (so all leave the same unshot
   // share). Unrefined, the fast plan takes each coarse block's visibility from one origin and its
