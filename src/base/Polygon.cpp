@@ -92,11 +92,10 @@ Poly2 clipToBox(const Poly2& poly, glm::dvec2 lo, glm::dvec2 hi) {
   return out;
 }
 
-bool overlapsBox(const Poly2& p, glm::dvec2 lo, glm::dvec2 hi) {
-  if (p.empty()) return false;
-  glm::dvec2 a = p[0], b = p[0];
-  for (const glm::dvec2& q : p) a = glm::min(a, q), b = glm::max(b, q);
-  return a.x < hi.x && a.y < hi.y && b.x > lo.x && b.y > lo.y;
+Box2 boundingBox(const Poly2& p) {
+  Box2 b;
+  for (const glm::dvec2& q : p) b.lo = glm::min(b.lo, q), b.hi = glm::max(b.hi, q);
+  return b;
 }
 
 std::vector<int> triangulate(const Poly3& p, const glm::dvec3& normal) {

@@ -19,9 +19,17 @@ double planarityError(const Poly3& p);
 bool isConvex(const Poly3& p, const glm::dvec3& normal);
 // Sutherland–Hodgman clip of a polygon against the box [lo, hi].
 Poly2 clipToBox(const Poly2& p, glm::dvec2 lo, glm::dvec2 hi);
-// Whether p's bounding box meets the open box (lo, hi): false means clipToBox leaves no area, a
-// cheap reject before it.
-bool overlapsBox(const Poly2& p, glm::dvec2 lo, glm::dvec2 hi);
+// An axis-aligned box; empty (lo above hi) as constructed, until points are added.
+struct Box2 {
+  glm::dvec2 lo{1e300}, hi{-1e300};
+  // Whether it meets the open box (lo, hi): false means clipToBox leaves no area of what it bounds.
+  bool meets(glm::dvec2 boxLo, glm::dvec2 boxHi) const {
+    return lo.x < boxHi.x && lo.y < boxHi.y && hi.x > boxLo.x && hi.y > boxLo.y;
+  }
+};
+Box2 boundingBox(const Poly2& p);
+// Whether p's bounding box meets the open box (lo, hi): a cheap reject before clipToBox.
+inline bool overlapsBox(const Poly2& p, glm::dvec2 lo, glm::dvec2 hi) { return boundingBox(p).meets(lo, hi); }
 // The parameter range [t0, t1] of a + t (b - a), t in [0, 1], at least `inset` inside convex
 // counter-clockwise `poly`; false if none.
 bool clipSegment(const Poly2& poly, glm::dvec2 a, glm::dvec2 b, double inset, double& t0, double& t1);

@@ -377,6 +377,7 @@ void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const ch
 
 // Time to convergence per scene, element count and shooters a pass, against the measured ceilings.
 void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, const Say& say) {
+  const double refineNear = refineNearFor(o.progressive.refineNear, o.converge);  // what the solves run with
   say(
       fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, chart angle {}, preset {}: shoot level {}, item mesh "
                   "L{}, {} item buffer {}, visibility {}, refine near {:g}\n\n",
@@ -384,7 +385,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
                   o.chartAngle, o.progressive.presetLabel(), printedSetting(o.progressive.shootLevel, kAutoShootLevel),
                   o.progressive.itemSubdivision, projectionName(o.progressive.projection),
                   printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2"),
-                  visibilityName(o.progressive.visibility), refineNearFor(o.progressive.refineNear, o.converge)));
+                  visibilityName(o.progressive.visibility), refineNear));
   Ceilings ceiling;
   if (o.ceiling) {
     ceiling = measureCeilings(backend, o.scenes.front());
@@ -424,7 +425,7 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
                           {"item_resolution", o.progressive.itemResolution},
                           {"projection", projectionName(o.progressive.projection)},
                           {"visibility", visibilityName(o.progressive.visibility)},
-                          {"refine_near", refineNearFor(o.progressive.refineNear, o.converge)},
+                          {"refine_near", refineNear},
                           {"rows", rows},
                           {"provenance", provenanceJson(provenance(backend.name(), backend.renderer()))}};
     if (o.ceiling)

@@ -262,11 +262,7 @@ Chart makeChart(const ChartShape& s, glm::ivec2 origin) {
   c.size = s.size;
   c.corner = s.corner;
   c.cellSize = s.cellSize;
-  for (std::size_t k = 0; k < c.parts.size(); ++k) {
-    glm::dvec2 lo(1e300), hi(-1e300);
-    for (const glm::dvec2& q : c.partInChart(c.parts[k], k)) lo = glm::min(lo, q), hi = glm::max(hi, q);
-    c.partBox.emplace_back(lo, hi);
-  }
+  for (std::size_t k = 0; k < c.parts.size(); ++k) c.partBox.push_back(boundingBox(c.partInChart(c.parts[k], k)));
   return c;
 }
 
@@ -421,8 +417,7 @@ std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const 
   std::vector<Poly3> out;
   const glm::dvec2 boxLo = c.corner + lo * c.cellSize, boxHi = c.corner + hi * c.cellSize;
   for (std::size_t k = 0; k < c.parts.size(); ++k) {
-    const glm::dvec4& b = c.partBox[k];  // overlapsBox's test, on the stored box: most of a large chart's parts
-    if (!(b.x < boxHi.x && b.y < boxHi.y && b.z > boxLo.x && b.w > boxLo.y)) continue;
+    if (!c.partBox[k].meets(boxLo, boxHi)) continue;  // most of a large chart's parts
     const Poly2 part = c.partInChart(c.parts[k], k);
     Poly2 cut = clipToBox(part, boxLo, boxHi);
     if (cut.size() < 3 || signedArea(cut) <= kMinCutFraction * c.cellSize * c.cellSize) continue;

@@ -28,9 +28,9 @@ struct Chart : ChartMapping {
   std::vector<int> polygons;  // every member (Charts.h)
   std::vector<Poly3> parts;   // what elements are cut from (ChartGroup::parts)
   std::vector<int> partPolygon;
-  // Per part: its box in chart coordinates (lo x, lo y, hi x, hi y), so blockShape passes over
+  // Per part: its box in chart coordinates, so blockShape passes over
   // the parts a block misses without projecting them (a refined chart has hundreds).
-  std::vector<glm::dvec4> partBox;
+  std::vector<Box2> partBox;
   glm::ivec2 origin{0};  // atlas texel of cell (0, 0)
   glm::ivec2 size{0};    // cells
   glm::dvec2 corner{0};  // chart coordinates of cell (0, 0)'s lower-left corner
