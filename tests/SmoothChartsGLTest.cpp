@@ -186,6 +186,40 @@ TEST_CASE("A floor cut into two charts jumps at the seam, and stitching the seam
       CHECK(stitched[t] == b.B[t]);
 }
 
+TEST_CASE("Stitching bends a sliver chart to the large texel beside it and leaves a fold sharper than 30 degrees",
+          "[cpu][charts]") {
+  // A lit floor (B = 2), a 5 mm sliver rising 10 degrees from its edge and a face rising 45
+  // degrees from the sliver's far edge (a fold of 35 degrees), both B = 1: a cushion's top, its
+  // rim and its side. Each plane a chart (--chart-angle 0), texels of 0.1.
+  Scene s;
+  const int grey = test::material(s, 0.5, 0.0), object = s.addObject("fold");
+  const glm::dvec3 Z(0, 0, 1), rim(std::cos(M_PI / 18), std::sin(M_PI / 18), 0), side(std::sqrt(0.5), std::sqrt(0.5), 0);
+  const glm::dvec3 edge(1, 0, 0), far = edge + rim * 0.005;
+  s.addPolygon(test::rectangle({0, 0, 0}, Z, {1, 0, 0}, 1, 1), grey, object);
+  s.addPolygon(test::rectangle(edge, Z, rim, 1, 0.005), grey, object);
+  s.addPolygon(test::rectangle(far, Z, side, 1, 1), grey, object);
+  const Atlas atlas = buildAtlas(s, 0.1, 16384, 0, 0.0);
+  REQUIRE(atlas.chartOf[0] != atlas.chartOf[1]);
+  REQUIRE(atlas.chartOf[1] != atlas.chartOf[2]);
+  std::vector<glm::vec4> B(atlas.polygonOf.size(), glm::vec4(0.0f));
+  for (std::size_t t = 0; t < B.size(); ++t)
+    if (atlas.polygonOf[t] != kNoPolygon) B[t] = glm::vec4(atlas.chartAt(t) == atlas.chartOf[0] ? 2.0f : 1.0f);
+  const std::vector<glm::vec4> stitched = stitchSeams(s, atlas, B);
+  double floorMoved = 0, sliverLowest = 2;
+  for (std::size_t t = 0; t < B.size(); ++t) {
+    if (atlas.polygonOf[t] == kNoPolygon) continue;
+    const std::uint32_t chart = atlas.chartAt(t);
+    if (chart == atlas.chartOf[0]) floorMoved = std::max(floorMoved, double(B[t].g - stitched[t].g));
+    if (chart == atlas.chartOf[1]) sliverLowest = std::min(sliverLowest, double(stitched[t].g));
+    if (chart == atlas.chartOf[2]) CHECK(stitched[t] == B[t]);  // across the 35-degree fold: kept
+  }
+  INFO("floor texels lowered by up to " << floorMoved << ", sliver texels raised to at least " << sliverLowest);
+  // The sliver's texels cover 1/20 of the floor's: it takes 20/21 of the step (stitched evenly,
+  // both sides took half, and the floor's seam row fell to 1.5).
+  CHECK(floorMoved < 0.06);
+  CHECK(sliverLowest > 1.9);
+}
+
 TEST_CASE("Live views (viewer, walkthroughs) show B with its seams stitched, refreshed at every render",
           "[gl][charts]") {
   const Scene two = splitFloor(true);

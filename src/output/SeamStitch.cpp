@@ -16,6 +16,8 @@ namespace {
 // Sweeps over the seam constraints: each makes its two samples agree exactly; sweeps settle
 // the texels several constraints share (a texel's 2 x 2 neighbourhood holds a few).
 constexpr int kSweeps = 32;
+// A texel's area in the weighted change (below): a floor, for texels of zero area by rounding.
+constexpr double kMinArea = 1e-30;
 
 using Taps = SeamStitcher::Taps;
 using Constraint = SeamStitcher::Constraint;
@@ -35,15 +37,19 @@ Taps tapsAt(const Atlas& atlas, int polygon, glm::dvec3 p) {
     if (atlas.chartAt(index) != chart) continue;
     t.texel[std::size_t(t.count)] = index, t.weight[std::size_t(t.count)] = w, ++t.count, sum += w;
   }
-  for (int k = 0; k < t.count; ++k)
-    t.weight[std::size_t(k)] /= sum, t.norm2 += t.weight[std::size_t(k)] * t.weight[std::size_t(k)];
+  for (int k = 0; k < t.count; ++k) {
+    const std::size_t i = std::size_t(k);
+    t.weight[i] /= sum;
+    t.give[i] = t.weight[i] / std::max(double(atlas.positionArea[t.texel[i]].w), kMinArea);
+    t.norm2 += t.weight[i] * t.give[i];
+  }
   return t;
 }
 
 bool alike(const Scene& scene, const ScenePolygon& p, const ScenePolygon& q) {
   const Material &m = scene.materials[p.material], &n = scene.materials[q.material];
   return m.reflectance == n.reflectance && m.emission == n.emission &&
-         glm::dot(p.normal, q.normal) >= std::cos(kMaxChartAngle * M_PI / 180);
+         glm::dot(p.normal, q.normal) >= std::cos(kStitchAngle * M_PI / 180);
 }
 
 // Polygon pairs sharing an edge (vertices welded, src/scene/Welding.h), with the edge as the first has it.
@@ -139,12 +145,11 @@ glm::dvec3 sampleOf(const Taps& t, const std::vector<glm::vec4>& values) {
   return s;
 }
 
-// Moves t's sample by `delta` with the least change to its texels.
-void shift(const Taps& t, glm::dvec3 delta, std::vector<glm::vec4>& values) {
+// Moves t's texels by lambda times their shares (Taps::give).
+void shift(const Taps& t, glm::dvec3 lambda, std::vector<glm::vec4>& values) {
   for (int k = 0; k < t.count; ++k) {
     glm::vec4& v = values[t.texel[std::size_t(k)]];
-    v = glm::vec4(glm::max(glm::vec3(glm::dvec3(v) + delta * (t.weight[std::size_t(k)] / t.norm2)), glm::vec3(0.0f)),
-                  v.a);
+    v = glm::vec4(glm::max(glm::vec3(glm::dvec3(v) + lambda * t.give[std::size_t(k)]), glm::vec3(0.0f)), v.a);
   }
 }
 
@@ -155,8 +160,9 @@ SeamStitcher::SeamStitcher(const Scene& scene, const Atlas& atlas) : constraints
 std::vector<glm::vec4> SeamStitcher::operator()(std::vector<glm::vec4> values) const {
   for (int sweep = 0; sweep < kSweeps && !constraints_.empty(); ++sweep)
     for (const Constraint& c : constraints_) {
-      const glm::dvec3 half = 0.5 * (sampleOf(c.b, values) - sampleOf(c.a, values));
-      shift(c.a, half, values), shift(c.b, -half, values);
+      // The change of least area-weighted square (sum of area x change^2) that closes the gap.
+      const glm::dvec3 lambda = (sampleOf(c.b, values) - sampleOf(c.a, values)) / (c.a.norm2 + c.b.norm2);
+      shift(c.a, lambda, values), shift(c.b, -lambda, values);
     }
   return values;
 }

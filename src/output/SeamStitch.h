@@ -16,8 +16,14 @@
 namespace hemirad {
 
 // A seam is an edge shared by two polygons of different charts whose materials reflect and emit
-// alike and whose normals lie within kMaxChartAngle of each other (a sharper crease is a feature,
+// alike and whose normals lie within kStitchAngle of each other (a sharper crease is a feature,
 // kept), unless it runs along one of the scene's creases (contact lines, src/scene/ContactCuts.h).
+// 30 degrees, a smooth-shading angle, not a chart's 60: across a furniture model's folds (a
+// cushion's top, its rim, its side and its unlit underside) radiosity falls steeply, and stitched
+// as one surface the lit charts took the underside's dark (real_20k at 9,916 elements against
+// the path-traced reference, couch / armchair bias: -13.2 / -30.5 % stitched evenly to 60
+// degrees, -2.1 / -13.1 % area-weighted to 30, -2.1 / -11.3 % unstitched; docs/real-scenes.md).
+inline constexpr double kStitchAngle = 30;
 // The seams' sample points are found once per layout, so live views (the viewer,
 // walkthroughs, animations: Renderer::stitchLive) stitch every frame at the cost of the sweeps.
 class SeamStitcher {
@@ -28,12 +34,15 @@ class SeamStitcher {
   bool empty() const { return constraints_.empty(); }
 
   // A sample point's taps on one chart: the bilinear texels of that chart, weights normalised
-  // over them (Atlas::sample's blend).
+  // over them (Atlas::sample's blend), and each texel's share of a change, its weight over its
+  // area: a seam is closed by the change of least area-weighted square, so a chart's sliver
+  // texels bend to a large texel beside them rather than drag it (a cushion's top, two texels,
+  // joins through its rim's slivers the unlit underside; stitched evenly, the top took its dark).
   struct Taps {
     std::array<std::size_t, 4> texel{};
-    std::array<double, 4> weight{};
+    std::array<double, 4> weight{}, give{};
     int count = 0;
-    double norm2 = 0;  // sum of squared weights
+    double norm2 = 0;  // sum of weight x give
   };
   struct Constraint {  // one sample point of a seam, as each side looks it up
     Taps a, b;
