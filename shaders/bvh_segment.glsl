@@ -20,3 +20,18 @@ bool segmentBlocked(vec3 o, vec3 x, uint passA, uint passB, float eps) {
   }
   return false;
 }
+
+// Whether light travels from o, a point of shooter polygon `from`, to x, the centre of a receiver
+// element of `to` (side `side`): --visibility bvh's test and near-shooter refinement's. The
+// segment runs where light leaves and arrives: each end onto its polygon's plane (a curved
+// chart's centroids sit off its facets), the shooter's and the receiver's charts pass (point
+// visibility cannot resolve a surface against itself), and on a curved receiver (its centre off
+// its polygon's plane) the last half element side is not tested: the centre stands for a bent
+// patch, whose neighbouring facets lie that near. A planar receiver is tested to its centre, so
+// contact shadows stay whole. Needs scene.glsl's ontoPlane and chartOf.
+bool tracedClear(vec3 o, uint from, vec3 x, uint to, float side, float eps) {
+  vec3 a = ontoPlane(o, from), b = ontoPlane(x, to);
+  float reach = length(x - b) > 1e-3 * side ? 0.5 * side : 0.0;
+  float keep = max(0.0, 1.0 - reach / max(length(b - a), 1e-30));
+  return !segmentBlocked(a, a + (b - a) * keep, chartOf(to), chartOf(from), eps);
+}

@@ -16,16 +16,16 @@ bool nearNode(uint n, vec3 x) {
   return dot(d, d) < refineNear * refineNear * ca.w;
 }
 
-// What receiver x (normal nr, on `polygon`) near shot node `root` gets from its parts, descending
-// while x stays near: each part's unshot radiosity times its exact form factor, `all` of it and the
-// part each part's own light centre sees (`seen`; `seenRgb` per channel), visibility tested exactly.
+// What receiver x (normal nr, on `polygon`, an element of side `side`) near shot node `root` gets
+// from its parts, descending while x stays near: each part's unshot radiosity times its exact form
+// factor, `all` of it and the part each part's own light centre sees (`seen`; `seenRgb` per
+// channel), visibility tested exactly as --visibility bvh tests it (tracedClear).
 struct NearLight {
   vec3 seenRgb;
   float seen, all;
 };
 
-NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon) {
-  uint chart = chartOf(polygon);
+NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon, float side) {
   float eps = SEGMENT_TOLERANCE * farDistance;
   NearLight l = NearLight(vec3(0.0), 0.0, 0.0);
   // Depth first, the last child first (nodeOnPath; the order fixes the sums' bits).
@@ -44,7 +44,7 @@ NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon) {
     if (!empty && st.lightCentre.w > 0.0 && area > 0.0 && dot(x - o, ns) > 0.0) {
       float F = shapeFormFactor(n, o, area, ns, x, nr), w = luminance(st.unshot.rgb) / area * F;
       l.all += w;
-      if (w > 0.0 && !segmentBlocked(o, x, chart, NO_POLYGON, eps)) l.seen += w, l.seenRgb += st.unshot.rgb / area * F;
+      if (w > 0.0 && tracedClear(o, nodes[n].polygon, x, polygon, side, eps)) l.seen += w, l.seenRgb += st.unshot.rgb / area * F;
     }
     if (!pathNext(depth, path, true)) break;
   }

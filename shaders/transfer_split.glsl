@@ -17,10 +17,11 @@ vec3 nearTransfer(uint s, ivec2 t, vec3 x, uint polygon) {
   float F = unoccludedFormFactor(s, x, nr);
   float shot = luminance(control.shooter[s].shot.rgb), power = shot * control.shooter[s].positionArea.w;
   if (F <= 0.0 || power <= 0.0) return vec3(0.0);
-  NearLight l = nearLight(control.shooter[s].shape, x, nr, polygon);
+  float area = texelFetch(atlasPositionArea, t, 0).w;
+  NearLight l = nearLight(control.shooter[s].shape, x, nr, polygon, sqrt(area));
   // The block's uniform light with the parts' visibility: what x gets without the split.
   float uniformLight = l.all > 0.0 ? shot * F * l.seen / l.all : 0.0;
-  float perPower = texelFetch(atlasPositionArea, t, 0).w / power * kSplitScale;
+  float perPower = area / power * kSplitScale;
   atomicAdd(control.nearDeficit[s], int(round((uniformLight - l.seen) * perPower)));
   atomicAdd(control.nearShare[s], int(round(uniformLight * perPower)));
   return l.seenRgb;

@@ -14,18 +14,9 @@ uniform float farDistance;
 
 #ifdef BVH_VISIBILITY
 // --visibility bvh (docs/design.md#visibility): every polygon whose BVH boxes the segment meets is
-// tested, so no occluder is missed however thin. The segment runs where light leaves and arrives:
-// each end onto its polygon's plane (a curved chart's centroids sit off its facets), the shooter's
-// and the receiver's charts pass (point visibility cannot resolve a surface against itself), and
-// on a curved receiver (its centre off its polygon's plane) the last half element side is not
-// tested: the centre stands for a bent patch, whose neighbouring facets lie that near. A planar
-// receiver is tested to its centre, so contact shadows stay whole.
+// tested, so no occluder is missed however thin (bvh_segment.glsl's tracedClear).
 float tracedVisibility(uint shooter, vec3 o, vec3 x, uint polygon, float side) {
-  uint own = control.shooter[shooter].polygon;
-  vec3 a = ontoPlane(o, own), b = ontoPlane(x, polygon);
-  float reach = length(x - b) > 1e-3 * side ? 0.5 * side : 0.0;
-  float keep = max(0.0, 1.0 - reach / max(length(b - a), 1e-30));
-  return segmentBlocked(a, a + (b - a) * keep, chartOf(polygon), chartOf(own), SEGMENT_TOLERANCE * farDistance) ? 0.0 : 1.0;
+  return tracedClear(o, control.shooter[shooter].polygon, x, polygon, side, SEGMENT_TOLERANCE * farDistance) ? 1.0 : 0.0;
 }
 #endif
 
