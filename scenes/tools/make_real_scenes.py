@@ -16,6 +16,7 @@ import hashlib
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 import zipfile
@@ -255,6 +256,20 @@ def write_scene(out, name, spec, models):
     return w
 
 
+def write_furnace(out, name):
+    """Writes NAME_furnace.obj/.mtl/.camera: NAME with every material rho 0.5 and E 1, where every
+    visible point has B = E / (1 - rho) = 2 whatever the geometry (docs/real-scenes.md)."""
+    furnace = name + "_furnace"
+    with open(os.path.join(out, name + ".obj")) as src, open(os.path.join(out, furnace + ".obj"), "w") as fh:
+        for line in src:
+            fh.write(f"mtllib {furnace}.mtl\n" if line.startswith("mtllib ") else line)
+    with open(os.path.join(out, name + ".mtl")) as src:
+        names = [line.split()[1] for line in src if line.startswith("newmtl ")]
+    with open(os.path.join(out, furnace + ".mtl"), "w") as fh:
+        fh.write("# The furnace: every material rho 0.5, E 1.\n")
+        fh.write("".join(f"newmtl {m}\nKd 0.5 0.5 0.5\nKe 1 1 1\n\n" for m in names))
+    shutil.copyfile(os.path.join(out, name + ".camera"), os.path.join(out, furnace + ".camera"))
+
 
 def main():
     ap = argparse.ArgumentParser(description="Builds the real-scene benchmark suite (docs/real-scenes.md).")
@@ -262,6 +277,8 @@ def main():
     ap.add_argument("--cache", default=os.path.join(os.path.expanduser("~"), ".cache", "hemirad"),
                     help="download cache (default ~/.cache/hemirad)")
     ap.add_argument("--scenes", default=",".join(SCENES), help=f"comma-separated, of {','.join(SCENES)}")
+    ap.add_argument("--furnace", action="store_true",
+                    help="also write NAME_furnace: every material rho 0.5 and E 1, so B = 2 wherever seen")
     args = ap.parse_args()
     names = args.scenes.split(",")
     for n in names:
@@ -275,6 +292,8 @@ def main():
     print("| scene | triangles | polygons | objects | vertices | file |\n|---|---|---|---|---|---|")
     for n in names:
         w = write_scene(args.out, n, SCENES[n], models)
+        if args.furnace:
+            write_furnace(args.out, n)
         print(f"| {n} | {w.triangles} | {w.polygons} | {w.objects} | {w.vertices} | "
               f"{os.path.join(args.out, n + '.obj')} |")
     print("\n| model | creator | triangles | license file |\n|---|---|---|---|")
