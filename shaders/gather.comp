@@ -29,17 +29,21 @@
 uniform uint viewMode;
 #endif
 
-layout(local_size_x = GATHER_GROUP, local_size_y = GATHER_GROUP) in;  // ProgressiveSolver.cpp kGatherGroup
+#include "linear_group.glsl"
+
+// One invocation a receiver texel, in the order of src/solver/ReceiverOrder.h: x | y << 16.
+layout(local_size_x = GATHER_GROUP) in;  // ProgressiveSolver.cpp kGatherGroup
+layout(std430, binding = SSBO_RECEIVERS) readonly buffer Receivers { uint receiverTexel[]; };
 layout(binding = IMAGE_RADIOSITY, rgba32f) uniform image2D radiosity;
 layout(binding = IMAGE_DELTA_B, rgba32f) uniform image2D deltaB;
-uniform ivec2 atlasSize;
+uniform uint receiverCount;
 
 void main() {
-  ivec2 t = ivec2(gl_GlobalInvocationID.xy);
+  uint i = linearInvocation(GATHER_GROUP);
   // Once stopped, passes are empty.
-  if (control.count + control.importanceCount == 0u || any(greaterThanEqual(t, atlasSize))) return;
+  if (control.count + control.importanceCount == 0u || i >= receiverCount) return;
+  ivec2 t = ivec2(receiverTexel[i] & 0xFFFFu, receiverTexel[i] >> 16);
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
-  if (polygon == NO_POLYGON) return;
 #ifdef PERSPECTIVE
   bool deferred = viewMode == 2u;
   uvec4 view = surfaceView[polygon];

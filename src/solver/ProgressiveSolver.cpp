@@ -16,15 +16,17 @@
 #include "src/scene/ItemMesh.h"
 #include "src/solver/Bvh.h"
 #include "src/solver/Control.h"
+#include "src/solver/ReceiverOrder.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
 namespace {
 
-// gather.comp's local size (x and y): 8 x 8 fills the H200's 132 SMs better than 16 x 16 at
-// 100k elements (a pass's gather 138 -> 123 us; the same at 10k; docs/bench/h200-2026-12-04f.md).
-constexpr unsigned kGatherGroup = 8;
+// gather.comp's local size: 64 (8 x 8 atlas texels until ReceiverOrder.h) fills the H200's 132
+// SMs better than 256 at 100k elements (a pass's gather 138 -> 123 us; the same at 10k;
+// docs/bench/h200-2026-12-04f.md).
+constexpr unsigned kGatherGroup = 64;
 constexpr unsigned kGroupEntries = 1024;  // entries ranked per reduction workgroup (reduce_entry.glsl)
 constexpr unsigned kUnlimitedHistory = 1u << 20;
 // Passes enqueued past the status a run to the stop rule reads (advanceAhead): with 2, the H200's
@@ -83,7 +85,11 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   }
   setUpControl(settings.stop, keep);
   gather_.set("farDistance", float(state.farDistance));
-  gather_.set("atlasSize", state.atlas.width, state.atlas.height);
+  const std::vector<std::uint32_t> order =
+      receiverOrder(state.atlas, state.scene.boundsMin(), state.scene.boundsMax(), kGatherGroup);
+  receivers_ = gl::Buffer(std::span<const std::uint32_t>(order));
+  receiverCount_ = unsigned(order.size());
+  gather_.set("receiverCount", receiverCount_);
   gl::checkErrors("progressive solver setup");
 }
 
@@ -277,12 +283,12 @@ void ProgressiveSolver::gatherPass(Receivers receivers) {
     nodeStats_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODE_STATS);
   }
   if (tracesBvh()) bvh_.bind();
+  receivers_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_RECEIVERS);
   gather_.use();
   const unsigned phases = refinesNear() ? 2 : 1;  // transfer_split.glsl: near pairs, then far ones
   for (unsigned phase = 0; phase < phases; ++phase) {
     if (phases == 2) gather_.set("splitPhase", phase);
-    gl::Program::dispatch(gl::groupsFor(unsigned(state_.atlas.width), kGatherGroup),
-                          gl::groupsFor(unsigned(state_.atlas.height), kGatherGroup));
+    gl::dispatchLinear(gl::groupsFor(receiverCount_, kGatherGroup));
     gl::barrier(kAllBarriers);
   }
 }

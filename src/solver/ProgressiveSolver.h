@@ -185,6 +185,8 @@ class ProgressiveSolver final : public Solver {
   gl::Buffer shapes_;  // per node: its exact shape (shapeTable), what the gather integrates over
   int treeDepth_ = 0;  // levels below the deepest block
   BvhBuffers bvh_;     // the scene's BVH: exact visibility (near shooters, or --visibility bvh)
+  gl::Buffer receivers_;  // the gather's receiver texels in visiting order (ReceiverOrder.h)
+  unsigned receiverCount_ = 0;
   Visibility visibility_;
   std::unique_ptr<ItemBuffer> itemBuffer_;        // none with --visibility bvh
   std::unique_ptr<ImportanceView> view_;          // importance-driven solves only
