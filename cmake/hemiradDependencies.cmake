@@ -13,6 +13,7 @@ find_package(CGAL REQUIRED)
 find_package(Eigen3 3.3 REQUIRED)  # CGAL's FindEigen3; for its LSCM (src/scene/Lscm.cpp)
 include(CGAL_Eigen3_support)
 find_package(TBB REQUIRED)
+find_package(embree 3 REQUIRED)  # a CPU device's traced visibility (src/solver/HostTrace.h)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(stb REQUIRED IMPORTED_TARGET stb)  # stb_rect_pack, stb_image(_write) (libstb-dev)
 

@@ -43,6 +43,9 @@ void main() {
   // Once stopped, passes are empty.
   if (control.count + control.importanceCount == 0u || i >= receiverCount) return;
   ivec2 t = ivec2(receiverTexel[i] & 0xFFFFu, receiverTexel[i] >> 16);
+#ifdef HOST_VISIBILITY
+  hostReceiver = i;
+#endif
   uint polygon = texelFetch(atlasPolygon, t, 0).r;
 #ifdef PERSPECTIVE
   bool deferred = viewMode == 2u;

@@ -12,6 +12,14 @@ uniform float farDistance;
 #include "bvh_segment.glsl"
 #endif
 
+#ifdef HOST_VISIBILITY
+// --visibility bvh traced on the host (src/solver/HostTrace.h): per receiver, in SSBO_RECEIVERS'
+// order, HOST_WORDS words, bit s of the pass's radiosity shooter s.
+layout(std430, binding = SSBO_HOST_VISIBLE) readonly buffer HostVisible { uint hostVisible[]; };
+uint hostReceiver;  // gather.comp's receiver index
+float hostVisibility(uint s) { return float((hostVisible[hostReceiver * HOST_WORDS + s / 32u] >> (s % 32u)) & 1u); }
+#endif
+
 #ifdef BVH_VISIBILITY
 // --visibility bvh (docs/design.md#visibility): every polygon whose BVH boxes the segment meets is
 // tested, so no occluder is missed however thin (bvh_segment.glsl's tracedClear).
@@ -84,7 +92,9 @@ float shooterFormFactor(uint s, Receiver r, out bool facing, out float visible) 
   facing = dot(r.x - origin, control.shooter[s].normal.xyz) > 0.0;  // cheap, first: half the scene fails it
   float F = facing ? unoccludedFormFactor(s, r.x, r.n) : 0.0;
   facing = F > 0.0;
-#ifdef BVH_VISIBILITY
+#if defined(HOST_VISIBILITY)
+  visible = facing ? hostVisibility(s) : 0.0;
+#elif defined(BVH_VISIBILITY)
   visible = facing ? tracedVisibility(s, origin, r.x, r.polygon, sqrt(r.area)) : 0.0;
 #else
   visible = facing ? visibility(s, origin, r.x, r.polygon) : 0.0;

@@ -11,11 +11,13 @@
 
 #include "gl/Debug.h"
 #include "gl/Limits.h"
+#include "gl/Backend.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
 #include "src/scene/ItemMesh.h"
 #include "src/solver/Bvh.h"
 #include "src/solver/Control.h"
+#include "src/solver/HostTrace.h"
 #include "src/solver/ReceiverOrder.h"
 #include "src/solver/ShaderContract.h"
 
@@ -72,7 +74,11 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   if (settings.importanceDriven()) view_ = std::make_unique<ImportanceView>(state);
   gl::Defines gatherDefines = itemBufferDefines(settings.projection);
   gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
-  setUpBvh(gatherDefines);
+  const std::vector<std::uint32_t> order =
+      receiverOrder(state.atlas, state.scene.boundsMin(), state.scene.boundsMax(), kGatherGroup);
+  receivers_ = gl::Buffer(std::span<const std::uint32_t>(order));
+  receiverCount_ = unsigned(order.size());
+  setUpBvh(gatherDefines, order, settings.importanceDriven() || perspective);
   if (settings.directOnly) gatherDefines.push_back({"DIRECT_ONLY", "1"});
   gatherDefines.push_back({"GATHER_GROUP", std::to_string(kGatherGroup)});
   gather_ = computeProgram("gather.comp", gatherDefines);
@@ -85,10 +91,6 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   }
   setUpControl(settings.stop, keep);
   gather_.set("farDistance", float(state.farDistance));
-  const std::vector<std::uint32_t> order =
-      receiverOrder(state.atlas, state.scene.boundsMin(), state.scene.boundsMax(), kGatherGroup);
-  receivers_ = gl::Buffer(std::span<const std::uint32_t>(order));
-  receiverCount_ = unsigned(order.size());
   gather_.set("receiverCount", receiverCount_);
   gl::checkErrors("progressive solver setup");
 }
@@ -153,15 +155,42 @@ void ProgressiveSolver::setUpReduction(unsigned keep, const gl::Defines& defines
 // The scene's BVH, for exact visibility: receivers near a shooter get its parts one by one
 // (shaders/refine_near.glsl; nothing to refine where blocks have no parts), and with
 // --visibility bvh every receiver traces its segment to each shooter (shaders/visibility.glsl).
-void ProgressiveSolver::setUpBvh(gl::Defines& gatherDefines) {
+// On a CPU device a plain solve's traced visibility is Embree's on the host (HostTrace.h), the
+// same answers 20-30x sooner; importance and perspective shooters keep the GLSL walk.
+void ProgressiveSolver::setUpBvh(gl::Defines& gatherDefines, std::span<const std::uint32_t> receivers,
+                                 bool viewDriven) {
   if (!tracesBvh()) return;
-  bvh_ = BvhBuffers(Bvh(state_.scene));
+  const Bvh bvh(state_.scene);
+  bvh_ = BvhBuffers(bvh);
   if (refinesNear()) gatherDefines.push_back({"REFINE_NEAR", "1"});
-  if (visibility_ == Visibility::Bvh) gatherDefines.push_back({"BVH_VISIBILITY", "1"});
+  if (visibility_ != Visibility::Bvh) return;
+  const bool host = settings_.hostTrace == HostTraceUse::Always ||
+                    (settings_.hostTrace == HostTraceUse::OnCpuDevice && gl::softwareRenderer() && !viewDriven);
+  // (A host trace of importance or perspective shooters would need their pass's other records.)
+  if (!host) {
+    gatherDefines.push_back({"BVH_VISIBILITY", "1"});
+    return;
+  }
+  if (viewDriven) fail("host tracing serves plain progressive solves only");
+  hostTrace_ = std::make_unique<HostTrace>(state_.scene, state_.atlas, bvh, receivers,
+                                           float(kSegmentTolerance * state_.farDistance));
+  hostVisible_ = gl::Buffer(receivers.size() * HostTrace::wordsFor(unsigned(settings_.shootersPerPass)) *
+                            sizeof(std::uint32_t));
+  gatherDefines.push_back({"HOST_VISIBILITY", "1"});
+  gatherDefines.push_back({"HOST_WORDS", std::to_string(HostTrace::wordsFor(unsigned(settings_.shootersPerPass)))});
 }
 
+// The pass's visibility before its gather: its item buffers, or the host's answers.
 void ProgressiveSolver::renderItemBuffer() {
   if (itemBuffer_) itemBuffer_->render(control_);
+  if (!hostTrace_) return;
+  ControlBlock c;  // the header and the pass's radiosity shooters, as select.comp chose them
+  const std::size_t bytes = offsetof(ControlBlock, shooter) + settings_.shootersPerPass * sizeof(ShooterRecord);
+  control_.read(0, bytes, &c);
+  const unsigned words = HostTrace::wordsFor(unsigned(settings_.shootersPerPass));
+  hostTrace_->trace(std::span<const ShooterRecord>(c.shooter, std::min(c.count, unsigned(settings_.shootersPerPass))),
+                    words, hostBits_);
+  hostVisible_.upload(0, hostBits_.size() * sizeof(std::uint32_t), hostBits_.data());
 }
 
 // The control block: stop rule, convergence history.
@@ -284,6 +313,7 @@ void ProgressiveSolver::gatherPass(Receivers receivers) {
   }
   if (tracesBvh()) bvh_.bind();
   receivers_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_RECEIVERS);
+  if (hostTrace_) hostVisible_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_HOST_VISIBLE);
   gather_.use();
   const unsigned phases = refinesNear() ? 2 : 1;  // transfer_split.glsl: near pairs, then far ones
   for (unsigned phase = 0; phase < phases; ++phase) {

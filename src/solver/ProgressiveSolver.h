@@ -12,6 +12,7 @@
 #include "gl/Timer.h"
 #include "src/scene/Camera.h"
 #include "src/solver/BvhBuffers.h"
+#include "src/solver/HostTrace.h"
 #include "src/solver/ImportanceView.h"
 #include "src/solver/ItemBuffer.h"
 #include "src/solver/PerspectiveView.h"
@@ -29,6 +30,10 @@ enum class Visibility {
   ItemBuffer,  // seed 003: the shooter's item buffer nominates occluders, exact segment tests decide
   Bvh,         // exact segment tests through the scene's BVH; no item buffer is drawn
 };
+
+// Where --visibility bvh's segments are traced: by the gather's GLSL walk, or on the host by
+// Embree (HostTrace.h), which a CPU device (llvmpipe) does 20-30x sooner. Tests ask for each.
+enum class HostTraceUse { OnCpuDevice, Always, Never };
 
 inline const char* visibilityName(Visibility v) {
   return v == Visibility::Bvh ? "bvh" : v == Visibility::ItemBuffer ? "item-buffer" : "auto";
@@ -55,6 +60,7 @@ struct ProgressiveSettings {
                                              // kAutoRefineNear: refineNearFor the stop rule, nearRefinement())
   std::string preset{kDefaultPreset};        // the preset the five above started from (the report names it)
   Visibility visibility = Visibility::Auto;
+  HostTraceUse hostTrace = HostTraceUse::OnCpuDevice;  // who traces --visibility bvh's segments
   ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel, refineNear}; }
   // Starts from preset `name` (InputError for an unknown name): its five values and its name.
   void usePreset(std::string_view name) {
@@ -150,7 +156,7 @@ class ProgressiveSolver final : public Solver {
   void setUpControl(const StopRule& stop, unsigned keep);
   bool refinesNear() const { return settings_.nearRefinement() > 0 && treeDepth_ > 0; }
   bool tracesBvh() const { return refinesNear() || visibility_ == Visibility::Bvh; }
-  void setUpBvh(gl::Defines& gatherDefines);
+  void setUpBvh(gl::Defines& gatherDefines, std::span<const std::uint32_t> receivers, bool viewDriven);
   void renderItemBuffer();                       // the pass's item buffers, unless visibility is traced
   void selectPass(bool importanceOnly = false);  // the stats, then the rankings and choices
   void rankPass(Rank rank, bool importanceShooters);
@@ -187,6 +193,9 @@ class ProgressiveSolver final : public Solver {
   BvhBuffers bvh_;     // the scene's BVH: exact visibility (near shooters, or --visibility bvh)
   gl::Buffer receivers_;  // the gather's receiver texels in visiting order (ReceiverOrder.h)
   unsigned receiverCount_ = 0;
+  std::unique_ptr<HostTrace> hostTrace_;   // a CPU device's traced visibility (HostTrace.h)
+  gl::Buffer hostVisible_;                 // its answers for the pass, SSBO_HOST_VISIBLE
+  std::vector<std::uint32_t> hostBits_;
   Visibility visibility_;
   std::unique_ptr<ItemBuffer> itemBuffer_;        // none with --visibility bvh
   std::unique_ptr<ImportanceView> view_;          // importance-driven solves only

@@ -1,0 +1,175 @@
+#include "src/solver/HostTrace.h"
+
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+#include <thread>
+
+#include <embree3/rtcore.h>
+#include <fmt/format.h>
+
+#include "src/base/Error.h"
+
+namespace hemirad {
+
+namespace {
+
+// A polygon as the GPU's table holds it (src/solver/SolverState.cpp): floats, the plane's offset
+// n . v0, and its chart.
+struct TracePolygon {
+  glm::vec4 plane;
+  std::uint32_t chart = kNoPolygon;
+};
+
+struct TraceReceiver {
+  glm::vec3 x, b;  // the element's centre, and that onto its polygon's plane
+  float reach = 0;  // tracedClear's untested end: half a side on a curved receiver
+  std::uint32_t chart = kNoPolygon;
+};
+
+}  // namespace
+
+struct HostTrace::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::vector<TracePolygon> polygons;
+  std::vector<std::uint32_t> trianglePolygon;
+  std::vector<TraceReceiver> receivers;
+  float eps = 0;
+
+  glm::vec3 ontoPlane(glm::vec3 p, std::uint32_t q) const {
+    const glm::vec4& plane = polygons[q].plane;
+    return p - (glm::dot(glm::vec3(plane), p) - plane.w) * glm::vec3(plane);
+  }
+  // shaders/segment.glsl's blocksSegment, where Embree found the segment inside one of q's
+  // triangles: both ends strictly beyond q's plane. (Its in-polygon test is Embree's watertight
+  // one: a segment through the edge two facets share always meets one of them, where the
+  // polygons' own edge tests, each rounded on its own plane, may both let it pass.)
+  bool crosses(std::uint32_t q, glm::vec3 o, glm::vec3 x) const {
+    const glm::vec4& plane = polygons[q].plane;
+    const float so = glm::dot(glm::vec3(plane), o) - plane.w, sx = glm::dot(glm::vec3(plane), x) - plane.w;
+    return (so > eps && sx < -eps) || (so < -eps && sx > eps);
+  }
+};
+
+namespace {
+
+struct TraceContext {
+  RTCIntersectContext base;  // first: Embree hands the filter this pointer
+  const HostTrace::Impl* impl;
+  glm::vec3 a, end;
+  std::uint32_t passA, passB;
+};
+
+// Embree hit one of polygon q's triangles: it blocks unless its chart passes or an end lies on its plane.
+void occludedFilter(const RTCFilterFunctionNArguments* args) {
+  const auto* c = reinterpret_cast<const TraceContext*>(args->context);
+  const std::uint32_t q = c->impl->trianglePolygon[RTCHitN_primID(args->hit, args->N, 0)];
+  const std::uint32_t chart = c->impl->polygons[q].chart;
+  if (chart == c->passA || chart == c->passB || !c->impl->crosses(q, c->a, c->end)) args->valid[0] = 0;
+}
+
+void buildScene(HostTrace::Impl& m, const Bvh& bvh) {
+  m.device = rtcNewDevice(nullptr);
+  if (!m.device) throw std::runtime_error(fmt::format("Embree: no device (error {})", int(rtcGetDeviceError(nullptr))));
+  m.scene = rtcNewScene(m.device);
+  rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST);  // no nomination lost along shared edges
+  rtcSetSceneBuildQuality(m.scene, RTC_BUILD_QUALITY_HIGH);
+  const std::vector<BvhTriangle>& tris = bvh.triangles();
+  RTCGeometry g = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* v = static_cast<float*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * tris.size()));
+  auto* index = static_cast<std::uint32_t*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), tris.size()));
+  m.trianglePolygon.resize(tris.size());
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const glm::vec3 p[3] = {glm::vec3(tris[i].v0), glm::vec3(tris[i].v0) + glm::vec3(tris[i].e1),
+                            glm::vec3(tris[i].v0) + glm::vec3(tris[i].e2)};
+    for (int k = 0; k < 3; ++k) {
+      v[9 * i + 3 * k] = p[k].x, v[9 * i + 3 * k + 1] = p[k].y, v[9 * i + 3 * k + 2] = p[k].z;
+      index[3 * i + k] = std::uint32_t(3 * i + k);
+    }
+    m.trianglePolygon[i] = floatBitsToUint(tris[i].v0.w);
+  }
+  rtcSetGeometryOccludedFilterFunction(g, occludedFilter);
+  rtcCommitGeometry(g);
+  rtcAttachGeometry(m.scene, g);
+  rtcReleaseGeometry(g);
+  rtcCommitScene(m.scene);
+}
+
+}  // namespace
+
+HostTrace::HostTrace(const Scene& scene, const Atlas& atlas, const Bvh& bvh, std::span<const std::uint32_t> receivers,
+                     float eps)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.eps = eps;
+  for (std::size_t id = 0; id < scene.occluderCount(); ++id) {  // as SolverState uploads them
+    const ScenePolygon& p = scene.occluder(id);
+    const std::uint32_t chart = id < atlas.chartOf.size() ? atlas.chartOf[id] : kNoPolygon;
+    m.polygons.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))), chart});
+  }
+  for (std::uint32_t packed : receivers) {
+    const std::size_t t = std::size_t(packed >> 16) * std::size_t(atlas.width) + (packed & 0xFFFFu);
+    const std::uint32_t q = atlas.polygonOf[t];
+    TraceReceiver r;
+    r.x = glm::vec3(atlas.positionArea[t]);
+    r.b = m.ontoPlane(r.x, q);
+    const float side = std::sqrt(atlas.positionArea[t].w);
+    r.reach = glm::length(r.x - r.b) > 1e-3f * side ? 0.5f * side : 0.0f;
+    r.chart = m.polygons[q].chart;
+    m.receivers.push_back(r);
+  }
+  buildScene(m, bvh);
+}
+
+HostTrace::~HostTrace() {
+  if (impl_->scene) rtcReleaseScene(impl_->scene);
+  if (impl_->device) rtcReleaseDevice(impl_->device);
+}
+
+void HostTrace::trace(std::span<const ShooterRecord> shooters, unsigned words, std::vector<std::uint32_t>& bits) const {
+  const Impl& m = *impl_;
+  bits.assign(m.receivers.size() * words, 0u);
+  struct Eye {
+    glm::vec3 o, n, a;
+    std::uint32_t chart;
+  };
+  std::vector<Eye> eyes;
+  for (const ShooterRecord& s : shooters) {
+    const glm::vec3 o(s.positionArea[0], s.positionArea[1], s.positionArea[2]);
+    eyes.push_back({o, glm::vec3(s.normal[0], s.normal[1], s.normal[2]), m.ontoPlane(o, s.polygon),
+                    m.polygons[s.polygon].chart});
+  }
+  constexpr std::size_t kChunk = 256;
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    TraceContext c;
+    rtcInitIntersectContext(&c.base);
+    c.impl = &m;
+    for (std::size_t begin; (begin = next.fetch_add(kChunk)) < m.receivers.size();)
+      for (std::size_t i = begin; i < std::min(begin + kChunk, m.receivers.size()); ++i) {
+        const TraceReceiver& r = m.receivers[i];
+        for (std::size_t s = 0; s < eyes.size(); ++s) {
+          const Eye& e = eyes[s];
+          if (!(glm::dot(r.x - e.o, e.n) > 0.0f)) continue;  // the gather skips it (shooterFormFactor)
+          const float keep = std::max(0.0f, 1.0f - r.reach / std::max(glm::length(r.b - e.a), 1e-30f));
+          c.a = e.a, c.end = e.a + (r.b - e.a) * keep, c.passA = r.chart, c.passB = e.chart;
+          RTCRay ray{};
+          ray.org_x = c.a.x, ray.org_y = c.a.y, ray.org_z = c.a.z;
+          ray.dir_x = c.end.x - c.a.x, ray.dir_y = c.end.y - c.a.y, ray.dir_z = c.end.z - c.a.z;
+          ray.tnear = 0.0f, ray.tfar = 1.0f, ray.mask = 0xFFFFFFFFu;
+          rtcOccluded1(m.scene, &c.base, &ray);
+          if (ray.tfar >= 0.0f) bits[i * words + s / 32] |= 1u << (s % 32);  // -inf when blocked
+        }
+      }
+  };
+  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (unsigned k = 1; k < threads; ++k) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+}
+
+}  // namespace hemirad
