@@ -75,7 +75,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   gl::Defines gatherDefines = itemBufferDefines(settings.projection);
   gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
   const std::vector<std::uint32_t> order =
-      receiverOrder(state.atlas, state.scene.boundsMin(), state.scene.boundsMax(), kGatherGroup);
+      receiverOrder(state.atlas, state.scene.boundsMin(), state.scene.boundsMax(), kGatherGroup, gl::softwareRenderer());
   receivers_ = gl::Buffer(std::span<const std::uint32_t>(order));
   receiverCount_ = unsigned(order.size());
   setUpBvh(gatherDefines, order, settings.importanceDriven() || perspective);
