@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <stdexcept>
 #include <thread>
 
 #include <embree3/rtcore.h>
 #include <fmt/format.h>
-
-#include "src/base/Error.h"
 
 namespace hemirad {
 

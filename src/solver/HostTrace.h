@@ -1,11 +1,11 @@
 // --visibility bvh's segment tests answered on the host by Embree, for a CPU device (llvmpipe),
 // where the GLSL walk (shaders/bvh_segment.glsl) costs ~90 cycles a node a lane and Embree's SIMD
-// BVH answers a segment 20-30x faster (docs/real-scenes.md#visibility-through-the-bvh). The rule is
+// BVH answers a segment 20-30x sooner (docs/real-scenes.md#visibility-through-the-bvh). The rule is
 // tracedClear's, mirrored here: each end onto its polygon's plane, the shooter's and the receiver's
-// charts pass, a curved receiver's last half side untested, and every polygon Embree nominates
-// decided by the exact segment test (shaders/segment.glsl's blocksSegment). Per pass, a bit per
-// receiver (in ReceiverOrder's order) and radiosity shooter, which the gather reads
-// (SSBO_HOST_VISIBLE) instead of walking.
+// charts pass, a curved receiver's last half side untested, and a polygon blocks where the segment
+// crosses its plane strictly (blocksSegment's plane test, shaders/segment.glsl) inside one of its
+// triangles by Embree's watertight test. Per pass, a bit per receiver (in ReceiverOrder's order)
+// and radiosity shooter, which the gather reads (SSBO_HOST_VISIBLE) instead of walking.
 #pragma once
 #include <cstdint>
 #include <memory>

@@ -9,9 +9,9 @@
 
 #include <fmt/format.h>
 
+#include "gl/Backend.h"
 #include "gl/Debug.h"
 #include "gl/Limits.h"
-#include "gl/Backend.h"
 #include "gl/State.h"
 #include "src/base/Error.h"
 #include "src/scene/ItemMesh.h"
@@ -181,7 +181,7 @@ void ProgressiveSolver::setUpBvh(gl::Defines& gatherDefines, std::span<const std
 }
 
 // The pass's visibility before its gather: its item buffers, or the host's answers.
-void ProgressiveSolver::renderItemBuffer() {
+void ProgressiveSolver::preparePassVisibility() {
   if (itemBuffer_) itemBuffer_->render(control_);
   if (!hostTrace_) return;
   ControlBlock c;  // the header and the pass's radiosity shooters, as select.comp chose them
@@ -232,7 +232,7 @@ void ProgressiveSolver::importancePass() {
   const std::uint32_t none = 0;
   control_.upload(offsetof(ControlBlock, count), sizeof none, &none);
   selectPass(true);
-  renderItemBuffer();
+  preparePassVisibility();
   gatherPass(Receivers::InView);  // no radiosity shooter: only importance moves
   readStatus();
 }
@@ -256,7 +256,7 @@ void ProgressiveSolver::look(const Camera& camera, double aspect) {
 unsigned ProgressiveSolver::deliverStored() {
   const unsigned n = unsigned(std::min<std::size_t>(settings_.shootersPerPass, perspective_->deliveriesLeft()));
   perspective_->describeDeliveries(n, control_);
-  renderItemBuffer();
+  preparePassVisibility();
   gatherPass(Receivers::Entering);
   deliveryShots_ += n;
   if (perspective_->deliveriesLeft() == 0) {
@@ -383,7 +383,7 @@ void ProgressiveSolver::runPasses(unsigned passes) {
     if (timed) timer_.mark(kSelect);
     selectPass();
     if (timed) timer_.mark(kItemBuffer);
-    renderItemBuffer();
+    preparePassVisibility();
     if (timed) timer_.mark(kGather);
     gatherPass(Receivers::InView);  // everyone receives when not perspective-driven
     if (timed) timer_.stop(), ++timed_;

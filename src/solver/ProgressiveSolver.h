@@ -157,7 +157,7 @@ class ProgressiveSolver final : public Solver {
   bool refinesNear() const { return settings_.nearRefinement() > 0 && treeDepth_ > 0; }
   bool tracesBvh() const { return refinesNear() || visibility_ == Visibility::Bvh; }
   void setUpBvh(gl::Defines& gatherDefines, std::span<const std::uint32_t> receivers, bool viewDriven);
-  void renderItemBuffer();                       // the pass's item buffers, unless visibility is traced
+  void preparePassVisibility();  // the pass's item buffers, or the host's traced answers (else none)
   void selectPass(bool importanceOnly = false);  // the stats, then the rankings and choices
   void rankPass(Rank rank, bool importanceShooters);
   void gatherPass(Receivers receivers);
