@@ -55,8 +55,6 @@ TEST_CASE("On a CPU device the gather visits each receiver once, in workgroups o
   const Atlas atlas = buildAtlas(s, texelSizeForElements(s, 10000));
   const std::vector<std::uint32_t> order = receiverOrder(atlas, s.boundsMin(), s.boundsMax(), kOrderGroup, true),
                                    tiles = receiverOrder(atlas, s.boundsMin(), s.boundsMax(), kOrderGroup, false);
-
-
   std::vector<std::uint32_t> sorted = order, expected = tiles;
   std::sort(sorted.begin(), sorted.end());
   std::sort(expected.begin(), expected.end());
