@@ -100,8 +100,8 @@ void buildScene(HostTrace::Impl& m, const Bvh& bvh) {
 }  // namespace
 
 HostTrace::HostTrace(const Scene& scene, const Atlas& atlas, const Bvh& bvh, std::span<const std::uint32_t> receivers,
-                     float eps)
-    : impl_(std::make_unique<Impl>()) {
+                     unsigned shooters, float eps)
+    : impl_(std::make_unique<Impl>()), words_((shooters + 31) / 32) {
   Impl& m = *impl_;
   m.eps = eps;
   for (std::size_t id = 0; id < scene.occluderCount(); ++id) {  // as SolverState uploads them
@@ -128,8 +128,9 @@ HostTrace::~HostTrace() {
   if (impl_->device) rtcReleaseDevice(impl_->device);
 }
 
-void HostTrace::trace(std::span<const ShooterRecord> shooters, unsigned words, std::vector<std::uint32_t>& bits) const {
+void HostTrace::trace(std::span<const ShooterRecord> shooters, std::vector<std::uint32_t>& bits) const {
   const Impl& m = *impl_;
+  const unsigned words = words_;
   bits.assign(m.receivers.size() * words, 0u);
   struct Eye {
     glm::vec3 o, n, a;

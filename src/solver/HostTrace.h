@@ -22,23 +22,24 @@ namespace hemirad {
 
 class HostTrace {
  public:
-  // eps: blocksSegment's plane tolerance (SEGMENT_TOLERANCE x the far distance).
+  // Up to `shooters` radiosity shooters a pass; eps: blocksSegment's plane tolerance
+  // (SEGMENT_TOLERANCE x the far distance).
   HostTrace(const Scene& scene, const Atlas& atlas, const Bvh& bvh, std::span<const std::uint32_t> receivers,
-            float eps);
+            unsigned shooters, float eps);
   ~HostTrace();
   HostTrace(const HostTrace&) = delete;
   HostTrace& operator=(const HostTrace&) = delete;
 
-  // Words per receiver for `shooters` shooters a pass.
-  static unsigned wordsFor(unsigned shooters) { return (shooters + 31) / 32; }
-  // Bit s % 32 of word i * words + s / 32: receiver i sees shooter s (s < count); pairs facing
+  unsigned words() const { return words_; }  // per receiver (visibility.glsl's HOST_WORDS)
+  // Bit s % 32 of word i * words() + s / 32: receiver i sees the pass's shooter s; pairs facing
   // away from the shooter's plane, which the gather skips, are left 0.
-  void trace(std::span<const ShooterRecord> shooters, unsigned words, std::vector<std::uint32_t>& bits) const;
+  void trace(std::span<const ShooterRecord> shooters, std::vector<std::uint32_t>& bits) const;
 
   struct Impl;
 
  private:
   std::unique_ptr<Impl> impl_;
+  unsigned words_;
 };
 
 }  // namespace hemirad

@@ -173,11 +173,11 @@ void ProgressiveSolver::setUpBvh(gl::Defines& gatherDefines, std::span<const std
   }
   if (viewDriven) fail("host tracing serves plain progressive solves only");
   hostTrace_ = std::make_unique<HostTrace>(state_.scene, state_.atlas, bvh, receivers,
+                                           unsigned(settings_.shootersPerPass),
                                            float(kSegmentTolerance * state_.farDistance));
-  hostVisible_ = gl::Buffer(receivers.size() * HostTrace::wordsFor(unsigned(settings_.shootersPerPass)) *
-                            sizeof(std::uint32_t));
+  hostVisible_ = gl::Buffer(receivers.size() * hostTrace_->words() * sizeof(std::uint32_t));
   gatherDefines.push_back({"HOST_VISIBILITY", "1"});
-  gatherDefines.push_back({"HOST_WORDS", std::to_string(HostTrace::wordsFor(unsigned(settings_.shootersPerPass)))});
+  gatherDefines.push_back({"HOST_WORDS", std::to_string(hostTrace_->words())});
 }
 
 // The pass's visibility before its gather: its item buffers, or the host's answers.
@@ -187,9 +187,8 @@ void ProgressiveSolver::preparePassVisibility() {
   ControlBlock c;  // the header and the pass's radiosity shooters, as select.comp chose them
   const std::size_t bytes = offsetof(ControlBlock, shooter) + settings_.shootersPerPass * sizeof(ShooterRecord);
   control_.read(0, bytes, &c);
-  const unsigned words = HostTrace::wordsFor(unsigned(settings_.shootersPerPass));
   hostTrace_->trace(std::span<const ShooterRecord>(c.shooter, std::min(c.count, unsigned(settings_.shootersPerPass))),
-                    words, hostBits_);
+                    hostBits_);
   hostVisible_.upload(0, hostBits_.size() * sizeof(std::uint32_t), hostBits_.data());
 }
 
