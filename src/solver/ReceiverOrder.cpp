@@ -60,13 +60,13 @@ std::vector<std::uint32_t> receiverOrder(const Atlas& atlas, glm::dvec3 lo, glm:
         keyed.emplace_back(mortonCode(glm::dvec3(atlas.positionArea[t]), lo, scale), packed(x, y));
     }
   std::sort(keyed.begin(), keyed.end());
-  // The full workgroups by their bit-reversed index (ties, past the count, keep their order), then the short one.
+  // The full workgroups by their bit-reversed index (distinct: every index has `bits` bits), then the short one.
   const std::uint32_t full = std::uint32_t(keyed.size() / group);
   const int bits = std::bit_width(full);
   std::vector<std::uint32_t> groups(full);
   for (std::uint32_t g = 0; g < full; ++g) groups[g] = g;
-  std::stable_sort(groups.begin(), groups.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return reversed(a, bits) < reversed(b, bits); });
+  std::sort(groups.begin(), groups.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return reversed(a, bits) < reversed(b, bits); });
   std::vector<std::uint32_t> order;
   order.reserve(keyed.size());
   for (std::uint32_t g : groups)
