@@ -11,7 +11,8 @@
 
 namespace hemirad {
 
-namespace {
+// Named, not anonymous: HostTrace::Impl, of external linkage, holds them.
+namespace host_trace {
 
 // A polygon as the GPU's table holds it (src/solver/SolverState.cpp): floats, the plane's offset
 // n . v0, and its chart.
@@ -26,7 +27,10 @@ struct TraceReceiver {
   std::uint32_t chart = kNoPolygon;
 };
 
-}  // namespace
+}  // namespace host_trace
+
+using host_trace::TracePolygon;
+using host_trace::TraceReceiver;
 
 struct HostTrace::Impl {
   RTCDevice device = nullptr;

@@ -25,7 +25,7 @@ namespace hemirad {
 
 namespace {
 
-// gather.comp's local size: 64 (8 x 8 atlas texels until ReceiverOrder.h) fills the H200's 132
+// gather.comp's local size: 64 (then 8 x 8 atlas texels) fills the H200's 132
 // SMs better than 256 at 100k elements (a pass's gather 138 -> 123 us; the same at 10k;
 // docs/bench/h200-2026-12-04f.md).
 constexpr unsigned kGatherGroup = 64;
@@ -75,7 +75,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   gl::Defines gatherDefines = itemBufferDefines(settings.projection);
   gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
   const std::vector<std::uint32_t> order =
-      receiverOrder(state.atlas, state.scene.boundsMin(), state.scene.boundsMax(), kGatherGroup, gl::softwareRenderer());
+      receiverOrder(state.atlas, state.scene.boundsMin(), state.scene.boundsMax(), kGatherGroup);
   receivers_ = gl::Buffer(std::span<const std::uint32_t>(order));
   receiverCount_ = unsigned(order.size());
   setUpBvh(gatherDefines, order, settings.importanceDriven() || perspective);

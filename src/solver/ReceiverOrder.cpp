@@ -34,23 +34,9 @@ std::uint32_t reversed(std::uint32_t i, int bits) {
 
 std::uint32_t packed(int x, int y) { return std::uint32_t(x) | std::uint32_t(y) << 16; }
 
-std::vector<std::uint32_t> atlasTiles(const Atlas& atlas) {
-  constexpr int kTile = 8;
-  std::vector<std::uint32_t> order;
-  for (int ty = 0; ty < atlas.height; ty += kTile)
-    for (int tx = 0; tx < atlas.width; tx += kTile)
-      for (int y = ty; y < std::min(ty + kTile, atlas.height); ++y)
-        for (int x = tx; x < std::min(tx + kTile, atlas.width); ++x)
-          if (atlas.polygonOf[std::size_t(y) * std::size_t(atlas.width) + std::size_t(x)] != kNoPolygon)
-            order.push_back(packed(x, y));
-  return order;
-}
-
 }  // namespace
 
-std::vector<std::uint32_t> receiverOrder(const Atlas& atlas, glm::dvec3 lo, glm::dvec3 hi, unsigned group,
-                                         bool spatial) {
-  if (!spatial) return atlasTiles(atlas);
+std::vector<std::uint32_t> receiverOrder(const Atlas& atlas, glm::dvec3 lo, glm::dvec3 hi, unsigned group) {
   const glm::dvec3 scale = 1023.0 / glm::max(hi - lo, glm::dvec3(1e-30));
   std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed;  // (Morton code, texel)
   for (int y = 0; y < atlas.height; ++y)
