@@ -12,6 +12,7 @@
 
 #include "src/output/Renderer.h"
 #include "src/output/SeamStitch.h"
+#include "src/output/Smoothness.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
@@ -126,6 +127,18 @@ TEST_CASE(
     CHECK(c.edge < 1.5 * c.inside);
     CHECK(f.edge > 1.5 * f.inside);
   }
+  // The report's measure over the whole scene (src/output/Smoothness.h) says the same: curved
+  // charts' facet edges step as little as their insides, a chart per facet plane's seams more.
+  const std::vector<SmoothEdge> edges = smoothEdges(s);
+  const Smoothness c = measureSmoothness(s, curved.atlas, edges, curved.B),
+                   f = measureSmoothness(s, flat.atlas, edges, flat.B);
+  INFO("report: curved charts " << c.facetEdges << " facet edges, jump " << c.facetJump << " (inside " << c.insideJump
+                                << "), " << c.seams << " seams; a chart per plane " << f.seams << " seams, jump "
+                                << f.seamJump << " (inside " << f.insideJump << ")");
+  CHECK(c.facetEdges > c.seams);
+  CHECK(f.facetEdges == 0);
+  CHECK(c.facetJump < 1.5 * c.insideJump);
+  CHECK(f.seamJump > 1.5 * f.insideJump);
 }
 
 namespace {
@@ -180,6 +193,16 @@ TEST_CASE("A floor cut into two charts jumps at the seam, and stitching the seam
                                                           << after);
   CHECK(before > 3 * single);
   CHECK(after < 1.5 * single + 1e-3);
+  // The report's measure (src/output/Smoothness.h) finds the one seam and what stitching did.
+  const std::vector<SmoothEdge> edges = smoothEdges(two);
+  const Smoothness unstitched = measureSmoothness(two, b.atlas, edges, b.B),
+                   shown = measureSmoothness(two, b.atlas, edges, stitched),
+                   whole = measureSmoothness(one, a.atlas, smoothEdges(one), a.B);
+  INFO("report's seam jump: " << unstitched.seamJump << " unstitched, " << shown.seamJump << " stitched, "
+                              << whole.facetJump << " across the single chart's edge");
+  CHECK((unstitched.seams == 1 && unstitched.facetEdges == 0 && whole.facetEdges == 1 && whole.seams == 0));
+  CHECK(unstitched.seamJump > 3 * whole.facetJump);
+  CHECK(shown.seamJump < 1.5 * whole.facetJump + 1e-3);
   // Far from the seam nothing moves.
   for (std::size_t t = 0; t < b.B.size(); ++t)
     if (b.atlas.polygonOf[t] != kNoPolygon && std::abs(b.atlas.positionArea[t].x - 1.0) > 2 * texel)

@@ -23,6 +23,7 @@
 #include "src/output/Renderer.h"
 #include "src/output/Report.h"
 #include "src/output/SeamStitch.h"
+#include "src/output/Smoothness.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/Camera.h"
 #include "src/scene/ContactCuts.h"
@@ -176,6 +177,11 @@ std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene
   Image view;
   double scale = 1;
   const std::vector<glm::vec4> B = stitchSeams(scene, atlas, solved);  // what is shown: seams agree
+  if (!o.report.empty()) {
+    const std::vector<SmoothEdge> edges = smoothEdges(scene);
+    info.smoothness = measureSmoothness(scene, atlas, edges, B);
+    info.seamJumpUnstitched = measureSmoothness(scene, atlas, edges, solved).seamJump;
+  }
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
     view = cameraView(o, scene, atlas, state, run, camera, solved, B, info);
     scale = exposureScale(view, o.exposure);

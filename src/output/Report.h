@@ -2,9 +2,11 @@
 #pragma once
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "src/output/Smoothness.h"
 #include "src/solver/Solver.h"
 #include "src/solver/SolverState.h"
 
@@ -37,6 +39,10 @@ struct RunInfo {
   std::uint64_t radiosityHash = 0;
   std::vector<ObjectRadiosity> objects;
   std::vector<float> convergenceHistory;
+  // Issue 29's faceting and seam measures of what is shown (src/output/Smoothness.h), and the
+  // seams' jump before stitching; absent where no report asks for them.
+  std::optional<Smoothness> smoothness;
+  double seamJumpUnstitched = 0;
 };
 
 nlohmann::json reportJson(const RunInfo& run);

@@ -15,20 +15,9 @@
 
 namespace hemirad {
 
-// A seam is an edge shared by two polygons of different charts whose materials reflect and emit
-// alike and whose normals lie within kStitchAngle of each other (a sharper crease is a feature,
-// kept), unless it runs along one of the scene's creases (contact lines, src/scene/ContactCuts.h).
-// The seams' sample points are found once per layout, so live views (the viewer,
-// walkthroughs, animations: Renderer::stitchLive) stitch every frame at the cost of the sweeps.
-//
-// kStitchAngle is a smooth-shading angle, not kMaxChartAngle's 60 degrees as it was: across a
-// furniture model's folds (a cushion's top, its rim, its side and its unlit underside) radiosity
-// falls steeply, and stitched as one surface the lit charts took the underside's dark (real_20k,
-// 9,916 elements, unrefined, to 0.99, against the path-traced reference, couch / armchair bias:
-// -13.2 / -30.5 % stitched evenly to 60 degrees, -2.1 / -13.1 % area-weighted to 30, -2.1 /
-// -11.3 % unstitched; docs/real-scenes.md).
-inline constexpr double kStitchAngle = 30;
-
+// A seam is an edge of one smooth surface (src/output/SmoothEdges.h) between two charts. The
+// seams' sample points are found once per layout, so live views (the viewer, walkthroughs,
+// animations: Renderer::stitchLive) stitch every frame at the cost of the sweeps.
 class SeamStitcher {
  public:
   SeamStitcher(const Scene& scene, const Atlas& atlas);

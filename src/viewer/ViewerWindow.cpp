@@ -19,38 +19,38 @@ void onGlfwError(int, const char* description) { lastGlfwError = description; }
                            "; is DISPLAY set? (run under xvfb-run for headless use)");
 }
 
-// The window context's own GL entry points (glfwGetProcAddress), for this thread only.
-struct Gl {
-  void(APIENTRY* viewport)(GLint, GLint, GLsizei, GLsizei);
-  void(APIENTRY* clearColor)(GLfloat, GLfloat, GLfloat, GLfloat);
-  void(APIENTRY* clear)(GLbitfield);
-  void(APIENTRY* disable)(GLenum);
-  void(APIENTRY* windowPos2i)(GLint, GLint);  // GL 1.4
-  void(APIENTRY* pixelStorei)(GLenum, GLint);
-  void(APIENTRY* drawPixels)(GLsizei, GLsizei, GLenum, GLenum, const void*);
-  void(APIENTRY* readBuffer)(GLenum);
-  void(APIENTRY* readPixels)(GLint, GLint, GLsizei, GLsizei, GLenum, GLenum, void*);
-
-  void load() {
-    auto get = [](auto& fn, const char* name) {
-      fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(glfwGetProcAddress(name));
-      if (!fn) throw std::runtime_error(std::string("hemirad view: the window's GL has no ") + name);
-    };
-    get(viewport, "glViewport");
-    get(clearColor, "glClearColor");
-    get(clear, "glClear");
-    get(disable, "glDisable");
-    get(windowPos2i, "glWindowPos2i");
-    get(pixelStorei, "glPixelStorei");
-    get(drawPixels, "glDrawPixels");
-    get(readBuffer, "glReadBuffer");
-    get(readPixels, "glReadPixels");
-  }
-};
-
 }  // namespace
 
 struct ViewerWindow::State {
+  // The window context's own GL entry points (glfwGetProcAddress), for this thread only.
+  struct Gl {
+    void(APIENTRY* viewport)(GLint, GLint, GLsizei, GLsizei);
+    void(APIENTRY* clearColor)(GLfloat, GLfloat, GLfloat, GLfloat);
+    void(APIENTRY* clear)(GLbitfield);
+    void(APIENTRY* disable)(GLenum);
+    void(APIENTRY* windowPos2i)(GLint, GLint);  // GL 1.4
+    void(APIENTRY* pixelStorei)(GLenum, GLint);
+    void(APIENTRY* drawPixels)(GLsizei, GLsizei, GLenum, GLenum, const void*);
+    void(APIENTRY* readBuffer)(GLenum);
+    void(APIENTRY* readPixels)(GLint, GLint, GLsizei, GLsizei, GLenum, GLenum, void*);
+
+    void load() {
+      auto get = [](auto& fn, const char* name) {
+        fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(glfwGetProcAddress(name));
+        if (!fn) throw std::runtime_error(std::string("hemirad view: the window's GL has no ") + name);
+      };
+      get(viewport, "glViewport");
+      get(clearColor, "glClearColor");
+      get(clear, "glClear");
+      get(disable, "glDisable");
+      get(windowPos2i, "glWindowPos2i");
+      get(pixelStorei, "glPixelStorei");
+      get(drawPixels, "glDrawPixels");
+      get(readBuffer, "glReadBuffer");
+      get(readPixels, "glReadPixels");
+    }
+  };
+
   GLFWwindow* window = nullptr;
   Gl gl{};
   Input input;
@@ -136,7 +136,7 @@ ViewerWindow::Input ViewerWindow::input() {
 bool ViewerWindow::damaged() { return std::exchange(state_->damaged, false); }
 
 void ViewerWindow::draw(const ViewerFrame& frame) {
-  const Gl& gl = state_->gl;
+  const State::Gl& gl = state_->gl;
   const glm::ivec2 size = framebufferSize();
   gl.viewport(0, 0, size.x, size.y);
   gl.clearColor(0, 0, 0, 1);
