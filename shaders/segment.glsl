@@ -16,7 +16,9 @@ bool blocksSegment(uint q, vec3 o, vec3 x, float eps) {
   uvec2 r = polygons[q].vertices.xy;
   for (uint i = 0u; i < r.y; ++i) {
     vec3 a = polygonVertex[r.x + i].xyz, b = polygonVertex[r.x + (i + 1u) % r.y].xyz;
-    if (dot(cross(b - a, h - a), n) < -eps * length(b - a)) return false;
+    vec3 e = b - a;
+    float d = dot(cross(e, h - a), n);  // |e| x the distance inside the edge's line
+    if (d < 0.0 && d * d > eps * eps * dot(e, e)) return false;  // no square root in the walk's hot loop
   }
   return true;
 }
