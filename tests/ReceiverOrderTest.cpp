@@ -52,16 +52,18 @@ std::array<double, 8> octantShares(const Atlas& atlas, const std::vector<std::ui
   std::array<double, 8> share{};
   for (std::size_t k = begin; k < end; ++k) {
     const glm::dvec3 p = centreOf(atlas, order[k]);
-    share[std::size_t(p.x > mid.x) | std::size_t(p.y > mid.y) << 1 | std::size_t(p.z > mid.z) << 2] += 1.0 / double(end - begin);
+    share[std::size_t(p.x > mid.x) | std::size_t(p.y > mid.y) << 1 | std::size_t(p.z > mid.z) << 2] +=
+        1.0 / double(end - begin);
   }
   return share;
 }
 
 }  // namespace
 
-TEST_CASE("The gather visits each receiver once, in workgroups of nearby points, each half of them "
-          "spread over the scene",
-          "[cpu]") {
+TEST_CASE(
+    "The gather visits each receiver once, in workgroups of nearby points, each half of them "
+    "spread over the scene",
+    "[cpu]") {
   // 64 rooms: charts of a wall each, which the atlas packs side by side from rooms far apart.
   const Scene s = loadScene(test::sourcePath("scenes/building/building_64.obj"));
   const Atlas atlas = buildAtlas(s, texelSizeForElements(s, 10000));

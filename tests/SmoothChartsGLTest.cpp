@@ -209,9 +209,10 @@ TEST_CASE("A floor cut into two charts jumps at the seam, and stitching the seam
       CHECK(stitched[t] == b.B[t]);
 }
 
-TEST_CASE("Refined near its shooters, a furnace holding a tessellated sphere gives B = E / (1 - rho) on its curved charts "
-          "and around them",
-          "[gl][charts]") {
+TEST_CASE(
+    "Refined near its shooters, a furnace holding a tessellated sphere gives B = E / (1 - rho) on its curved charts "
+    "and around them",
+    "[gl][charts]") {
   // Every surface E = 1, rho = 0.5: B = 2 at every element once converged, whatever it sees. The
   // sphere's curved charts put their parts' light centres inside it; tested from there, near
   // receivers (the sphere's own texels, the floor under it) were shadowed by its own facets.
@@ -246,7 +247,8 @@ TEST_CASE("Stitching bends a sliver chart to the large texel beside it and leave
   // rim and its side. Each plane a chart (--chart-angle 0), texels of 0.1.
   Scene s;
   const int grey = test::material(s, 0.5, 0.0), object = s.addObject("fold");
-  const glm::dvec3 Z(0, 0, 1), rim(std::cos(M_PI / 18), std::sin(M_PI / 18), 0), side(std::sqrt(0.5), std::sqrt(0.5), 0);
+  const glm::dvec3 Z(0, 0, 1), rim(std::cos(M_PI / 18), std::sin(M_PI / 18), 0),
+      side(std::sqrt(0.5), std::sqrt(0.5), 0);
   const glm::dvec3 edge(1, 0, 0), far = edge + rim * 0.005;
   s.addPolygon(test::rectangle({0, 0, 0}, Z, {1, 0, 0}, 1, 1), grey, object);
   s.addPolygon(test::rectangle(edge, Z, rim, 1, 0.005), grey, object);

@@ -245,11 +245,6 @@ void addBenchFlags(CLI::App* cmd, BenchOptions& o) {
 
 namespace {
 
-// A setting as printed: "auto" for its auto value, else the number (a side in pixels: N^2).
-std::string printedSetting(int value, int autoValue, const char* suffix = "") {
-  return value == autoValue ? "auto" : fmt::format("{}{}", value, suffix);
-}
-
 // Per-shot throughputs: item-buffer triangles and pixels (the shot's whole buffer; overdraw
 // makes the fragments more) and gather texel updates, per second of their pass.
 std::string tableHeader(const BenchOptions& o) {
@@ -335,7 +330,7 @@ void runStochasticBench(const BenchOptions& o, gl::RenderBackend& backend, const
   say(fmt::format("hemirad bench, {}, {} ({}), stochastic iteration, preset {}: item mesh L{}, {} item buffer {}\n\n",
                   date, backend.name(), backend.renderer(), o.progressive.presetLabel(), o.progressive.itemSubdivision,
                   projectionName(o.progressive.projection),
-                  printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2")));
+                  settingText(o.progressive.itemResolution, kAutoItemResolution, "^2")));
   const nlohmann::json rows = benchStochastic(backend, o, say);
   if (!o.json.empty())
     writeTextFile(o.json, nlohmann::json{{"date", date},
@@ -382,9 +377,9 @@ void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, cons
       fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, chart angle {}, preset {}: shoot level {}, item mesh "
                   "L{}, {} item buffer {}, visibility {}, refine near {:g}\n\n",
                   date, backend.name(), backend.renderer(), algorithmName(o.progressive.algorithm), o.converge,
-                  o.chartAngle, o.progressive.presetLabel(), printedSetting(o.progressive.shootLevel, kAutoShootLevel),
+                  o.chartAngle, o.progressive.presetLabel(), settingText(o.progressive.shootLevel, kAutoShootLevel),
                   o.progressive.itemSubdivision, projectionName(o.progressive.projection),
-                  printedSetting(o.progressive.itemResolution, kAutoItemResolution, "^2"),
+                  settingText(o.progressive.itemResolution, kAutoItemResolution, "^2"),
                   visibilityName(o.progressive.visibility), refineNear));
   Ceilings ceiling;
   if (o.ceiling) {

@@ -460,8 +460,7 @@ CLI::Option* declare(CLI::App* cmd, const std::string& name, const std::string& 
 namespace {
 
 std::string autoText(int value, int autoValue) {
-  return fmt::format("{} (preset {})", value == autoValue ? std::string("auto") : std::to_string(value),
-                     kDefaultPreset);
+  return fmt::format("{} (preset {})", settingText(value, autoValue), kDefaultPreset);
 }
 
 }  // namespace

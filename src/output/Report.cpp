@@ -67,9 +67,12 @@ nlohmann::json reportJson(const RunInfo& r) {
   if (!r.visibility.empty()) report["visibility"] = r.visibility;
   if (r.direct == "per-pixel") report["final_gather"] = r.finalGather;
   if (const std::optional<Smoothness>& m = r.smoothness)
-    report["smoothness"] = {{"facet_edges", m->facetEdges}, {"facet_jump", m->facetJump},
-                            {"seams", m->seams},            {"seam_jump", m->seamJump},
-                            {"seam_jump_unstitched", r.seamJumpUnstitched}, {"inside_jump", m->insideJump}};
+    report["smoothness"] = {{"facet_edges", m->facetEdges},
+                            {"facet_jump", m->facetJump},
+                            {"seams", m->seams},
+                            {"seam_jump", m->seamJump},
+                            {"seam_jump_unstitched", r.seamJumpUnstitched},
+                            {"inside_jump", m->insideJump}};
   if (r.direct == "per-pixel")
     report["direct_ms"] = {
         {"total", r.directSplitMs + r.directPixelsMs}, {"split", r.directSplitMs}, {"pixels", r.directPixelsMs}};

@@ -22,7 +22,7 @@ struct TracePolygon {
 };
 
 struct TraceReceiver {
-  glm::vec3 x, b;  // the element's centre, and that onto its polygon's plane
+  glm::vec3 x, b;   // the element's centre, and that onto its polygon's plane
   float reach = 0;  // tracedClear's untested end: half a side on a curved receiver
   std::uint32_t chart = kNoPolygon;
 };
@@ -143,8 +143,8 @@ void HostTrace::trace(std::span<const ShooterRecord> shooters, std::vector<std::
   std::vector<Eye> eyes;
   for (const ShooterRecord& s : shooters) {
     const glm::vec3 o(s.positionArea[0], s.positionArea[1], s.positionArea[2]);
-    eyes.push_back({o, glm::vec3(s.normal[0], s.normal[1], s.normal[2]), m.ontoPlane(o, s.polygon),
-                    m.polygons[s.polygon].chart});
+    eyes.push_back(
+        {o, glm::vec3(s.normal[0], s.normal[1], s.normal[2]), m.ontoPlane(o, s.polygon), m.polygons[s.polygon].chart});
   }
   constexpr std::size_t kChunk = 256;
   std::atomic<std::size_t> next{0};

@@ -6,11 +6,9 @@
 
 namespace hemirad {
 
-namespace {
-
-std::string setting(int value, int autoValue) { return value == autoValue ? "auto" : std::to_string(value); }
-
-}  // namespace
+std::string settingText(int value, int autoValue, const char* suffix) {
+  return value == autoValue ? "auto" : std::to_string(value) + suffix;
+}
 
 const std::vector<Preset>& presets() {
   // `measured`: Cornell box (scenes/cornell), OSMesa/llvmpipe on 2 loaded shared cores, 2026-12-03:
@@ -47,8 +45,8 @@ const std::vector<Preset>& presets() {
 std::string presetFlags(const ItemPlan& plan) {
   return fmt::format("--hemisphere {} --item-subdiv {} --item-res {} --shoot-level {} --refine-near {}",
                      projectionName(plan.projection), plan.itemSubdivision,
-                     setting(plan.itemResolution, kAutoItemResolution), setting(plan.shootLevel, kAutoShootLevel),
-                     refineNearText(plan.refineNear));
+                     settingText(plan.itemResolution, kAutoItemResolution),
+                     settingText(plan.shootLevel, kAutoShootLevel), refineNearText(plan.refineNear));
 }
 
 std::string refineNearText(double refineNear) {
@@ -82,8 +80,8 @@ std::string presetLabel(std::string_view chosen, const ItemPlan& actual) {
   differs(actual.projection != plan.projection, "--hemisphere " + projectionName(actual.projection));
   differs(actual.itemSubdivision != plan.itemSubdivision, fmt::format("--item-subdiv {}", actual.itemSubdivision));
   differs(actual.itemResolution != plan.itemResolution,
-          "--item-res " + setting(actual.itemResolution, kAutoItemResolution));
-  differs(actual.shootLevel != plan.shootLevel, "--shoot-level " + setting(actual.shootLevel, kAutoShootLevel));
+          "--item-res " + settingText(actual.itemResolution, kAutoItemResolution));
+  differs(actual.shootLevel != plan.shootLevel, "--shoot-level " + settingText(actual.shootLevel, kAutoShootLevel));
   differs(actual.refineNear != plan.refineNear, "--refine-near " + refineNearText(actual.refineNear));
   return label + with;
 }

@@ -58,6 +58,9 @@ inline constexpr double kRefineFrom = 0.99;
 // refineNear as given, or for auto: kRefinedPlan's where targetConvergence >= kRefineFrom, else 0.
 double refineNearFor(double refineNear, double targetConvergence);
 std::string refineNearText(double refineNear);  // "auto" or the number
+// --item-res's or --shoot-level's value as printed: "auto" for its auto value, else the number
+// and `suffix` (a side in pixels: "^2").
+std::string settingText(int value, int autoValue, const char* suffix = "");
 
 const std::vector<Preset>& presets();  // `fast` (the default) first
 // The preset of that name; InputError naming the presets otherwise.
