@@ -266,12 +266,17 @@ TEST_CASE("validate's level table prints small form-factor errors in significant
   Validation v;
   LevelStats s;
   s.ffRelErrorMedian = 1.23e-6, s.ffRelErrorMean = 7.7e-3, s.ffRelErrorP95 = 4.2e-5, s.ffRelErrorMax = 0.0317;
+  s.partlySeen = 12, s.wholeRelErrorMedian = 2.5e-7, s.wholeRelErrorP95 = 3.1e-6, s.wholeRelErrorMax = 4.4e-4;
   v.levels.push_back(s);
   const std::vector<std::string> row = levelRows(v).at(1);
   CHECK(std::stod(row.at(7)) == Approx(s.ffRelErrorMedian).epsilon(0.01));
   CHECK(std::stod(row.at(8)) == Approx(s.ffRelErrorMean).epsilon(0.01));
   CHECK(std::stod(row.at(9)) == Approx(s.ffRelErrorP95).epsilon(0.01));
   CHECK(std::stod(row.at(10)) == Approx(s.ffRelErrorMax).epsilon(0.01));
+  CHECK(row.at(11) == "12");
+  CHECK(std::stod(row.at(12)) == Approx(s.wholeRelErrorMedian).epsilon(0.01));
+  CHECK(std::stod(row.at(13)) == Approx(s.wholeRelErrorP95).epsilon(0.01));
+  CHECK(std::stod(row.at(14)) == Approx(s.wholeRelErrorMax).epsilon(0.01));
 }
 
 namespace {

@@ -44,6 +44,11 @@ struct LevelStats {
   bool traced = false;  // the BVH's segment tests, not an item buffer
   std::size_t itemTriangles = 0, texelPairs = 0, falseVisible = 0, falseHidden = 0;
   double visibilityAgreement = 0, ffRelErrorMedian = 0, ffRelErrorMean = 0, ffRelErrorP95 = 0, ffRelErrorMax = 0;
+  // The pairs whose receiver sees the shooter element in part (the reference's stratified F has
+  // an error bound: occluders cross it), where the GPU's one visibility per pair can be right only
+  // on average; and the FF errors over the pairs seen whole, what the form factor itself gets.
+  std::size_t partlySeen = 0;
+  double wholeRelErrorMedian = 0, wholeRelErrorP95 = 0, wholeRelErrorMax = 0;
   double gpuMs = 0;
 };
 
