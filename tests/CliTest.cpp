@@ -1,5 +1,6 @@
 // The command line: bad input gets one `hemirad: error:` line and exit code 2, and leaves no
 // output behind; runs are deterministic whatever llvmpipe's thread count.
+#include <fmt/format.h>
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -66,6 +67,24 @@ TEST_CASE("Degenerate faces are skipped with a warning and the solve goes on", "
   INFO(run.output);
   CHECK(run.exitCode == 0);
   CHECK_THAT(run.output, Contains("s.obj:9: degenerate face with zero area skipped"));
+}
+
+TEST_CASE("Asked for fewer elements than a scene has charts, info warns with the count it could not go below",
+          "[cli]") {
+  // A lamp over 40 separate small squares: 41 charts, each at least one element.
+  std::string obj = "mtllib m.mtl\nv 0 2 0\nv 0 2 1\nv 1 2 1\nv 1 2 0\nusemtl lamp\nf 1 4 3 2\nusemtl grey\n";
+  for (int k = 0; k < 40; ++k) {
+    const double x = 0.1 * (k % 8), z = 0.2 * (k / 8);
+    obj += fmt::format("v {} 0 {}\nv {} 0 {}\nv {} 0 {}\nv {} 0 {}\nf {} {} {} {}\n", x, z, x, z + 0.05, x + 0.05,
+                       z + 0.05, x + 0.05, z, 5 + 4 * k, 6 + 4 * k, 7 + 4 * k, 8 + 4 * k);
+  }
+  const std::string scene =
+      test::writeScene("small_parts", obj, "newmtl lamp\nKe 1 1 1\nnewmtl grey\nKd 0.5 0.5 0.5\n");
+  test::Run run = test::hemirad("info " + scene + " --elements 10");
+  INFO(run.output);
+  CHECK(run.exitCode == 0);
+  CHECK_THAT(run.output, Contains("41 elements for --elements 10: each of the 41 charts holds at least one"));
+  CHECK_THAT(test::hemirad("info " + scene + " --elements 400").output, !Contains("charts holds at least one"));
 }
 
 TEST_CASE("Help lists the solve flags", "[cli]") {

@@ -13,6 +13,7 @@
 #include "src/scene/AtlasPacker.h"
 #include "src/scene/Charts.h"
 #include "src/scene/SmoothNormals.h"
+#include "src/scene/Warnings.h"
 
 namespace hemirad {
 
@@ -347,7 +348,15 @@ Atlas buildAtlas(const Scene& scene, const Discretisation& d, int maxSize, std::
   const std::vector<ChartGroup> groups = chartGroups(scene, d.chartAngle, d.uv);
   const double ts = settledTexelSize(groups, elements, first);
   if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
-  return atlasOfGroups(scene, groups, ts, maxSize, maxBytes, d.chartAngle);
+  Atlas atlas = atlasOfGroups(scene, groups, ts, maxSize, maxBytes, d.chartAngle);
+  // Every chart holds at least one element (no element spans charts: small parts are not
+  // clustered), so a scene of many small parts cannot go below its chart count.
+  if (double(atlas.elements) > Discretisation::kElementsOver * double(elements))
+    warn(
+        fmt::format("{} elements for --elements {}: each of the {} charts holds at least one (small "
+                    "disconnected parts are not clustered)",
+                    withThousands(atlas.elements), withThousands(elements), withThousands(atlas.charts.size())));
+  return atlas;
 }
 
 Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double texelSize, int maxSize,

@@ -119,6 +119,8 @@ struct Discretisation {
   double chartAngle = kDefaultChartAngle;  // --chart-angle, degrees (Charts.h)
   UvSource uv = UvSource::Auto;            // --uv (Charts.h)
   static constexpr std::size_t kDefaultElements = 10000;
+  // Past this many times the elements asked for, buildAtlas warns: the charts hold more.
+  static constexpr double kElementsOver = 1.25;
 };
 // Texel size from the flags: --texel-size, else --elements, else about 10,000 elements.
 double chooseTexelSize(const Scene& scene, const Discretisation& d);

@@ -131,7 +131,7 @@ RefinedLayout refineLayout(const Scene& scene, const LeafTree& tree) {
   const auto& nodes = tree.nodes();
   std::vector<char> split(base.charts.size(), 0);
   for (const LeafNode& n : nodes) split[std::size_t(n.chart)] |= !n.leaf();
-  Cutter cutter{scene, tree, out};
+  Cutter cutter{scene, tree, out, {}};
   for (std::size_t c = 0; c < base.charts.size(); ++c) {
     const Chart& chart = base.charts[c];
     if (!split[c]) {
