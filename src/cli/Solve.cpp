@@ -22,7 +22,7 @@
 #include "src/output/Progress.h"
 #include "src/output/Renderer.h"
 #include "src/output/Report.h"
-#include "src/output/SeamStitch.h"
+#include "src/output/ShownRadiosity.h"
 #include "src/output/Smoothness.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/Camera.h"
@@ -146,7 +146,7 @@ double msSince(std::chrono::steady_clock::time_point t0) {
 // (src/solver/DirectSplit.h, src/output/DirectLight.h), timed into `run`.
 Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, const SolverState& state,
                  const AtlasRun& method, const Camera& camera, const std::vector<glm::vec4>& solved,
-                 const std::vector<glm::vec4>& shown, RunInfo& run) {
+                 const ShownRadiosity& shownOf, const std::vector<glm::vec4>& shown, RunInfo& run) {
   Renderer renderer(state);
   renderer.setAmbient(o.ambient.value_or(false) && method.ambient());
   auto t0 = std::chrono::steady_clock::now();
@@ -157,7 +157,7 @@ Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
     renderer.show(shown);
     return renderer.render(camera, o.width, o.height, o.supersample);
   }
-  renderer.show(stitchSeams(scene, atlas, indirectPart(solved, direct)));
+  renderer.show(shownOf(indirectPart(solved, direct)));
   const DirectLight light(scene, state.farDistance);
   std::optional<NearGather> gather;
   if (method.nearGather()) gather.emplace(scene, atlas, sentOn(scene, atlas, solved));
@@ -176,14 +176,15 @@ std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene
                         const std::vector<glm::vec4>& solved, RunInfo& info) {
   Image view;
   double scale = 1;
-  const std::vector<glm::vec4> B = stitchSeams(scene, atlas, solved);  // what is shown: seams agree
+  const ShownRadiosity shownOf(scene, atlas);  // buried texels filled, seams stitched
+  const std::vector<glm::vec4> B = shownOf(solved);
   if (!o.report.empty()) {
     const std::vector<SmoothEdge> edges = smoothEdges(scene);
     info.smoothness = measureSmoothness(scene, atlas, edges, B);
     info.seamJumpUnstitched = measureSmoothness(scene, atlas, edges, solved).seamJump;
   }
   if (!o.out.empty() || !o.image.empty() || !o.ply.empty() || !o.gltf.empty()) {
-    view = cameraView(o, scene, atlas, state, run, camera, solved, B, info);
+    view = cameraView(o, scene, atlas, state, run, camera, solved, shownOf, B, info);
     scale = exposureScale(view, o.exposure);
   }
   if (!o.out.empty()) outputs.add("--out", o.out, encodeRender(o.out, view, scale));

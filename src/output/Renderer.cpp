@@ -52,8 +52,8 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
 }
 
 void Renderer::stitchLive() {
-  auto stitcher = std::make_unique<SeamStitcher>(state_.scene, state_.atlas);
-  if (!stitcher->empty()) stitcher_ = std::move(stitcher);
+  auto shown = std::make_unique<ShownRadiosity>(state_.scene, state_.atlas);
+  if (!shown->identity()) stitcher_ = std::move(shown);
 }
 
 void Renderer::show(const std::vector<glm::vec4>& values) {

@@ -8,7 +8,7 @@
 #include "src/output/DirectLight.h"
 #include "src/output/Image.h"
 #include "src/output/NearGather.h"
-#include "src/output/SeamStitch.h"
+#include "src/output/ShownRadiosity.h"
 #include "src/scene/Camera.h"
 #include "src/solver/CameraMesh.h"
 #include "src/solver/SolverState.h"
@@ -27,12 +27,12 @@ class Renderer {
   Image render(const Camera& camera, int width, int height, int supersample = 2);
   // The same view of any per-element RGBA32F atlas (e.g. an error map) instead of B.
   Image render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues);
-  // From now on render() shows these values (atlas order) instead of B: B with its chart seams
-  // stitched (src/output/SeamStitch.h); the ambient term still applies.
+  // From now on render() shows these values (atlas order) instead of B: what is shown of B
+  // (src/output/ShownRadiosity.h); the ambient term still applies.
   void show(const std::vector<glm::vec4>& values);
-  // Live views (the viewer, walkthroughs, animations): from now on each render() shows the
-  // current B with its chart seams stitched (src/output/SeamStitch.h), read back and stitched
-  // per call. Off, render() shows B (or what show() gave) exactly.
+  // Live views (the viewer, walkthroughs, animations): from now on each render() shows what is
+  // shown of the current B (src/output/ShownRadiosity.h: buried texels filled, seams stitched),
+  // read back per call. Off, render() shows B (or what show() gave) exactly.
   void stitchLive();
   // `--direct per-pixel`: from now on render() shows E + each pixel's direct light, computed
   // exactly (shaders/direct.glsl), + the shown values, which must then be the indirect part
@@ -55,7 +55,7 @@ class Renderer {
   CameraMesh mesh_;
   bool ambient_ = false;
   std::unique_ptr<gl::Texture> shown_;
-  std::unique_ptr<SeamStitcher> stitcher_;  // stitchLive(), where the layout has seams
+  std::unique_ptr<ShownRadiosity> stitcher_;  // stitchLive(), where what is shown differs from B
 };
 
 }  // namespace hemirad

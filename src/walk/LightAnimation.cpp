@@ -10,7 +10,7 @@
 #include "src/base/Error.h"
 #include "src/output/ImageFile.h"
 #include "src/output/Renderer.h"
-#include "src/output/SeamStitch.h"
+#include "src/output/ShownRadiosity.h"
 #include "src/scene/Camera.h"
 #include "src/solver/ProgressiveSolver.h"
 #include "src/walk/LightPath.h"
@@ -72,7 +72,7 @@ int runAnimation(AnimationOptions o) {
     carried = {state.readRadiosity(), state.readDeltaB(), solver.saveState()};
     const double error = relativeRmsError(scene, atlas, carried.B, reference(scene, atlas, o));
     Renderer renderer(state);
-    renderer.show(stitchSeams(scene, atlas, carried.B));  // seams stitched, as solve's images
+    renderer.show(shownRadiosity(scene, atlas, carried.B));  // as solve's images
     const Image view = renderer.render(camera, o.width, o.height, 1);
     if (f == 0) exposure = exposureScale(view, 0);
     writePng(fmt::format("{}/frame_{:04d}.png", o.framesDir, f), view, exposure);

@@ -8,7 +8,7 @@
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
 #include "src/output/Progress.h"
-#include "src/output/SeamStitch.h"
+#include "src/output/ShownRadiosity.h"
 
 namespace hemirad {
 
@@ -23,7 +23,7 @@ ConvergedViews::ConvergedViews(const Scene& scene, const Atlas& atlas, Progressi
   const SolveStatus status = advanceToStop(solver, {}, [&](const SolveStatus& s) { bar.update(s); });
   bar.finish();
   shots_ = status.shots;
-  renderer_.show(stitchSeams(scene, atlas, state_.readRadiosity()));  // frames compare stitched with stitched
+  renderer_.show(shownRadiosity(scene, atlas, state_.readRadiosity()));  // frames compare shown with shown
 }
 
 namespace {
