@@ -12,7 +12,7 @@ namespace hemirad {
 
 namespace {
 
-// Embree's scene of every polygon (fans), each triangle's polygon beside it.
+// Embree's scene of every polygon (fans), each triangle's normal (its polygon's) beside it.
 class RayScene {
  public:
   explicit RayScene(const Scene& scene) {
@@ -85,7 +85,6 @@ class RayScene {
     if (glm::dot(c->self->normal_[RTCHitN_primID(args->hit, args->N, 0)], d) > 0) args->valid[0] = 0;
   }
 
- private:
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::vector<glm::vec3> normal_;  // per triangle: its polygon's
