@@ -176,10 +176,10 @@ std::string stageImages(OutputBatch& outputs, const SolveOptions& o, const Scene
                         const std::vector<glm::vec4>& solved, RunInfo& info) {
   Image view;
   double scale = 1;
-  const ShownRadiosity shownOf(scene, atlas);  // buried texels filled, seams stitched
+  const std::vector<SmoothEdge> edges = smoothEdges(scene);  // the seams' and the report's
+  const ShownRadiosity shownOf(scene, atlas, edges);         // buried texels filled, seams stitched
   const std::vector<glm::vec4> B = shownOf(solved);
   if (!o.report.empty()) {
-    const std::vector<SmoothEdge> edges = smoothEdges(scene);
     info.smoothness = measureSmoothness(scene, atlas, edges, B);
     info.seamJumpUnstitched = measureSmoothness(scene, atlas, edges, solved).seamJump;
   }

@@ -46,9 +46,9 @@ Taps tapsAt(const Atlas& atlas, int polygon, glm::dvec3 p) {
 }
 
 // Points every half texel along each seam, each tied to both sides' taps.
-std::vector<Constraint> seamConstraints(const Scene& scene, const Atlas& atlas) {
+std::vector<Constraint> seamConstraints(const Atlas& atlas, const std::vector<SmoothEdge>& edges) {
   std::vector<Constraint> out;
-  for (const SmoothEdge& e : smoothEdges(scene)) {
+  for (const SmoothEdge& e : edges) {
     if (atlas.chartOf[std::size_t(e.p)] == atlas.chartOf[std::size_t(e.q)]) continue;
     const double cell = std::min(atlas.charts[atlas.chartOf[std::size_t(e.p)]].cellSize,
                                  atlas.charts[atlas.chartOf[std::size_t(e.q)]].cellSize);
@@ -78,7 +78,8 @@ void shift(const Taps& t, glm::dvec3 lambda, std::vector<glm::vec4>& values) {
 
 }  // namespace
 
-SeamStitcher::SeamStitcher(const Scene& scene, const Atlas& atlas) : constraints_(seamConstraints(scene, atlas)) {}
+SeamStitcher::SeamStitcher(const Atlas& atlas, const std::vector<SmoothEdge>& edges)
+    : constraints_(seamConstraints(atlas, edges)) {}
 
 std::vector<glm::vec4> SeamStitcher::operator()(std::vector<glm::vec4> values) const {
   for (int sweep = 0; sweep < kSweeps && !constraints_.empty(); ++sweep)
@@ -91,7 +92,7 @@ std::vector<glm::vec4> SeamStitcher::operator()(std::vector<glm::vec4> values) c
 }
 
 std::vector<glm::vec4> stitchSeams(const Scene& scene, const Atlas& atlas, std::vector<glm::vec4> values) {
-  return SeamStitcher(scene, atlas)(std::move(values));
+  return SeamStitcher(atlas, smoothEdges(scene))(std::move(values));
 }
 
 }  // namespace hemirad

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "src/output/SmoothEdges.h"
 #include "src/scene/Atlas.h"
 #include "src/scene/Scene.h"
 
@@ -20,7 +21,8 @@ namespace hemirad {
 // animations: Renderer::stitchLive) stitch every frame at the cost of the sweeps.
 class SeamStitcher {
  public:
-  SeamStitcher(const Scene& scene, const Atlas& atlas);
+  // `edges`: smoothEdges(scene), which its caller may need too (the report's smoothness).
+  SeamStitcher(const Atlas& atlas, const std::vector<SmoothEdge>& edges);
   // Per-texel `values` (atlas order) with every seam stitched.
   std::vector<glm::vec4> operator()(std::vector<glm::vec4> values) const;
   bool empty() const { return constraints_.empty(); }
@@ -44,7 +46,7 @@ class SeamStitcher {
   std::vector<Constraint> constraints_;
 };
 
-// SeamStitcher(scene, atlas)(values), for one use.
+// SeamStitcher(atlas, smoothEdges(scene))(values), for one use.
 std::vector<glm::vec4> stitchSeams(const Scene& scene, const Atlas& atlas, std::vector<glm::vec4> values);
 
 }  // namespace hemirad

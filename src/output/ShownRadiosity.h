@@ -14,7 +14,9 @@ namespace hemirad {
 
 class ShownRadiosity {
  public:
-  ShownRadiosity(const Scene& scene, const Atlas& atlas) : fill_(scene, atlas), stitch_(scene, atlas) {}
+  ShownRadiosity(const Scene& scene, const Atlas& atlas, const std::vector<SmoothEdge>& edges)
+      : fill_(scene, atlas), stitch_(atlas, edges) {}
+  ShownRadiosity(const Scene& scene, const Atlas& atlas) : ShownRadiosity(scene, atlas, smoothEdges(scene)) {}
   std::vector<glm::vec4> operator()(std::vector<glm::vec4> values) const { return stitch_(fill_(std::move(values))); }
   bool identity() const { return fill_.empty() && stitch_.empty(); }
 
