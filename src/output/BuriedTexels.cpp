@@ -1,51 +1,21 @@
 #include "src/output/BuriedTexels.h"
 
-#include <embree3/rtcore.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <stdexcept>
 #include <thread>
+
+#include "src/solver/EmbreeScene.h"
 
 namespace hemirad {
 
 namespace {
 
-// Embree's scene of every polygon (fans), each triangle's normal (its polygon's) beside it.
+// Embree's scene of every polygon (fans), for back-face queries.
 class RayScene {
  public:
-  explicit RayScene(const Scene& scene) {
-    device_ = rtcNewDevice(nullptr);
-    if (!device_) throw std::runtime_error("Embree: no device");
-    scene_ = rtcNewScene(device_);
-    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);  // nearest(..., frontOnly)
-    std::vector<glm::vec3> v;
-    for (std::size_t q = 0; q < scene.polygons().size(); ++q) {
-      const Poly3& p = scene.polygons()[q].vertices;
-      for (std::size_t i = 1; i + 1 < p.size(); ++i) {
-        for (const glm::dvec3& w : {p[0], p[i], p[i + 1]}) v.emplace_back(w);
-        normal_.emplace_back(scene.polygons()[q].normal);
-      }
-    }
-    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vb = static_cast<glm::vec3*>(
-        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(glm::vec3), v.size()));
-    std::copy(v.begin(), v.end(), vb);
-    auto* ib = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                   3 * sizeof(std::uint32_t), normal_.size()));
-    for (std::uint32_t i = 0; i < 3 * normal_.size(); ++i) ib[i] = i;
-    rtcCommitGeometry(g);
-    rtcAttachGeometry(scene_, g);
-    rtcReleaseGeometry(g);
-    rtcCommitScene(scene_);
-  }
-  ~RayScene() {
-    rtcReleaseScene(scene_);
-    rtcReleaseDevice(device_);
-  }
-  RayScene(const RayScene&) = delete;
-  RayScene& operator=(const RayScene&) = delete;
+  explicit RayScene(const Scene& scene)
+      : scene_(corners(scene), RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION) {}  // the filter: nearest(..., frontOnly)
 
   // Whether a ray from o along d first meets a surface's back: a back face nearer than any front
   // face (a front face as near is its other side: artists model thin parts as two back-to-back
@@ -75,7 +45,7 @@ class RayScene {
     rh.ray.dir_x = d.x, rh.ray.dir_y = d.y, rh.ray.dir_z = d.z;
     rh.ray.tfar = 1e30f, rh.ray.mask = ~0u;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene_, &context.base, &rh);
+    rtcIntersect1(scene_.get(), &context.base, &rh);
     return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? Hit{} : Hit{rh.ray.tfar, rh.hit.primID};
   }
   static void skipBack(const RTCFilterFunctionNArguments* args) {
@@ -85,9 +55,20 @@ class RayScene {
     if (glm::dot(c->self->normal_[RTCHitN_primID(args->hit, args->N, 0)], d) > 0) args->valid[0] = 0;
   }
 
-  RTCDevice device_ = nullptr;
-  RTCScene scene_ = nullptr;
-  std::vector<glm::vec3> normal_;  // per triangle: its polygon's
+  // Every polygon as a fan, each triangle's normal (its polygon's) kept beside it.
+  std::vector<glm::vec3> corners(const Scene& scene) {
+    std::vector<glm::vec3> v;
+    for (const ScenePolygon& polygon : scene.polygons())
+      for (std::size_t i = 1; i + 1 < polygon.vertices.size(); ++i) {
+        for (const glm::dvec3& w : {polygon.vertices[0], polygon.vertices[i], polygon.vertices[i + 1]})
+          v.emplace_back(w);
+        normal_.emplace_back(polygon.normal);
+      }
+    return v;
+  }
+
+  std::vector<glm::vec3> normal_;  // per triangle: its polygon's (filled before scene_ is built)
+  EmbreeScene scene_;
 };
 
 // The share of texel t's rays that first meet a surface's back.

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <stdexcept>
 #include <thread>
 
 #include <embree3/rtcore.h>
-#include <fmt/format.h>
+
+#include "src/solver/EmbreeScene.h"
 
 namespace hemirad {
 
@@ -33,8 +33,7 @@ using host_trace::TracePolygon;
 using host_trace::TraceReceiver;
 
 struct HostTrace::Impl {
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
+  std::unique_ptr<EmbreeScene> scene;
   std::vector<TracePolygon> polygons;
   std::vector<std::uint32_t> trianglePolygon;
   std::vector<TraceReceiver> receivers;
@@ -73,32 +72,17 @@ void occludedFilter(const RTCFilterFunctionNArguments* args) {
 }
 
 void buildScene(HostTrace::Impl& m, const Bvh& bvh) {
-  m.device = rtcNewDevice(nullptr);
-  if (!m.device) throw std::runtime_error(fmt::format("Embree: no device (error {})", int(rtcGetDeviceError(nullptr))));
-  m.scene = rtcNewScene(m.device);
-  rtcSetSceneFlags(m.scene, RTC_SCENE_FLAG_ROBUST);  // no nomination lost along shared edges
-  rtcSetSceneBuildQuality(m.scene, RTC_BUILD_QUALITY_HIGH);
   const std::vector<BvhTriangle>& tris = bvh.triangles();
-  RTCGeometry g = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = static_cast<float*>(
-      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * tris.size()));
-  auto* index = static_cast<std::uint32_t*>(
-      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), tris.size()));
+  std::vector<glm::vec3> corners;
+  corners.reserve(3 * tris.size());
   m.trianglePolygon.resize(tris.size());
   for (std::size_t i = 0; i < tris.size(); ++i) {
-    const glm::vec3 p[3] = {glm::vec3(tris[i].v0), glm::vec3(tris[i].v0) + glm::vec3(tris[i].e1),
-                            glm::vec3(tris[i].v0) + glm::vec3(tris[i].e2)};
-    for (int k = 0; k < 3; ++k) {
-      v[9 * i + 3 * k] = p[k].x, v[9 * i + 3 * k + 1] = p[k].y, v[9 * i + 3 * k + 2] = p[k].z;
-      index[3 * i + k] = std::uint32_t(3 * i + k);
-    }
+    const glm::vec3 v0(tris[i].v0);
+    corners.insert(corners.end(), {v0, v0 + glm::vec3(tris[i].e1), v0 + glm::vec3(tris[i].e2)});
     m.trianglePolygon[i] = floatBitsToUint(tris[i].v0.w);
   }
-  rtcSetGeometryOccludedFilterFunction(g, occludedFilter);
-  rtcCommitGeometry(g);
-  rtcAttachGeometry(m.scene, g);
-  rtcReleaseGeometry(g);
-  rtcCommitScene(m.scene);
+  // Robust: no nomination lost along shared edges.
+  m.scene = std::make_unique<EmbreeScene>(corners, RTC_SCENE_FLAG_ROBUST, occludedFilter);
 }
 
 }  // namespace
@@ -127,10 +111,7 @@ HostTrace::HostTrace(const Scene& scene, const Atlas& atlas, const Bvh& bvh, std
   buildScene(m, bvh);
 }
 
-HostTrace::~HostTrace() {
-  if (impl_->scene) rtcReleaseScene(impl_->scene);
-  if (impl_->device) rtcReleaseDevice(impl_->device);
-}
+HostTrace::~HostTrace() = default;
 
 void HostTrace::trace(std::span<const ShooterRecord> shooters, std::vector<std::uint32_t>& bits) const {
   const Impl& m = *impl_;
@@ -164,7 +145,7 @@ void HostTrace::trace(std::span<const ShooterRecord> shooters, std::vector<std::
           ray.org_x = c.a.x, ray.org_y = c.a.y, ray.org_z = c.a.z;
           ray.dir_x = c.end.x - c.a.x, ray.dir_y = c.end.y - c.a.y, ray.dir_z = c.end.z - c.a.z;
           ray.tnear = 0.0f, ray.tfar = 1.0f, ray.mask = 0xFFFFFFFFu;
-          rtcOccluded1(m.scene, &c.base, &ray);
+          rtcOccluded1(m.scene->get(), &c.base, &ray);
           if (ray.tfar >= 0.0f) bits[i * words + s / 32] |= 1u << (s % 32);  // -inf when blocked
         }
       }
