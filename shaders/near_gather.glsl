@@ -34,7 +34,7 @@ vec3 nodeOrigin(uint n) {
 // shape, exact visibility from its origin o.
 vec3 nodeLight(uint n, vec3 S, vec3 o, vec3 p, vec3 np, uint chart) {
   vec3 ns = nodes[n].normal.xyz;
-  if (dot(p - o, ns) <= 0.0) return vec3(0.0);
+  if (dot(p - o, ns) <= -reachBehind(nodes[n].polygon)) return vec3(0.0);
   float F = shapeFormFactor(n, nodes[n].centreArea.xyz, nodes[n].centreArea.w, ns, p, np);
   if (F <= 0.0 || segmentBlocked(o, p, chart, chartOf(nodes[n].polygon), segmentEps)) return vec3(0.0);
   return S * F;

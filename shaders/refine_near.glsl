@@ -41,7 +41,7 @@ NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon, float side) {
     float area = nodes[n].centreArea.w;
     vec3 o = st.lightCentre.xyz / st.lightCentre.w, ns = nodes[n].normal.xyz;
     // No unshot light here, or x behind it.
-    if (!empty && st.lightCentre.w > 0.0 && area > 0.0 && dot(x - o, ns) > 0.0) {
+    if (!empty && st.lightCentre.w > 0.0 && area > 0.0 && dot(x - o, ns) > -reachBehind(nodes[n].polygon)) {
       float F = shapeFormFactor(n, o, area, ns, x, nr), w = luminance(st.unshot.rgb) / area * F;
       l.all += w;
       if (w > 0.0 && tracedClear(o, nodes[n].polygon, x, polygon, side, eps)) l.seen += w, l.seenRgb += st.unshot.rgb / area * F;

@@ -5,10 +5,10 @@ const uint NO_POLYGON = 0xFFFFFFFFu;
 
 struct Polygon {
   vec4 normal;       // xyz unit front normal, w the plane offset n . p
-  vec4 reflectance;  // rgb rho
+  vec4 reflectance;  // rgb rho; w how far its cluster's parts reach behind its plane (reachBehind)
   vec4 emission;     // rgb E
   uvec4 vertices;    // first, count in polygonVertex (convex, counter-clockwise around the normal);
-                     // its chart (src/scene/Charts.h)
+                     // its chart (src/scene/Charts.h); 1 if that chart is a cluster (Clusters.h)
 };
 
 layout(std430, binding = SSBO_POLYGONS) readonly buffer Polygons { Polygon polygons[]; };
@@ -33,6 +33,10 @@ vec3 shooterEye(vec3 centre, uint polygon, float area) {
   float behind = polygons[polygon].normal.w - dot(polygons[polygon].normal.xyz, centre);
   return behind > 1e-4 * sqrt(area) ? ontoPlane(centre, polygon) : centre;
 }
+// How far behind the plane of a shooter's polygon a receiver may lie and still face it: 0, but a
+// cluster's (src/scene/Clusters.h) parts lie on many planes around the one it shoots from.
+float reachBehind(uint polygon) { return polygons[polygon].reflectance.w; }
+bool inCluster(uint polygon) { return polygons[polygon].vertices.w != 0u; }
 uint chartOf(uint polygon) { return polygon == NO_POLYGON ? NO_POLYGON : polygons[polygon].vertices.z; }
 // The chart of atlas texel t, NO_POLYGON outside the atlas: charts touch its border (no gutters,
 // src/scene/AtlasPacker.h), and texelFetch out of range is undefined (0 under robust access:

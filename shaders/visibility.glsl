@@ -23,8 +23,11 @@ float hostVisibility(uint s) { return float((hostVisible[hostReceiver * HOST_WOR
 #ifdef BVH_VISIBILITY
 // --visibility bvh (docs/design.md#visibility): every polygon whose BVH boxes the segment meets is
 // tested, so no occluder is missed however thin (bvh_segment.glsl's tracedClear).
-float tracedVisibility(uint shooter, vec3 o, vec3 x, uint polygon, float side) {
-  return tracedClear(o, control.shooter[shooter].polygon, x, polygon, side, SEGMENT_TOLERANCE * farDistance) ? 1.0 : 0.0;
+// A cluster's shooter (src/scene/Clusters.h) is seen from its piece that sends x the most.
+float tracedVisibility(uint shooter, vec3 o, vec3 x, vec3 n, uint polygon, float side) {
+  uint from = control.shooter[shooter].polygon;
+  if (inCluster(from)) clusterEye(control.shooter[shooter].shape, x, n, o, from);
+  return tracedClear(o, from, x, polygon, side, SEGMENT_TOLERANCE * farDistance) ? 1.0 : 0.0;
 }
 #endif
 
@@ -89,13 +92,14 @@ Receiver receiverAt(ivec2 t, uint polygon) {
 // the shape behind x's); then the visibility is not looked up and `visible` is 0.
 float shooterFormFactor(uint s, Receiver r, out bool facing, out float visible) {
   vec3 origin = control.shooter[s].positionArea.xyz;
-  facing = dot(r.x - origin, control.shooter[s].normal.xyz) > 0.0;  // cheap, first: half the scene fails it
+  // Cheap, first: half the scene fails it.
+  facing = dot(r.x - origin, control.shooter[s].normal.xyz) > -reachBehind(control.shooter[s].polygon);
   float F = facing ? unoccludedFormFactor(s, r.x, r.n) : 0.0;
   facing = F > 0.0;
 #if defined(HOST_VISIBILITY)
   visible = facing ? hostVisibility(s) : 0.0;
 #elif defined(BVH_VISIBILITY)
-  visible = facing ? tracedVisibility(s, origin, r.x, r.polygon, sqrt(r.area)) : 0.0;
+  visible = facing ? tracedVisibility(s, origin, r.x, r.n, r.polygon, sqrt(r.area)) : 0.0;
 #else
   visible = facing ? visibility(s, origin, r.x, r.polygon) : 0.0;
 #endif

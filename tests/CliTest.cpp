@@ -69,22 +69,38 @@ TEST_CASE("Degenerate faces are skipped with a warning and the solve goes on", "
   CHECK_THAT(run.output, Contains("s.obj:9: degenerate face with zero area skipped"));
 }
 
-TEST_CASE("Asked for fewer elements than a scene has charts, info warns with the count it could not go below",
-          "[cli]") {
-  // A lamp over 40 separate small squares: 41 charts, each at least one element.
-  std::string obj = "mtllib m.mtl\nv 0 2 0\nv 0 2 1\nv 1 2 1\nv 1 2 0\nusemtl lamp\nf 1 4 3 2\nusemtl grey\n";
+// A 20 cm lamp over 40 separate 5 cm squares; `materials` of them (round robin) for the squares.
+std::string smallPartsScene(int materials) {
+  std::string obj = "mtllib m.mtl\nv 0.4 2 0.4\nv 0.4 2 0.6\nv 0.6 2 0.6\nv 0.6 2 0.4\nusemtl lamp\nf 1 4 3 2\n";
+  std::string mtl = "newmtl lamp\nKe 1 1 1\n";
+  for (int m = 0; m < materials; ++m) mtl += fmt::format("newmtl grey{}\nKd 0.5 0.5 0.5\n", m);
   for (int k = 0; k < 40; ++k) {
     const double x = 0.1 * (k % 8), z = 0.2 * (k / 8);
-    obj += fmt::format("v {} 0 {}\nv {} 0 {}\nv {} 0 {}\nv {} 0 {}\nf {} {} {} {}\n", x, z, x, z + 0.05, x + 0.05,
-                       z + 0.05, x + 0.05, z, 5 + 4 * k, 6 + 4 * k, 7 + 4 * k, 8 + 4 * k);
+    obj += fmt::format("usemtl grey{}\nv {} 0 {}\nv {} 0 {}\nv {} 0 {}\nv {} 0 {}\nf {} {} {} {}\n", k % materials, x,
+                       z, x, z + 0.05, x + 0.05, z + 0.05, x + 0.05, z, 5 + 4 * k, 6 + 4 * k, 7 + 4 * k, 8 + 4 * k);
   }
-  const std::string scene =
-      test::writeScene("small_parts", obj, "newmtl lamp\nKe 1 1 1\nnewmtl grey\nKd 0.5 0.5 0.5\n");
-  test::Run run = test::hemirad("info " + scene + " --elements 10");
-  INFO(run.output);
-  CHECK(run.exitCode == 0);
-  CHECK_THAT(run.output, Contains("41 elements for --elements 10: each of the 41 charts holds at least one"));
-  CHECK_THAT(test::hemirad("info " + scene + " --elements 400").output, !Contains("charts holds at least one"));
+  return test::writeScene(fmt::format("small_parts_{}", materials), obj, mtl);
+}
+
+TEST_CASE(
+    "Small separate parts of one material share elements, so --elements 10 gives about 10, and of forty materials they "
+    "cannot, and info warns with the count it could not go below",
+    "[cli]") {
+  test::Run clustered = test::hemirad("info " + smallPartsScene(1) + " --elements 10");
+  INFO(clustered.output);
+  CHECK(clustered.exitCode == 0);
+  CHECK_THAT(clustered.output, !Contains("charts holds at least one"));
+  const std::size_t at = clustered.output.find("elements     ");
+  REQUIRE(at != std::string::npos);
+  const int elements = std::stoi(clustered.output.substr(at + 13));
+  CHECK(elements >= 8);
+  CHECK(elements <= 12);
+  test::Run apart = test::hemirad("info " + smallPartsScene(40) + " --elements 10");
+  INFO(apart.output);
+  CHECK(apart.exitCode == 0);
+  CHECK_THAT(apart.output, Contains("41 elements for --elements 10: each of the 41 charts holds at least one"));
+  CHECK_THAT(test::hemirad("info " + smallPartsScene(40) + " --elements 400").output,
+             !Contains("charts holds at least one"));
 }
 
 TEST_CASE("Help lists the solve flags", "[cli]") {

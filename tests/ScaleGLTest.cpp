@@ -107,7 +107,7 @@ TEST_CASE(
   const auto start = std::chrono::steady_clock::now();
   const Scene scene = loadScene(manyTriangleScene());
   REQUIRE(scene.polygons().size() == 2 + kRows * kColumns);
-  const Atlas atlas = buildAtlas(scene, 0.05);
+  const Atlas atlas = buildAtlas(scene, 0.05, 16384, 0, kPolygonCharts);  // unclustered (Clusters.h): a block each
   SolverState state(scene, atlas);
   ProgressiveSettings settings;
   settings.itemSubdivision = 0;  // 70,000 item-mesh triangles, not 64 times as many: seconds on llvmpipe

@@ -106,13 +106,16 @@ int runInfo(const InfoOptions& o) {
              scene.emittedPower() / (u * u));
   fmt::print("texel size   {:.6g}\nelements     {}\natlas        {} x {}\n", ts / u, atlas.elements, atlas.width,
              atlas.height);
-  const auto lscm =
-      std::count_if(atlas.charts.begin(), atlas.charts.end(), [](const Chart& c) { return c.uvMapped(); });
-  fmt::print("charts       {} {} (texel use {:.1f} %)\n", atlas.charts.size(),
+  std::size_t lscm = 0, clusters = 0, clustered = 0;  // clusters of small charts (Clusters.h), their polygons
+  for (const Chart& c : atlas.charts) {
+    lscm += c.uvMapped() && !c.clustered, clusters += c.clustered;
+    clustered += c.clustered ? c.polygons.size() : 0;
+  }
+  fmt::print("charts       {} {}, {} clusters of {} polygons (texel use {:.1f} %)\n", atlas.charts.size(),
              o.discretisation.uv == UvSource::Input
                  ? std::string("from the input's UV islands (--uv input)")
                  : fmt::format("at --chart-angle {:g}, {} of them LSCM", o.discretisation.chartAngle, lscm),
-             100.0 * double(atlas.elements) / std::max(1.0, double(atlas.width) * atlas.height));
+             clusters, clustered, 100.0 * double(atlas.elements) / std::max(1.0, double(atlas.width) * atlas.height));
   fmt::print("item mesh    {} triangles at --item-subdiv {}\n", itemTriangleCount(scene, o.itemSubdivision),
              o.itemSubdivision);
   fmt::print("triangles    {}\n", triangleCount(scene));

@@ -237,6 +237,8 @@ RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, con
   run.texelSize = atlas.texelSize;
   run.elements = atlas.elements;
   run.charts = atlas.charts.size();
+  run.clusters =
+      std::size_t(std::count_if(atlas.charts.begin(), atlas.charts.end(), [](const Chart& c) { return c.clustered; }));
   method.describe(run);
   run.atlasWidth = atlas.width;
   run.atlasHeight = atlas.height;

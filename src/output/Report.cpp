@@ -36,6 +36,7 @@ nlohmann::json reportJson(const RunInfo& r) {
       {"scene", r.scene},
       {"elements", r.elements},
       {"charts", r.charts},
+      {"clusters", r.clusters},
       {"disc_shapes", r.discShapes},
       {"texel_size", r.texelSize},
       {"atlas", {{"width", r.atlasWidth}, {"height", r.atlasHeight}}},

@@ -12,6 +12,7 @@
 #include "src/base/MinAreaRect.h"
 #include "src/scene/AtlasPacker.h"
 #include "src/scene/Charts.h"
+#include "src/scene/Clusters.h"
 #include "src/scene/SmoothNormals.h"
 #include "src/scene/Warnings.h"
 
@@ -60,6 +61,7 @@ ChartShape chartShape(const ChartGroup& g, double ts) {
   ChartShape c;
   c.group = g;
   c.map.planar = g.planar;
+  c.map.clustered = g.clustered;
   if (g.uv.empty())
     c.map.frame = chartFrame(g);
   else
@@ -149,7 +151,7 @@ std::vector<ElementSum> chartElements(const Scene& scene, const ChartShape& c, c
     e.normal += a * (c.group.planar ? on.normal : smoothNormalAt(on, smooth[std::size_t(poly)], centre));
     if (a > e.largest) e.largest = a, e.polygon = poly;
   });
-  if (c.map.uvMapped()) refuseOverlap(scene, cells, c, c.cellSize);
+  if (c.map.uvMapped() && !c.map.clustered) refuseOverlap(scene, cells, c, c.cellSize);
   return cells;
 }
 
@@ -167,10 +169,31 @@ std::size_t countElements(const ChartShape& c) {
   return n;
 }
 
-std::vector<ChartShape> chartShapes(const std::vector<ChartGroup>& groups, double ts) {
+// The charts' shapes at texel size ts, small charts clustered (src/scene/Clusters.h) unless the
+// caller keeps a chart per group (kPolygonCharts, refined layouts).
+std::vector<ChartShape> chartShapes(const Scene& scene, const std::vector<ChartGroup>& groups, double ts,
+                                    bool cluster) {
   std::vector<ChartShape> shapes;
-  for (auto& g : groups) shapes.push_back(chartShape(g, ts));
-  return shapes;
+  std::vector<char> oneCell;
+  for (auto& g : groups) {
+    shapes.push_back(chartShape(g, ts));
+    oneCell.push_back(shapes.back().size == glm::ivec2(1));
+  }
+  const std::vector<std::vector<int>> sets =
+      cluster ? smallChartClusters(scene, groups, oneCell, ts) : std::vector<std::vector<int>>{};
+  if (sets.empty()) return shapes;
+  std::vector<int> setOf(groups.size(), -1);
+  for (std::size_t k = 0; k < sets.size(); ++k)
+    for (int m : sets[k]) setOf[std::size_t(m)] = int(k);
+  std::vector<ChartShape> out;
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    const int k = setOf[i];
+    if (k < 0)
+      out.push_back(std::move(shapes[i]));
+    else if (sets[std::size_t(k)].front() == int(i))
+      out.push_back(chartShape(clusterGroup(scene, groups, sets[std::size_t(k)], ts), ts));
+  }
+  return out;
 }
 
 struct Layout {
@@ -206,14 +229,14 @@ double hostMemoryBytes() {
 
 // The error for an atlas over a limit, with the texel size that fits (found by packing, 5 % steps).
 [[noreturn]] void failOverLimit(const Scene& scene, const std::vector<ChartGroup>& groups, double ts, const Layout& l,
-                                int maxSize, double maxBytes) {
+                                int maxSize, double maxBytes, bool cluster) {
   const double texels = l.width * l.height;
   std::string limit = !l.packed ? fmt::format("over the GPU's limit of {} texels a side (GL_MAX_TEXTURE_SIZE)", maxSize)
                                 : fmt::format("{} of memory, over the memory limit of {}",
                                               bytesText(texels * kBytesPerTexel), bytesText(maxBytes));
   double fit =
       ts * std::sqrt(std::max({1.0, texels / (double(maxSize) * maxSize), texels * kBytesPerTexel / maxBytes}));
-  for (int i = 0; i < 200 && !fits(pack(chartShapes(groups, fit), maxSize), maxBytes); ++i) fit *= 1.05;
+  for (int i = 0; i < 200 && !fits(pack(chartShapes(scene, groups, fit, cluster), maxSize), maxBytes); ++i) fit *= 1.05;
   // Shown to four digits, rounded up: rounded down it may not fit (a unit square at 64 texels).
   const double shown = fit / scene.unitScale, unit = std::pow(10.0, std::floor(std::log10(shown)) - 3);
   fit = std::ceil(shown / unit) * unit * scene.unitScale;
@@ -236,11 +259,17 @@ void cutChart(const Scene& scene, const ChartShape& shape, const Chart& c, const
       if (e.pieces == 0) continue;
       const std::size_t t = std::size_t(c.origin.y + j) * std::size_t(atlas.width) + std::size_t(c.origin.x + i);
       // One piece: its own centroid, bit for bit what a chart per polygon gives.
-      const glm::dvec3 centre = e.pieces == 1 ? e.firstCentre : e.centre / e.area;
+      glm::dvec3 centre = e.pieces == 1 ? e.firstCentre : e.centre / e.area, normal = glm::normalize(e.normal);
+      int polygon = e.polygon;
+      if (c.clustered) {  // its member nearest the centroid receives for it (Clusters.h)
+        polygon = clusterReceiver(scene, c.polygons, centre);
+        const ScenePolygon& at = scene.polygons()[std::size_t(polygon)];
+        centre = polygonCentroid(at.vertices, at.normal), normal = at.normal;
+      }
       atlas.positionArea[t] = glm::vec4(glm::vec3(centre), float(e.area));
-      atlas.polygonOf[t] = std::uint32_t(e.polygon);
+      atlas.polygonOf[t] = std::uint32_t(polygon);
       const bool own = e.pieces == 1 && c.planar;  // a polygon's own normal, bit for bit
-      atlas.normalOf[t] = glm::vec3(own ? scene.polygons()[std::size_t(e.polygon)].normal : glm::normalize(e.normal));
+      atlas.normalOf[t] = glm::vec3(own ? scene.polygons()[std::size_t(e.polygon)].normal : normal);
       ++atlas.elements;
     }
 }
@@ -295,15 +324,15 @@ Atlas placeCharts(const Scene& scene, std::vector<ChartShape>& shapes, const Lay
 
 // The atlas of `groups` at texel size ts (buildAtlas's).
 Atlas atlasOfGroups(const Scene& scene, const std::vector<ChartGroup>& groups, double ts, int maxSize,
-                    std::size_t maxBytes, double chartAngle) {
+                    std::size_t maxBytes, double chartAngle, bool cluster) {
   const double memory = maxBytes ? double(maxBytes) : hostMemoryBytes();
   // Charts cover at least the scene's area: far over the texture limit, say so before cutting
   // the scene into more cells than any GPU holds.
   if (double least = scene.totalArea() / (ts * ts); least > double(maxSize) * maxSize)
-    failOverLimit(scene, groups, ts, {false, std::sqrt(least), std::sqrt(least), {}, {}}, maxSize, memory);
-  std::vector<ChartShape> shapes = chartShapes(groups, ts);
+    failOverLimit(scene, groups, ts, {false, std::sqrt(least), std::sqrt(least), {}, {}}, maxSize, memory, cluster);
+  std::vector<ChartShape> shapes = chartShapes(scene, groups, ts, cluster);
   Layout layout = pack(shapes, maxSize);
-  if (!fits(layout, memory)) failOverLimit(scene, groups, ts, layout, maxSize, memory);
+  if (!fits(layout, memory)) failOverLimit(scene, groups, ts, layout, maxSize, memory, cluster);
   Atlas atlas = placeCharts(scene, shapes, layout, ts, chartAngle);
   if (atlas.elements == 0 && !scene.polygons().empty())
     fail("texel size {} leaves no element: every polygon is a sliver under {} of a texel; use a smaller --texel-size",
@@ -324,21 +353,27 @@ double firstTexelSize(const Scene& scene, std::size_t elements) {
 }
 
 // Partial texels add elements; a few fixed-point steps on the real count of `groups` settle it.
-double settledTexelSize(const std::vector<ChartGroup>& groups, std::size_t elements, double ts) {
+double settledTexelSize(const Scene& scene, const std::vector<ChartGroup>& groups, std::size_t elements, double ts,
+                        bool cluster) {
   for (int iter = 0; iter < 4 && elements <= kMaxCountedElements; ++iter) {
     size_t count = 0;
-    for (auto& g : groups) count += countElements(chartShape(g, ts));
+    for (auto& s : chartShapes(scene, groups, ts, cluster)) count += countElements(s);
     if (count == 0) break;  // only slivers: buildAtlas says so
     ts *= std::sqrt(double(count) / double(elements));
   }
   return ts;
 }
 
+// Small charts are clustered (Clusters.h) but where a chart per polygon is asked for, or the
+// input's lightmap UVs, whose islands are the user's.
+bool clusters(double chartAngle, UvSource uv) { return chartAngle != kPolygonCharts && uv != UvSource::Input; }
+
 }  // namespace
 
 Atlas buildAtlas(const Scene& scene, double ts, int maxSize, std::size_t maxBytes, double chartAngle, UvSource uv) {
   if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
-  return atlasOfGroups(scene, chartGroups(scene, chartAngle, uv), ts, maxSize, maxBytes, chartAngle);
+  return atlasOfGroups(scene, chartGroups(scene, chartAngle, uv), ts, maxSize, maxBytes, chartAngle,
+                       clusters(chartAngle, uv));
 }
 
 Atlas buildAtlas(const Scene& scene, const Discretisation& d, int maxSize, std::size_t maxBytes) {
@@ -346,15 +381,15 @@ Atlas buildAtlas(const Scene& scene, const Discretisation& d, int maxSize, std::
   const std::size_t elements = d.elements.value_or(Discretisation::kDefaultElements);
   const double first = firstTexelSize(scene, elements);
   const std::vector<ChartGroup> groups = chartGroups(scene, d.chartAngle, d.uv);
-  const double ts = settledTexelSize(groups, elements, first);
+  const double ts = settledTexelSize(scene, groups, elements, first, clusters(d.chartAngle, d.uv));
   if (!(ts > 0) || !std::isfinite(ts)) fail("--texel-size must be a positive number (got {})", ts);
-  Atlas atlas = atlasOfGroups(scene, groups, ts, maxSize, maxBytes, d.chartAngle);
-  // Every chart holds at least one element (no element spans charts: small parts are not
-  // clustered), so a scene of many small parts cannot go below its chart count.
+  Atlas atlas = atlasOfGroups(scene, groups, ts, maxSize, maxBytes, d.chartAngle, clusters(d.chartAngle, d.uv));
+  // Every chart holds at least one element, and small charts share one only within an object,
+  // a material and a facing (Clusters.h): many small parts unlike each other cannot go lower.
   if (double(atlas.elements) > Discretisation::kElementsOver * double(elements))
     warn(
-        fmt::format("{} elements for --elements {}: each of the {} charts holds at least one (small "
-                    "disconnected parts are not clustered)",
+        fmt::format("{} elements for --elements {}: each of the {} charts holds at least one (small parts share "
+                    "elements only within one object, material and facing)",
                     withThousands(atlas.elements), withThousands(elements), withThousands(atlas.charts.size())));
   return atlas;
 }
@@ -366,6 +401,7 @@ Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double
     ChartShape& c = shapes.emplace_back();
     c.group = spec.group, c.corner = spec.corner, c.size = spec.size, c.cellSize = spec.cellSize;
     c.map.frame = spec.frame, c.map.planar = spec.group.planar, c.map.uv = spec.group.uv;
+    c.map.clustered = spec.group.clustered;
     for (std::size_t k = 0; k < spec.group.parts.size(); ++k)
       c.parts.push_back(c.map.partInChart(spec.group.parts[k], k));
   }
@@ -382,7 +418,7 @@ Atlas buildAtlas(const Scene& scene, const std::vector<ChartSpec>& specs, double
 double texelSizeForElements(const Scene& scene, std::size_t elements, double chartAngle, UvSource uv) {
   const double ts = firstTexelSize(scene, elements);
   if (elements > kMaxCountedElements) return ts;
-  return settledTexelSize(chartGroups(scene, chartAngle, uv), elements, ts);
+  return settledTexelSize(scene, chartGroups(scene, chartAngle, uv), elements, ts, clusters(chartAngle, uv));
 }
 
 glm::dvec2 Atlas::chartCoord(int polygon, const glm::dvec3& p) const {
@@ -418,7 +454,7 @@ std::uint32_t Atlas::chartUnder(glm::ivec4 rect) const {
   return chart;
 }
 
-std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const {
+std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect, std::vector<std::uint32_t>* polygons) const {
   const std::uint32_t chart = chartUnder(rect);
   if (chart == kNoPolygon) return {};
   const Chart& c = charts[chart];
@@ -433,6 +469,7 @@ std::vector<Poly3> Atlas::blockShape(const Scene& scene, glm::ivec4 rect) const 
     const ScenePolygon& on = scene.polygons()[std::size_t(c.partPolygon[k])];
     Poly3& piece = out.emplace_back();
     for (auto& q : cut) piece.push_back(c.toSurface(c.parts[k], k, on, q));
+    if (polygons) polygons->push_back(std::uint32_t(c.partPolygon[k]));
   }
   return out;
 }

@@ -81,7 +81,9 @@ class Atlas {
   std::vector<Poly3> elementShape(const Scene& scene, int x, int y) const;
   // The pieces of the chart under an atlas rectangle of one chart (x, y, w, h): what a shooter
   // block emits from, each convex (elementShape for a 1 x 1 block).
-  std::vector<Poly3> blockShape(const Scene& scene, glm::ivec4 rect) const;
+  // polygons: if given, each piece's polygon.
+  std::vector<Poly3> blockShape(const Scene& scene, glm::ivec4 rect,
+                                std::vector<std::uint32_t>* polygons = nullptr) const;
   // The same region as few convex pieces as its chart allows: on a planar chart (not UV-mapped)
   // whose pieces tile a convex region, that region's outline, one piece (a block over a
   // triangulated wall, or over a refined chart's parts, costs the gather one contour, not one

@@ -17,6 +17,9 @@ struct ChartMapping {
   PlaneFrame frame;       // a projection chart's plane (n: its axis)
   bool planar = true;     // members coplanar: pieces lie in the frame's plane
   std::vector<Poly2> uv;  // a UV chart's parts (triangles): their vertices' chart coordinates
+  // A cluster of small charts (src/scene/Clusters.h): a UV chart of one cell whose triangles
+  // overlap there, each mapped by its own polygon's plane.
+  bool clustered = false;
 
   bool uvMapped() const { return !uv.empty(); }
   // Part k (`part`: its 3D vertices) in chart coordinates.

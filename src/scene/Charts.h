@@ -46,6 +46,7 @@ struct ChartGroup {
   // A UV chart's (ChartMapping.h): per part, a triangle, its vertices' chart coordinates (scene
   // units); a member's parts are consecutive. Empty: the parts are projected along `axis`.
   std::vector<Poly2> uv;
+  bool clustered = false;  // small charts sharing one cell (src/scene/Clusters.h)
 };
 
 // --uv: where charts' texel grids come from. Auto: charts by --chart-angle, curved ones under LSCM

@@ -121,6 +121,7 @@ ChartSpec copyChart(const Scene& scene, const Chart& c, Scene& refined) {
   g.planar = c.planar;
   g.parts = c.parts;
   g.uv = c.uv;  // an LSCM chart keeps its map (as placed: turned with its grid)
+  g.clustered = c.clustered;
   for (int p : c.partPolygon) g.partPolygon.push_back(renamed.at(p));
   return {std::move(g), c.frame, c.corner, c.size, c.cellSize};
 }

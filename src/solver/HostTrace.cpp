@@ -7,7 +7,9 @@
 
 #include <embree3/rtcore.h>
 
+#include "src/scene/Clusters.h"
 #include "src/solver/EmbreeScene.h"
+#include "src/solver/SolverState.h"
 
 namespace hemirad {
 
@@ -19,16 +21,26 @@ namespace host_trace {
 struct TracePolygon {
   glm::vec4 plane;
   std::uint32_t chart = kNoPolygon;
+  float behind = 0;  // clusterReachBehind
+  bool clustered = false;
+};
+
+// A cluster shooter's pieces as shaders/formfactor.glsl's clusterEye weighs them.
+struct EyePiece {
+  glm::vec3 centre, normal;  // vertex mean; Newell's normal, unnormalised (pieceNormal)
+  std::uint32_t polygon;
 };
 
 struct TraceReceiver {
-  glm::vec3 x, b;   // the element's centre, and that onto its polygon's plane
-  float reach = 0;  // tracedClear's untested end: half a side on a curved receiver
+  glm::vec3 x, b;     // the element's centre, and that onto its polygon's plane
+  glm::vec3 n{0.0f};  // its receiver normal
+  float reach = 0;    // tracedClear's untested end: half a side on a curved receiver
   std::uint32_t chart = kNoPolygon;
 };
 
 }  // namespace host_trace
 
+using host_trace::EyePiece;
 using host_trace::TracePolygon;
 using host_trace::TraceReceiver;
 
@@ -38,6 +50,8 @@ struct HostTrace::Impl {
   std::vector<std::uint32_t> trianglePolygon;
   std::vector<TraceReceiver> receivers;
   float eps = 0;
+  const Scene* source = nullptr;  // for cluster shooters' pieces
+  const Atlas* atlas = nullptr;
 
   glm::vec3 ontoPlane(glm::vec3 p, std::uint32_t q) const {
     const glm::vec4& plane = polygons[q].plane;
@@ -47,6 +61,8 @@ struct HostTrace::Impl {
   // triangles: both ends strictly beyond q's plane. (Its in-polygon test is Embree's watertight
   // one: a segment through the edge two facets share always meets one of them, where the
   // polygons' own edge tests, each rounded on its own plane, may both let it pass.)
+  std::vector<EyePiece> clusterParts(const ShooterRecord& s) const;
+  glm::vec3 clusterEye(const std::vector<EyePiece>& parts, const TraceReceiver& r, glm::vec3 eye) const;
   bool crosses(std::uint32_t q, glm::vec3 o, glm::vec3 x) const {
     const glm::vec4& plane = polygons[q].plane;
     const float so = glm::dot(glm::vec3(plane), o) - plane.w, sx = glm::dot(glm::vec3(plane), x) - plane.w;
@@ -87,21 +103,54 @@ void buildScene(HostTrace::Impl& m, const Bvh& bvh) {
 
 }  // namespace
 
+// The shooter's pieces as the shape table holds them (none if it holds a disc).
+std::vector<EyePiece> HostTrace::Impl::clusterParts(const ShooterRecord& s) const {
+  std::vector<std::uint32_t> ids;
+  const std::vector<Poly3> shape =
+      atlas->blockShape(*source, glm::ivec4(s.rect[0], s.rect[1], s.rect[2], s.rect[3]), &ids);
+  std::vector<EyePiece> out;
+  if (!fitsShapeTable(shape)) return out;
+  for (std::size_t k = 0; k < shape.size(); ++k) {
+    const Poly3& p = shape[k];
+    glm::dvec3 centre(0.0), normal(0.0);
+    for (std::size_t i = 0; i < p.size(); ++i) centre += p[i];
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) normal += glm::cross(p[i] - p[0], p[i + 1] - p[0]);
+    out.push_back({glm::vec3(centre / double(p.size())), glm::vec3(normal), ids[k]});
+  }
+  return out;
+}
+
+// clusterEye's choice for receiver r, onto its piece's plane as tracedClear puts an eye.
+glm::vec3 HostTrace::Impl::clusterEye(const std::vector<EyePiece>& parts, const TraceReceiver& r, glm::vec3 eye) const {
+  float best = 0.0f;
+  for (const EyePiece& p : parts) {
+    const glm::vec3 d = r.x - p.centre;
+    const float r2 = glm::dot(d, d),
+                w = std::max(glm::dot(p.normal, d), 0.0f) * std::max(-glm::dot(r.n, d), 0.0f) / (r2 * r2);
+    if (w > best) best = w, eye = ontoPlane(p.centre, p.polygon);
+  }
+  return eye;
+}
+
 HostTrace::HostTrace(const Scene& scene, const Atlas& atlas, const Bvh& bvh, std::span<const std::uint32_t> receivers,
                      unsigned shooters, float eps)
     : impl_(std::make_unique<Impl>()), words_((shooters + 31) / 32) {
   Impl& m = *impl_;
   m.eps = eps;
+  m.source = &scene, m.atlas = &atlas;
+  const std::vector<float> behind = clusterReachBehind(scene, atlas);
   for (std::size_t id = 0; id < scene.occluderCount(); ++id) {  // as SolverState uploads them
     const ScenePolygon& p = scene.occluder(id);
     const std::uint32_t chart = id < atlas.chartOf.size() ? atlas.chartOf[id] : kNoPolygon;
-    m.polygons.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))), chart});
+    m.polygons.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))), chart, behind[id],
+                          chart != kNoPolygon && atlas.charts[chart].clustered});
   }
   for (std::uint32_t packed : receivers) {
     const std::size_t t = std::size_t(packed >> 16) * std::size_t(atlas.width) + (packed & 0xFFFFu);
     const std::uint32_t q = atlas.polygonOf[t];
     TraceReceiver r;
     r.x = glm::vec3(atlas.positionArea[t]);
+    r.n = atlas.normalOf[t];
     r.b = m.ontoPlane(r.x, q);
     const float side = std::sqrt(atlas.positionArea[t].w);
     r.reach = glm::length(r.x - r.b) > 1e-3f * side ? 0.5f * side : 0.0f;
@@ -120,12 +169,15 @@ void HostTrace::trace(std::span<const ShooterRecord> shooters, std::vector<std::
   struct Eye {
     glm::vec3 o, n, a;
     std::uint32_t chart;
+    float behind;                 // the gather's reachBehind
+    std::vector<EyePiece> parts;  // a cluster's: seen from the one that sends the receiver the most
   };
   std::vector<Eye> eyes;
   for (const ShooterRecord& s : shooters) {
     const glm::vec3 o(s.positionArea[0], s.positionArea[1], s.positionArea[2]);
-    eyes.push_back(
-        {o, glm::vec3(s.normal[0], s.normal[1], s.normal[2]), m.ontoPlane(o, s.polygon), m.polygons[s.polygon].chart});
+    eyes.push_back({o, glm::vec3(s.normal[0], s.normal[1], s.normal[2]), m.ontoPlane(o, s.polygon),
+                    m.polygons[s.polygon].chart, m.polygons[s.polygon].behind,
+                    m.polygons[s.polygon].clustered ? m.clusterParts(s) : std::vector<EyePiece>{}});
   }
   constexpr std::size_t kChunk = 256;
   std::atomic<std::size_t> next{0};
@@ -138,9 +190,10 @@ void HostTrace::trace(std::span<const ShooterRecord> shooters, std::vector<std::
         const TraceReceiver& r = m.receivers[i];
         for (std::size_t s = 0; s < eyes.size(); ++s) {
           const Eye& e = eyes[s];
-          if (!(glm::dot(r.x - e.o, e.n) > 0.0f)) continue;  // the gather skips it (shooterFormFactor)
-          const float keep = std::max(0.0f, 1.0f - r.reach / std::max(glm::length(r.b - e.a), 1e-30f));
-          c.a = e.a, c.end = e.a + (r.b - e.a) * keep, c.passA = r.chart, c.passB = e.chart;
+          if (!(glm::dot(r.x - e.o, e.n) > -e.behind)) continue;  // the gather skips it (shooterFormFactor)
+          const glm::vec3 a = e.parts.empty() ? e.a : m.clusterEye(e.parts, r, e.a);
+          const float keep = std::max(0.0f, 1.0f - r.reach / std::max(glm::length(r.b - a), 1e-30f));
+          c.a = a, c.end = a + (r.b - a) * keep, c.passA = r.chart, c.passB = e.chart;
           RTCRay ray{};
           ray.org_x = c.a.x, ray.org_y = c.a.y, ray.org_z = c.a.z;
           ray.dir_x = c.end.x - c.a.x, ray.dir_y = c.end.y - c.a.y, ray.dir_z = c.end.z - c.a.z;

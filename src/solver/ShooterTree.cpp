@@ -18,6 +18,12 @@ double nodeRadius(const Atlas& atlas, glm::ivec4 rect, const glm::dvec3& centre)
       if (atlas.polygonOf[t] != kNoPolygon && atlas.positionArea[t].w > 0)
         radius = std::max(radius, glm::length(glm::dvec3(atlas.positionArea[t]) - centre));
     }
+  const std::uint32_t chart = atlas.chartUnder(rect);
+  if (chart != kNoPolygon && atlas.charts[chart].clustered) {  // its parts lie beyond its cell (Clusters.h)
+    for (const Poly3& part : atlas.charts[chart].parts)
+      for (const glm::dvec3& v : part) radius = std::max(radius, glm::length(v - centre));
+    return radius;
+  }
   return radius + atlas.texelSize * std::sqrt(0.5);
 }
 

@@ -5,15 +5,17 @@
 
 #include "src/base/Error.h"
 #include "src/base/Hash.h"
+#include "src/scene/Clusters.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
 
 namespace {
 struct GpuPolygon {
-  glm::vec4 plane, reflectance, emission;  // plane: unit normal, offset n . p
-  glm::uvec4 vertices;                     // first, count in polygonVertices; chart
+  glm::vec4 plane, reflectance, emission;  // plane: unit normal, offset n . p; reflectance.w: clusterReachBehind
+  glm::uvec4 vertices;                     // first, count in polygonVertices; chart; in a cluster
 };
+
 }  // namespace
 
 SolverState::SolverState(const Scene& s, const Atlas& a)
@@ -26,13 +28,15 @@ SolverState::SolverState(const Scene& s, const Atlas& a)
       deltaB(GL_RGBA32F, a.width, a.height) {
   std::vector<GpuPolygon> table;
   std::vector<glm::vec4> vertices;
+  const std::vector<float> behind = clusterReachBehind(s, a);
   for (std::size_t id = 0; id < s.occluderCount(); ++id) {  // the polygons, then the wholes (Scene.h)
     const ScenePolygon& p = s.occluder(id);
     const Material& m = s.materials[p.material];
     const std::uint32_t chart = id < a.chartOf.size() ? a.chartOf[id] : kNoPolygon;  // a whole is no chart's
     table.push_back({glm::vec4(glm::vec3(p.normal), float(glm::dot(p.normal, p.vertices[0]))),
-                     glm::vec4(glm::vec3(m.reflectance), 0), glm::vec4(glm::vec3(m.emission), 0),
-                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), chart, 0u)});
+                     glm::vec4(glm::vec3(m.reflectance), behind[id]), glm::vec4(glm::vec3(m.emission), 0),
+                     glm::uvec4(unsigned(vertices.size()), unsigned(p.vertices.size()), chart,
+                                unsigned(chart != kNoPolygon && a.charts[chart].clustered))});
     for (auto& v : p.vertices) vertices.push_back(glm::vec4(glm::vec3(v), 1));
   }
   polygons = gl::Buffer(std::span<const GpuPolygon>(table));
@@ -63,32 +67,40 @@ void SolverState::bindScene() const {
   normal.bindUnit(slot::SAMPLER_ATLAS_NORMAL);
 }
 
+bool fitsShapeTable(const std::vector<Poly3>& shape) {
+  bool ok = !shape.empty() && shape.size() <= std::size_t(kMaxShapePieces);
+  for (const Poly3& piece : shape) ok = ok && piece.size() >= 3 && piece.size() <= std::size_t(kMaxShapeVertices);
+  return ok;
+}
+
 ShapeTable shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects) {
   ShapeTable out;
   out.slots.assign(rects.size() * kShapeStride, glm::vec4(0.0f));
-  auto write = [&](std::size_t base, const Poly3& piece) {
-    out.slots[base] = glm::vec4(float(piece.size()), 0, 0, 0);
+  std::vector<std::uint32_t> polygonOf;  // a cluster's pieces': their polygons (shaders/formfactor.glsl's clusterEye)
+  auto write = [&](std::size_t base, const Poly3& piece, std::size_t k) {
+    out.slots[base] =
+        glm::vec4(float(piece.size()), 0, 0, glm::uintBitsToFloat(k < polygonOf.size() ? polygonOf[k] : 0u));
     for (std::size_t i = 0; i < piece.size(); ++i) out.slots[base + 1 + i] = glm::vec4(glm::vec3(piece[i]), 1);
   };
-  auto fits = [](const std::vector<Poly3>& shape) {
-    bool ok = !shape.empty() && shape.size() <= std::size_t(kMaxShapePieces);
-    for (const Poly3& piece : shape) ok = ok && piece.size() >= 3 && piece.size() <= std::size_t(kMaxShapeVertices);
-    return ok;
-  };
   for (std::size_t b = 0; b < rects.size(); ++b) {
-    std::vector<Poly3> shape = atlas.blockOutline(scene, rects[b]);
-    if (shape.size() == 1 && !fits(shape)) shape = atlas.blockShape(scene, rects[b]);  // an outline of many corners
-    if (!fits(shape)) {  // count 0: the gather takes the disc form factor
+    const std::uint32_t chart = atlas.chartUnder(rects[b]);
+    const bool cluster = chart != kNoPolygon && atlas.charts[chart].clustered;
+    polygonOf.clear();
+    std::vector<Poly3> shape =
+        cluster ? atlas.blockShape(scene, rects[b], &polygonOf) : atlas.blockOutline(scene, rects[b]);
+    if (shape.size() == 1 && !fitsShapeTable(shape))
+      shape = atlas.blockShape(scene, rects[b]);  // an outline of many corners
+    if (!fitsShapeTable(shape)) {                 // count 0: the gather takes the disc form factor
       out.discShapes += !shape.empty();
       continue;
     }
     std::size_t previous = b * kShapeStride;
-    write(previous, shape[0]);
+    write(previous, shape[0], 0);
     out.slots[previous].y = glm::uintBitsToFloat(unsigned(shape.size()));
     for (std::size_t k = 1; k < shape.size(); ++k) {  // packed: a piece takes its vertices + 1 vec4s
       const std::size_t base = out.slots.size();
       out.slots.resize(base + 1 + shape[k].size());
-      write(base, shape[k]);
+      write(base, shape[k], k);
       out.slots[previous].z = glm::uintBitsToFloat(unsigned(base));
       previous = base;
     }

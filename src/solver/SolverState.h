@@ -50,6 +50,8 @@ struct ShapeTable {
   std::size_t discShapes = 0;  // shapes past the budget, shot with the disc form factor
 };
 ShapeTable shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects);
+// The table holds `shape` as pieces (up to kMaxShapePieces of up to kMaxShapeVertices), else as a disc.
+bool fitsShapeTable(const std::vector<Poly3>& shape);
 
 // Area-weighted mean B per object (the report's `mean_radiosity`, docs/design.md#report), from a B readback.
 struct ObjectRadiosity {

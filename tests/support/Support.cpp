@@ -71,9 +71,13 @@ gl::RenderBackend& backend() {
 }
 
 Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings, const Camera* camera) {
+  return solve(scene, buildAtlas(scene, texelSize), settings, camera);
+}
+
+Solved solve(const Scene& scene, Atlas atlas, const ProgressiveSettings& settings, const Camera* camera) {
   backend();
   Solved out;
-  out.atlas = buildAtlas(scene, texelSize);
+  out.atlas = std::move(atlas);
   SolverState state(scene, out.atlas);
   ProgressiveSolver solver(state, settings);
   if (settings.importanceDriven()) solver.look(*camera, 1.0);

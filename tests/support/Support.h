@@ -40,6 +40,8 @@ struct Solved {
 gl::RenderBackend& backend();
 // With `camera`: importance-driven solves look from it, and the result is rendered from it.
 Solved solve(const Scene& scene, double texelSize, const ProgressiveSettings& settings, const Camera* camera = nullptr);
+// The same on an atlas the caller built.
+Solved solve(const Scene& scene, Atlas atlas, const ProgressiveSettings& settings, const Camera* camera = nullptr);
 const ObjectRadiosity& object(const Solved& s, const std::string& name);
 
 // What the disc form factor (docs/design.md#form-factor) hands on from element `s` in a convex scene (no
