@@ -60,10 +60,11 @@ vec3 pieceNormal(uint base) {
 // A cluster's pieces (src/scene/Clusters.h) lie apart, and the nearest decide what x (normal n)
 // receives, so its visibility is tested from the piece that sends x the most by the point-to-disc
 // estimate A cos cos / r^2: eye and from become that piece's vertex mean and polygon (its header's
-// w). A disc shape (no pieces) keeps them.
+// w holds the polygon + 1). A disc shape (no pieces), or pieces that name no polygon (stochastic
+// iteration's texel shapes, texel_shape.glsl), keep them.
 void clusterEye(uint shape, vec3 x, vec3 n, inout vec3 eye, inout uint from) {
   uint base = shape * SHAPE_STRIDE, pieces = max(floatBitsToUint(shooterShape[base].y), 1u);
-  if (shooterShape[base].x < 3.0) return;
+  if (shooterShape[base].x < 3.0 || floatBitsToUint(shooterShape[base].w) == 0u) return;
   float best = 0.0;
   for (uint k = 0u, b = base; k < pieces; ++k, b = floatBitsToUint(shooterShape[b].z)) {
     int count = int(shooterShape[b].x);
@@ -71,7 +72,7 @@ void clusterEye(uint shape, vec3 x, vec3 n, inout vec3 eye, inout uint from) {
     for (int i = 0; i < count; ++i) c += shooterShape[b + 1u + uint(i)].xyz;
     vec3 d = x - c / float(count);
     float r2 = dot(d, d), w = max(dot(pieceNormal(b), d), 0.0) * max(-dot(n, d), 0.0) / (r2 * r2);
-    if (w > best) best = w, eye = c / float(count), from = floatBitsToUint(shooterShape[b].w);
+    if (w > best) best = w, eye = c / float(count), from = floatBitsToUint(shooterShape[b].w) - 1u;
   }
 }
 
@@ -79,7 +80,7 @@ void clusterEye(uint shape, vec3 x, vec3 n, inout vec3 eye, inout uint from) {
 // contour integral is linear in the shape, so the pieces' sum is exact, coplanar or not. The
 // first piece's header holds the piece count (y, bits); each header's z the offset (in vec4s,
 // bits) of the next piece, which takes only its own vertex count + 1 vec4s (SolverState.h); a
-// cluster's piece's w its polygon (bits, clusterEye).
+// cluster's piece's w its polygon + 1 (bits, clusterEye).
 float pointToShape(vec3 x, vec3 n, uint shape, vec3 nf) {
   uint base = shape * SHAPE_STRIDE, pieces = floatBitsToUint(shooterShape[base].y);
   if (pieces <= 1u) return pointToPiece(x, n, base, nf);

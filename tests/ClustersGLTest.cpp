@@ -90,16 +90,21 @@ TEST_CASE(
   const Scene s = boxWithCloud(1.0, 1.0);
   ProgressiveSettings p;
   p.stop.targetConvergence = 0.999;
+  p.visibility = Visibility::Bvh;
+  // Traced on the host (HostTrace, as on llvmpipe) and by the GLSL walk (as on a GPU).
+  const HostTraceUse trace = GENERATE(HostTraceUse::Always, HostTraceUse::Never);
+  p.hostTrace = trace;
   const test::Solved r = test::solve(s, 1.0 / 6, p);
   REQUIRE(clusteredCharts(r.atlas) > 0);
   double error[2] = {0, 0}, area[2] = {0, 0};  // area-weighted (B - 2) / 2: walls, clusters
   for (std::size_t t = 0; t < r.B.size(); ++t) {
     if (r.atlas.polygonOf[t] == kNoPolygon) continue;
     const int k = r.atlas.charts[r.atlas.chartAt(t)].clustered;
-    error[k] += (luminance(glm::dvec3(r.B[t])) - 2) / 2 * r.atlas.positionArea[t].w,
-        area[k] += r.atlas.positionArea[t].w;
+    error[k] += (luminance(glm::dvec3(r.B[t])) - 2) / 2 * r.atlas.positionArea[t].w;
+    area[k] += r.atlas.positionArea[t].w;
   }
-  INFO("mean (B - 2) / 2: clusters " << error[1] / area[1] << ", walls " << error[0] / area[0]);
+  INFO((trace == HostTraceUse::Always ? "host" : "GLSL")
+       << " trace; mean (B - 2) / 2: clusters " << error[1] / area[1] << ", walls " << error[0] / area[0]);
   CHECK(std::abs(error[1] / area[1]) < 0.08);
   CHECK(std::abs(error[0] / area[0]) < 0.02);
 }

@@ -76,10 +76,10 @@ bool fitsShapeTable(const std::vector<Poly3>& shape) {
 ShapeTable shapeTable(const Scene& scene, const Atlas& atlas, const std::vector<glm::ivec4>& rects) {
   ShapeTable out;
   out.slots.assign(rects.size() * kShapeStride, glm::vec4(0.0f));
-  std::vector<std::uint32_t> polygonOf;  // a cluster's pieces': their polygons (shaders/formfactor.glsl's clusterEye)
+  std::vector<std::uint32_t> polygonOf;  // a cluster's pieces': their polygons (+ 1 in w: formfactor.glsl's clusterEye)
   auto write = [&](std::size_t base, const Poly3& piece, std::size_t k) {
     out.slots[base] =
-        glm::vec4(float(piece.size()), 0, 0, glm::uintBitsToFloat(k < polygonOf.size() ? polygonOf[k] : 0u));
+        glm::vec4(float(piece.size()), 0, 0, glm::uintBitsToFloat(k < polygonOf.size() ? polygonOf[k] + 1 : 0u));
     for (std::size_t i = 0; i < piece.size(); ++i) out.slots[base + 1 + i] = glm::vec4(glm::vec3(piece[i]), 1);
   };
   for (std::size_t b = 0; b < rects.size(); ++b) {
