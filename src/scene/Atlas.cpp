@@ -169,8 +169,8 @@ std::size_t countElements(const ChartShape& c) {
   return n;
 }
 
-// The charts' shapes at texel size ts, small charts clustered (src/scene/Clusters.h) unless the
-// caller keeps a chart per group (kPolygonCharts, refined layouts).
+// The charts' shapes at texel size ts, small charts clustered (src/scene/Clusters.h) if `cluster`
+// (clusters() below).
 std::vector<ChartShape> chartShapes(const Scene& scene, const std::vector<ChartGroup>& groups, double ts,
                                     bool cluster) {
   std::vector<ChartShape> shapes;

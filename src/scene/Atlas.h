@@ -61,8 +61,9 @@ class Atlas {
   // Per polygon of a UV chart: its first part there (its parts follow it); empty without UV charts.
   std::vector<std::uint32_t> firstPartOf;
   std::vector<glm::vec4> positionArea;  // per atlas texel: centre xyz, area (0: no element)
-  // Per atlas texel: the polygon with the element's largest piece, or kNoPolygon (material and
-  // object are per chart, so lookups through it are the element's).
+  // Per atlas texel: the polygon with the element's largest piece (a cluster's: the member that
+  // receives for it, src/scene/Clusters.h), or kNoPolygon (material and object are per chart, so
+  // lookups through it are the element's).
   std::vector<std::uint32_t> polygonOf;
   // Per atlas texel: area-weighted mean piece normal (on a curved chart, of the smooth normals at
   // the pieces, src/scene/SmoothNormals.h).
