@@ -112,10 +112,9 @@ std::vector<EyePiece> HostTrace::Impl::clusterParts(const ShooterRecord& s) cons
   if (!fitsShapeTable(shape)) return out;
   for (std::size_t k = 0; k < shape.size(); ++k) {
     const Poly3& p = shape[k];
-    glm::dvec3 centre(0.0), normal(0.0);
-    for (std::size_t i = 0; i < p.size(); ++i) centre += p[i];
-    for (std::size_t i = 1; i + 1 < p.size(); ++i) normal += glm::cross(p[i] - p[0], p[i + 1] - p[0]);
-    out.push_back({glm::vec3(centre / double(p.size())), glm::vec3(normal), ids[k]});
+    glm::dvec3 centre(0.0);
+    for (const glm::dvec3& v : p) centre += v;
+    out.push_back({glm::vec3(centre / double(p.size())), glm::vec3(newellNormal(p)), ids[k]});
   }
   return out;
 }
