@@ -302,7 +302,11 @@ std::vector<Flag> deviceAndOutputFlags() {
        "SCENE.camera, else the framed bounds"},
       {"--width", "PIXELS", "Image (or window) width", kPixels},
       {"--height", "PIXELS", "Image (or window) height", kPixels},
-      {"--supersample", "N", "Samples per pixel side", CLI::Range(1, 8)},
+      {"--supersample", "N",
+       "Samples per pixel side, a regular N x N grid box-filtered (anti-aliasing toward the pixel's integral, "
+       "as `reference` estimates it); above 8 the framebuffer stays 8 x (or N's largest divisor up to 8) and "
+       "is drawn again shifted, (N / that)^2 times (--method instant: at most 8)",
+       CLI::Range(1, 64)},
       {"--exposure", "STOPS", "Exposure in stops over the automatic one", any},
       {"--ambient", "on|off",
        "Seed 004's ambient term R x (area-averaged unshot radiosity; weighted by received importance in importance- "

@@ -2,6 +2,7 @@
 
 #include "gl/Debug.h"
 #include "gl/State.h"
+#include "src/output/Supersample.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
@@ -88,18 +89,15 @@ void Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
 }
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
-  const int s = std::max(1, supersample), w = width * s, h = height * s;
+  const SupersampleGrid grid(supersample);
+  const int w = width * grid.scale(), h = height * grid.scale();
   gl::Texture color(GL_RGBA32F, w, h), depth(GL_DEPTH_COMPONENT32F, w, h);
   gl::Framebuffer fbo;
   fbo.attach(GL_COLOR_ATTACHMENT0, color);
   fbo.attach(GL_DEPTH_ATTACHMENT, depth);
   fbo.checkComplete("camera");
-  fbo.clearColor(0, 0, 0, 1);
-  fbo.clearDepth(0.0f);  // reversed depth: 0 is infinitely far
 
-  glm::mat4 vp = mesh_.viewProjection(camera, double(width) / height);
-  fbo.bind();
-  gl::cameraView(w, h).apply();
+  const glm::mat4 vp = mesh_.viewProjection(camera, double(width) / height);
   gl::barrier(gl::Barrier::TextureFetch);
   state_.bindScene();
   atlasValues.bindUnit(slot::SAMPLER_ATLAS_VALUES);
@@ -109,26 +107,26 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   const bool direct = direct_ && &atlasValues == &shown();  // other values (error maps) are shown as they are
   const gl::Program& program = direct ? directProgram_ : program_;
   program.set("addAmbient", int(ambient));
-  program.set("viewProjection", &vp[0][0]);
-  if (direct) program.set("directPass", 0);
-  program.use();
-  mesh_.draw();
-  gl::checkErrors("camera render");
-  if (direct) drawDirect(vp, w, h);
-
+  std::vector<double> sums;
   std::vector<float> rgba(size_t(w) * h * 4);
-  color.read(GL_RGBA, GL_FLOAT, rgba.size() * sizeof(float), rgba.data());
-  Image img{width, height, std::vector<float>(size_t(width) * height * 3, 0.0f)};
-  const float norm = 1.0f / float(s * s);
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      for (int c = 0; c < 3; ++c) {
-        float sum = 0;
-        for (int j = 0; j < s; ++j)
-          for (int i = 0; i < s; ++i) sum += rgba[(size_t(y * s + j) * w + (x * s + i)) * 4 + c];
-        // GL rows go bottom-up; images go top-down.
-        img.rgb[(size_t(height - 1 - y) * width + x) * 3 + c] = sum * norm;
-      }
+  for (int k = 0; k < grid.draws(); ++k) {
+    fbo.clearColor(0, 0, 0, 1);
+    fbo.clearDepth(0.0f);  // reversed depth: 0 is infinitely far
+    fbo.bind();
+    gl::cameraView(w, h).apply();
+    const glm::mat4 shifted = grid.shift(k, w, h) * vp;
+    program.set("viewProjection", &shifted[0][0]);
+    if (direct) program.set("directPass", 0);
+    program.use();
+    mesh_.draw();
+    gl::checkErrors("camera render");
+    if (direct) drawDirect(shifted, w, h);
+    color.read(GL_RGBA, GL_FLOAT, rgba.size() * sizeof(float), rgba.data());
+    grid.accumulate(rgba, width, height, 3, sums);
+  }
+  const double norm = 1.0 / (double(grid.scale()) * grid.scale() * grid.draws());
+  Image img{width, height, std::vector<float>(sums.size())};
+  for (std::size_t i = 0; i < sums.size(); ++i) img.rgb[i] = float(sums[i] * norm);
   return img;
 }
 

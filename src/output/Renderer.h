@@ -23,7 +23,8 @@ class Renderer {
   void setAmbient(bool on) { ambient_ = on; }
   // The term rho_j A adds to element j: A = R S per channel (RGB), from the current dB.
   glm::vec3 ambientTerm();
-  // Renders at supersample x the size and box-filters down (deterministic anti-aliasing).
+  // Samples each pixel on a regular supersample x supersample grid and box-filters down
+  // (deterministic anti-aliasing; src/output/Supersample.h).
   Image render(const Camera& camera, int width, int height, int supersample = 2);
   // The same view of any per-element RGBA32F atlas (e.g. an error map) instead of B.
   Image render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues);

@@ -16,6 +16,7 @@
 #include "src/output/ImageFile.h"
 #include "src/output/InstantRenderer.h"
 #include "src/output/Provenance.h"
+#include "src/output/Supersample.h"
 #include "src/scene/Camera.h"
 #include "src/scene/SceneLoader.h"
 
@@ -87,6 +88,10 @@ class InstantMethod final : public MethodUnit {
           "--atlas, --ply and --gltf need radiosity per element; --method instant shades camera pixels "
           "only (--out, --image)");
     if (!o.checkpoint.empty() || !o.resume.empty()) throw InputError("--method instant has nothing to checkpoint");
+    // Its deferred passes rebuild each sample's ray from the pixel grid: no shifted draws.
+    if (o.supersample > SupersampleGrid::kMaxScale)
+      throw InputError(fmt::format("--supersample {}: --method instant samples at most {} a pixel side", o.supersample,
+                                   SupersampleGrid::kMaxScale));
   }
   int solve(const SolveOptions& o) const override;
   bool checkpoints() const override { return false; }
