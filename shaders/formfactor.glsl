@@ -24,25 +24,47 @@ float contourTerm(vec3 xr, vec3 n, vec3 p, vec3 q) {
   return s > 0.0 ? atan(s, dot(a, a + e)) * dot(k, n) / s : 0.0;
 }
 
+// The clipped outline, streamed: the running sum, the last vertex p (relative to the first, as
+// xr is) and its height dp over x's plane, and where the outline left and re-entered it.
+struct Contour {
+  vec3 xr, n, p, leave, enter;
+  float dp, sum;
+  bool cut;
+};
+
+Contour contourStart(vec3 xr, vec3 n) { return Contour(xr, n, vec3(0.0), vec3(0.0), vec3(0.0), dot(-xr, n), 0.0, false); }
+
+// The edge from the last vertex to q, its part in front of x's plane.
+void contourEdge(inout Contour c, vec3 q) {
+  float dq = dot(q - c.xr, c.n);
+  vec3 h = c.p + (q - c.p) * (c.dp / (c.dp - dq));  // where p -> q crosses the plane, if it does
+  if (c.dp >= 0.0 && dq >= 0.0) c.sum += contourTerm(c.xr, c.n, c.p, q);
+  else if (c.dp >= 0.0) c.sum += contourTerm(c.xr, c.n, c.p, h), c.leave = h, c.cut = true;
+  else if (dq >= 0.0) c.sum += contourTerm(c.xr, c.n, h, q), c.enter = h;
+  c.p = q, c.dp = dq;
+}
+
+float contourEnd(Contour c) {
+  if (c.cut) c.sum += contourTerm(c.xr, c.n, c.leave, c.enter);
+  return max(0.0, -c.sum / (2.0 * PI));
+}
+
 // F to the piece whose slot starts at `base`.
 float pointToPiece(vec3 x, vec3 n, uint base, vec3 nf) {
   int count = int(shooterShape[base].x);
   vec3 v0 = shooterShape[base + 1u].xyz;
   if (count < 3 || dot(x - v0, nf) <= 0.0) return 0.0;
-  vec3 xr = x - v0, p = vec3(0.0), leave = vec3(0.0), enter = vec3(0.0);
-  float dp = dot(-xr, n), sum = 0.0;
-  bool cut = false;
-  for (int i = 1; i <= count; ++i) {
-    vec3 q = i < count ? shooterShape[base + 1u + uint(i)].xyz - v0 : vec3(0.0);
-    float dq = dot(q - xr, n);
-    vec3 h = p + (q - p) * (dp / (dp - dq));  // where p -> q crosses the plane, if it does
-    if (dp >= 0.0 && dq >= 0.0) sum += contourTerm(xr, n, p, q);
-    else if (dp >= 0.0) sum += contourTerm(xr, n, p, h), leave = h, cut = true;
-    else if (dq >= 0.0) sum += contourTerm(xr, n, h, q), enter = h;
-    p = q, dp = dq;
-  }
-  if (cut) sum += contourTerm(xr, n, leave, enter);
-  return max(0.0, -sum / (2.0 * PI));
+  Contour c = contourStart(x - v0, n);
+  for (int i = 1; i <= count; ++i) contourEdge(c, i < count ? shooterShape[base + 1u + uint(i)].xyz - v0 : vec3(0.0));
+  return contourEnd(c);
+}
+
+// F to the quadrilateral a b c d (counter-clockwise around its front normal nf).
+float pointToQuad(vec3 x, vec3 n, vec3 a, vec3 b, vec3 c, vec3 d, vec3 nf) {
+  if (dot(x - a, nf) <= 0.0) return 0.0;
+  Contour k = contourStart(x - a, n);
+  contourEdge(k, b - a), contourEdge(k, c - a), contourEdge(k, d - a), contourEdge(k, vec3(0.0));
+  return contourEnd(k);
 }
 
 // F to the single convex piece in slot `shape`.

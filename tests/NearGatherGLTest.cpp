@@ -49,12 +49,13 @@ TEST_CASE(
   const std::vector<ErrorRow> off = errorTable(scene, regions, readImage(plain), reference, Image{});
   const std::vector<ErrorRow> near = errorTable(scene, regions, readImage(gathered), reference, Image{});
   INFO("without:\n" << markdown(off) << "with --final-gather near:\n" << markdown(near));
-  // Measured: corner band (1 px) bias +6.9 % -> +4.1 %, the edge band's +1.6 % -> -0.3 % (mean
-  // |e| 11.5 -> 10.0 %); interiors 1.39 -> 1.41 % mean |e|.
+  // Measured: corner band (1 px) bias +7.2 % -> +3.1 % (+4.1 % with each element's light constant
+  // across it, before near_gather.glsl's leafProfile), the edge band's mean |e| 11.3 -> 9.9 %;
+  // interiors 1.35 -> 1.39 % mean |e|.
   const ErrorRow &cornerOff = row(off, "corner band (1 px)"), &cornerNear = row(near, "corner band (1 px)");
   REQUIRE(cornerOff.pixels > 400);
   CHECK(cornerOff.bias > 0.05);  // the bias the gather is for
-  CHECK(std::abs(cornerNear.bias) < 0.7 * std::abs(cornerOff.bias));
+  CHECK(std::abs(cornerNear.bias) < 0.5 * std::abs(cornerOff.bias));
   CHECK(row(near, "edge band (1 px)").meanAbsolute < row(off, "edge band (1 px)").meanAbsolute - 0.005);
   const ErrorRow &interiorOff = off.front(), &interiorNear = near.front();
   CHECK(interiorNear.meanAbsolute < interiorOff.meanAbsolute + 0.001);

@@ -1,5 +1,7 @@
 #include "src/output/NearGather.h"
 
+#include <algorithm>
+#include <optional>
 #include <span>
 
 #include <fmt/format.h>
@@ -16,9 +18,9 @@ namespace {
 
 constexpr int kGatherLevel = 4;  // 16 x 16-texel roots, four levels down to single elements
 
-// Per node, in node_stats.comp's layout (4 vec4s), the first two: the area-weighted mean of `sent`
-// (rgb), and where its light sits, the sums of w x and of w, w = luminance(sent) A (the origin of
-// its visibility, as a shooter's: a node half under a block sends from its lit half).
+// Per node, in node_stats.comp's layout (4 vec4s), the first two (leafSlopes the last two): the area-weighted mean of
+// `sent` (rgb), and where its light sits, the sums of w x and of w, w = luminance(sent) A (the origin of its
+// visibility, as a shooter's: a node half under a block sends from its lit half).
 std::vector<glm::vec4> nodeSources(const Atlas& atlas, const std::vector<ShooterNode>& nodes,
                                    const std::vector<glm::vec4>& sent) {
   std::vector<glm::vec4> out(nodes.size() * 4, glm::vec4(0.0f));
@@ -40,6 +42,44 @@ std::vector<glm::vec4> nodeSources(const Atlas& atlas, const std::vector<Shooter
     out[n * 4 + 1] = glm::vec4(glm::vec3(centre), float(weight));
   }
   return out;
+}
+
+// A single element's light changes across it (a wall's top element beside the ceiling sends little
+// at the crease, more at its far side): per element of a planar projection chart, its half-axes
+// (the cell's sides / 2, u x v along the chart's normal) and its luminance's change per element
+// step along each, relative to its own (central differences within its chart, one-sided at the
+// chart's edge), which near_gather.glsl spreads over its quadrants. 0 elsewhere: constant.
+void leafSlopes(const Atlas& atlas, const std::vector<ShooterNode>& nodes, const std::vector<glm::vec4>& sent,
+                std::vector<glm::vec4>& out) {
+  auto sentLuminance = [&](glm::ivec2 t, std::uint32_t chart) -> std::optional<double> {
+    if (t.x < 0 || t.y < 0 || t.x >= atlas.width || t.y >= atlas.height) return std::nullopt;
+    const std::size_t i = std::size_t(t.y) * atlas.width + t.x;
+    if (atlas.chartAt(i) != chart || atlas.positionArea[i].w <= 0) return std::nullopt;
+    return luminance(glm::dvec3(glm::vec3(sent[i])));
+  };
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    const glm::ivec4 r = nodes[n].rect;
+    if (r.z != 1 || r.w != 1 || nodes[n].polygon == kNoPolygon) continue;
+    const std::uint32_t chartIndex = atlas.chartOf[nodes[n].polygon];
+    const Chart& chart = atlas.charts[chartIndex];
+    const std::optional<double> own = sentLuminance({r.x, r.y}, chartIndex);
+    if (chart.uvMapped() || !chart.planar || !own || *own <= 0) continue;
+    double slope[2] = {0, 0};
+    for (int axis = 0; axis < 2; ++axis) {
+      const glm::ivec2 step = axis == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
+      const std::optional<double> ahead = sentLuminance(glm::ivec2(r.x, r.y) + step, chartIndex),
+                                  behind = sentLuminance(glm::ivec2(r.x, r.y) - step, chartIndex);
+      if (ahead && behind)
+        slope[axis] = (*ahead - *behind) / 2;
+      else if (ahead || behind)
+        slope[axis] = ahead ? *ahead - *own : *own - *behind;
+      slope[axis] = std::clamp(slope[axis] / *own, -4.0, 4.0);  // quadrants at +-1/4 step stay >= 0
+    }
+    glm::dvec3 hu = chart.frame.u * (chart.cellSize / 2), hv = chart.frame.v * (chart.cellSize / 2);
+    if (glm::dot(glm::cross(hu, hv), glm::dvec3(nodes[n].normal)) < 0) std::swap(hu, hv), std::swap(slope[0], slope[1]);
+    out[n * 4 + 2] = glm::vec4(glm::vec3(hu), float(slope[0]));
+    out[n * 4 + 3] = glm::vec4(glm::vec3(hv), float(slope[1]));
+  }
 }
 
 }  // namespace
@@ -66,7 +106,8 @@ NearGather::NearGather(const Scene& scene, const Atlas& atlas, const std::vector
                           fmt::format("the shapes of {} final-gather nodes", tree.nodes.size()));
   nodes_ = gl::Buffer(std::span<const ShooterNode>(tree.nodes));
   shapes_ = gl::Buffer(std::span<const glm::vec4>(shapes));
-  const std::vector<glm::vec4> sources = nodeSources(atlas, tree.nodes, sent);
+  std::vector<glm::vec4> sources = nodeSources(atlas, tree.nodes, sent);
+  leafSlopes(atlas, tree.nodes, sent, sources);
   sources_ = gl::Buffer(std::span<const glm::vec4>(sources));
 }
 
