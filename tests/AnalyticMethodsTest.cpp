@@ -31,17 +31,7 @@ const std::map<std::string, MethodRuns> kRuns = {
 };
 
 double receiverB(const std::string& scene, const std::string& flags) {
-  const std::string report = test::tempPath("analytic-methods.json");
-  const std::string args = "solve " + test::sourcePath("scenes/analytic/" + scene) + " --quiet --elements 300 " +
-                           flags + " --report " + report;
-  const test::Run run = test::hemirad(args);
-  INFO(args << "\n" << run.output);
-  REQUIRE(run.exitCode == 0);
-  const nlohmann::json json = test::readJson(report);  // kept: a temporary's ["objects"] would dangle
-  for (const auto& o : json["objects"])
-    if (o["name"] == "receiver") return o["mean_radiosity"][0].get<double>();
-  FAIL("no receiver in the report");
-  return 0;
+  return test::solvedObjectB(test::sourcePath("scenes/analytic/" + scene) + " --elements 300 " + flags, "receiver");
 }
 
 }  // namespace

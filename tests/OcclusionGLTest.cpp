@@ -14,17 +14,8 @@ using namespace hemirad;
 namespace {
 
 double receiverB(const std::string& flags) {
-  const std::string report = test::tempPath("blocked-squares.json");
-  const std::string args = "solve " + test::sourcePath("scenes/analytic/blocked_squares.obj") +
-                           " --quiet --elements 300 " + flags + " --report " + report;
-  const test::Run run = test::hemirad(args);
-  INFO(args << "\n" << run.output);
-  REQUIRE(run.exitCode == 0);
-  const nlohmann::json json = test::readJson(report);
-  for (const auto& o : json["objects"])
-    if (o["name"] == "receiver") return o["mean_radiosity"][0].get<double>();
-  FAIL("no receiver in the report");
-  return 0;
+  return test::solvedObjectB(test::sourcePath("scenes/analytic/blocked_squares.obj") + " --elements 300 " + flags,
+                             "receiver");
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "tests/support/Files.h"
 
+#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 
@@ -23,6 +24,18 @@ std::string writeTempFile(const std::string& name, const std::string& text) {
 }
 
 nlohmann::json readJson(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
+
+double solvedObjectB(const std::string& args, const std::string& object) {
+  const std::string report = tempPath("solved-object.json");
+  const Run run = hemirad("solve " + args + " --quiet --report " + report);
+  INFO("solve " << args << "\n" << run.output);
+  REQUIRE(run.exitCode == 0);
+  const nlohmann::json json = readJson(report);  // kept: a temporary's ["objects"] would dangle
+  for (const auto& o : json["objects"])
+    if (o["name"] == object) return o["mean_radiosity"][0].get<double>();
+  FAIL("no object " << object << " in the report");
+  return 0;
+}
 
 std::string readText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -16,6 +16,8 @@ std::string writeScene(const std::string& folder, const std::string& obj, const 
 std::string writeTempFile(const std::string& name, const std::string& text);
 nlohmann::json readJson(const std::string& path);  // a report, a bench or validation JSON
 std::string readText(const std::string& path);     // a whole file ("" if missing)
+// `hemirad solve ARGS --quiet --report TEMP`, required to succeed: the report's mean B (red) of `object`.
+double solvedObjectB(const std::string& args, const std::string& object);
 
 int count(const std::string& text, const std::string& what);  // non-overlapping occurrences
 // The `hemirad: error:` lines in a run's output: bad input must give exactly one.
