@@ -7,7 +7,8 @@
 // replaced by their exact light at the point, far ones are in neither and cancel. Needs
 // scene.glsl, hemisphere.glsl, formfactor.glsl, segment.glsl, bvh.glsl, bvh_segment.glsl,
 // direct.glsl (its segmentEps, the gather's tolerance) and shooter_tree.glsl (the nodes; each node's stats[] hold NearGather's source: unshot.rgb the mean
-// light its elements send on, lightCentre where it sits).
+// light its elements send on, lightCentre where it sits; a single element's viewCentre and range
+// its half-axes and slopes, leafProfile's).
 uniform uint gatherBlocks;    // nodes [0, gatherBlocks) are the roots
 uniform float gatherReach;    // a node is near within gatherReach x its radius of its centre
 
