@@ -1,7 +1,6 @@
 #include "src/output/NearGather.h"
 
 #include <algorithm>
-#include <optional>
 #include <span>
 
 #include <fmt/format.h>
@@ -11,6 +10,7 @@
 #include "src/solver/ShaderContract.h"
 #include "src/solver/ShooterTree.h"
 #include "src/solver/SolverState.h"
+#include "src/solver/Subdivide.h"
 
 namespace hemirad {
 
@@ -51,34 +51,19 @@ std::vector<glm::vec4> nodeSources(const Atlas& atlas, const std::vector<Shooter
 // chart's edge), which near_gather.glsl spreads over its quadrants. 0 elsewhere: constant.
 void leafSlopes(const Atlas& atlas, const std::vector<ShooterNode>& nodes, const std::vector<glm::vec4>& sent,
                 std::vector<glm::vec4>& out) {
-  auto sentLuminance = [&](glm::ivec2 t, std::uint32_t chart) -> std::optional<double> {
-    if (t.x < 0 || t.y < 0 || t.x >= atlas.width || t.y >= atlas.height) return std::nullopt;
-    const std::size_t i = std::size_t(t.y) * atlas.width + t.x;
-    if (atlas.chartAt(i) != chart || atlas.positionArea[i].w <= 0) return std::nullopt;
-    return luminance(glm::dvec3(glm::vec3(sent[i])));
-  };
   for (std::size_t n = 0; n < nodes.size(); ++n) {
     const glm::ivec4 r = nodes[n].rect;
     if (r.z != 1 || r.w != 1 || nodes[n].polygon == kNoPolygon) continue;
-    const std::uint32_t chartIndex = atlas.chartOf[nodes[n].polygon];
-    const Chart& chart = atlas.charts[chartIndex];
-    const std::optional<double> own = sentLuminance({r.x, r.y}, chartIndex);
-    if (chart.uvMapped() || !chart.planar || !own || *own <= 0) continue;
-    double slope[2] = {0, 0};
-    for (int axis = 0; axis < 2; ++axis) {
-      const glm::ivec2 step = axis == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
-      const std::optional<double> ahead = sentLuminance(glm::ivec2(r.x, r.y) + step, chartIndex),
-                                  behind = sentLuminance(glm::ivec2(r.x, r.y) - step, chartIndex);
-      if (ahead && behind)
-        slope[axis] = (*ahead - *behind) / 2;
-      else if (ahead || behind)
-        slope[axis] = ahead ? *ahead - *own : *own - *behind;
-      slope[axis] = std::clamp(slope[axis] / *own, -4.0, 4.0);  // quadrants at +-1/4 step stay >= 0
-    }
+    const std::size_t t = std::size_t(r.y) * atlas.width + r.x;
+    const Chart& chart = atlas.charts[atlas.chartOf[nodes[n].polygon]];
+    const double own = luminance(glm::dvec3(glm::vec3(sent[t])));
+    if (chart.uvMapped() || !chart.planar || atlas.positionArea[t].w <= 0 || own <= 0) continue;
+    // Relative to its own light; quadrants at +-1/4 step stay >= 0.
+    glm::dvec2 slope = glm::clamp(glm::dvec2(luminanceSlope(atlas, sent, {r.x, r.y})) / own, -4.0, 4.0);
     glm::dvec3 hu = chart.frame.u * (chart.cellSize / 2), hv = chart.frame.v * (chart.cellSize / 2);
-    if (glm::dot(glm::cross(hu, hv), glm::dvec3(nodes[n].normal)) < 0) std::swap(hu, hv), std::swap(slope[0], slope[1]);
-    out[n * 4 + 2] = glm::vec4(glm::vec3(hu), float(slope[0]));
-    out[n * 4 + 3] = glm::vec4(glm::vec3(hv), float(slope[1]));
+    if (glm::dot(glm::cross(hu, hv), glm::dvec3(nodes[n].normal)) < 0) std::swap(hu, hv), std::swap(slope.x, slope.y);
+    out[n * 4 + 2] = glm::vec4(glm::vec3(hu), float(slope.x));
+    out[n * 4 + 3] = glm::vec4(glm::vec3(hv), float(slope.y));
   }
 }
 

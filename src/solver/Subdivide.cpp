@@ -17,16 +17,25 @@ float lumIn(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t, s
   return float(luminance(glm::dvec3(B[i])));
 }
 
-float change(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t, glm::ivec2 axis, std::uint32_t chart,
-             float here) {
-  const float lo = lumIn(atlas, B, t - axis, chart), hi = lumIn(atlas, B, t + axis, chart);
-  if (lo >= 0 && hi >= 0) return 0.5f * (hi - lo);
-  if (hi >= 0) return hi - here;
-  if (lo >= 0) return here - lo;
-  return 0.0f;
-}
-
 }  // namespace
+
+glm::vec2 luminanceSlope(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t) {
+  const std::size_t i = std::size_t(t.y) * std::size_t(atlas.width) + std::size_t(t.x);
+  const std::uint32_t chart = atlas.chartAt(i);
+  const float here = float(luminance(glm::dvec3(B[i])));
+  glm::vec2 slope(0.0f);
+  for (int axis = 0; axis < 2; ++axis) {
+    const glm::ivec2 step = axis == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
+    const float lo = lumIn(atlas, B, t - step, chart), hi = lumIn(atlas, B, t + step, chart);
+    if (lo >= 0 && hi >= 0)
+      slope[axis] = 0.5f * (hi - lo);
+    else if (hi >= 0)
+      slope[axis] = hi - here;
+    else if (lo >= 0)
+      slope[axis] = here - lo;
+  }
+  return slope;
+}
 
 float darkestLuminance(const Atlas& atlas, const std::vector<glm::vec4>& B, const SplitRule& rule) {
   double sum = 0, area = 0;
@@ -66,11 +75,9 @@ std::vector<unsigned> countSteepTexels(const Atlas& atlas, const std::vector<glm
     for (int x = 0; x < atlas.width; ++x) {
       const std::size_t i = std::size_t(y) * std::size_t(atlas.width) + std::size_t(x);
       if (leafOf[i] < 0) continue;
-      const std::uint32_t chart = atlas.chartAt(i);
       const float here = float(luminance(glm::dvec3(B[i])));
-      const float dx = change(atlas, B, {x, y}, {1, 0}, chart, here),
-                  dy = change(atlas, B, {x, y}, {0, 1}, chart, here);
-      if (std::sqrt(dx * dx + dy * dy) > threshold * std::max(here, darkest)) ++out[std::size_t(leafOf[i])];
+      if (glm::length(luminanceSlope(atlas, B, {x, y})) > threshold * std::max(here, darkest))
+        ++out[std::size_t(leafOf[i])];
     }
   return out;
 }

@@ -67,6 +67,10 @@ class GradientPass {
   gl::Program program_;
 };
 
+// The change of B's luminance per texel step at texel t along the atlas's x and y, within t's
+// chart: central differences, one-sided at the chart's edge, 0 without a neighbour (gradient.comp's).
+glm::vec2 luminanceSlope(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t);
+
 // The same count on the CPU from a B readback (the pass's twin; tests).
 std::vector<unsigned> countSteepTexels(const Atlas& atlas, const std::vector<glm::vec4>& B,
                                        const std::vector<std::int32_t>& leafOf, std::size_t nodes, float threshold,
