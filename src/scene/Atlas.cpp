@@ -190,8 +190,13 @@ std::vector<ChartShape> chartShapes(const Scene& scene, const std::vector<ChartG
     const int k = setOf[i];
     if (k < 0)
       out.push_back(std::move(shapes[i]));
-    else if (sets[std::size_t(k)].front() == int(i))
-      out.push_back(chartShape(clusterGroup(scene, groups, sets[std::size_t(k)], ts), ts));
+    else if (sets[std::size_t(k)].front() == int(i)) {
+      const ChartGroup g = clusterGroup(scene, groups, sets[std::size_t(k)], ts);
+      if (!g.parts.empty())
+        out.push_back(chartShape(g, ts));
+      else  // no member triangle keeps an area in the cell (degenerate input): the members stay charts
+        for (int m : sets[std::size_t(k)]) out.push_back(std::move(shapes[std::size_t(m)]));
+    }
   }
   return out;
 }
