@@ -117,10 +117,16 @@ Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
     else
       glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
   } else {
-    allocate(id_, false, [&] {
-      glCreateBuffers(1, &id_);
-      glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes ? bytes : 4), data, GL_DYNAMIC_STORAGE_BIT);
-    }, [&] { return fmt::format("a buffer of {} bytes ({})", bytes, formatBytes(double(bytes))); });
+    allocate(
+        id_, false,
+        [&] {
+          glCreateBuffers(1, &id_);
+          glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes ? bytes : 4), data, GL_DYNAMIC_STORAGE_BIT);
+        },
+        [&] { return fmt::format("a buffer of {} bytes ({})", bytes, formatBytes(double(bytes))); });
+    // GL leaves fresh storage undefined (a driver may back it with memory a deleted object of
+    // this process held): zeros, as the pool's storage is handed out again.
+    if (!data) glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
     poolStorage(id_, shape);
   }
   allocation_ = Allocation(bytes);
@@ -157,17 +163,23 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
   if (known && (id_ = takeStorage(shape))) {  // as fresh storage: zeros
     glClearTexImage(id_, 0, known->zeroFormat, known->zeroType, nullptr);
   } else {
-    allocate(id_, true, [&] {
-      glCreateTextures(layers ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &id_);
-      if (layers)
-        glTextureStorage3D(id_, 1, internalFormat, width, height, layers);
-      else
-        glTextureStorage2D(id_, 1, internalFormat, width, height);
-    }, [&] {
-      return fmt::format("a {} x {}{} {} texture ({})", width, height, layers ? fmt::format(" x {}", layers) : "",
-                         name, formatBytes(double(bytes)));
-    });
-    if (known) poolStorage(id_, shape);
+    allocate(
+        id_, true,
+        [&] {
+          glCreateTextures(layers ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &id_);
+          if (layers)
+            glTextureStorage3D(id_, 1, internalFormat, width, height, layers);
+          else
+            glTextureStorage2D(id_, 1, internalFormat, width, height);
+        },
+        [&] {
+          return fmt::format("a {} x {}{} {} texture ({})", width, height, layers ? fmt::format(" x {}", layers) : "",
+                             name, formatBytes(double(bytes)));
+        });
+    if (known) {
+      glClearTexImage(id_, 0, known->zeroFormat, known->zeroType, nullptr);  // zeros, as a fresh buffer
+      poolStorage(id_, shape);
+    }
   }
   allocation_ = Allocation(bytes);
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // (a pooled one may have been linearFiltering'd)
