@@ -111,11 +111,8 @@ void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
 // ---- Buffer
 Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
   const StorageShape shape{0, bytes};
-  if ((id_ = takeStorage(shape))) {  // as fresh storage: the data, or zeros
-    if (data)
-      upload(0, bytes, data);
-    else
-      glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+  if ((id_ = takeStorage(shape))) {
+    if (data) upload(0, bytes, data);
   } else {
     allocate(
         id_, false,
@@ -124,11 +121,11 @@ Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
           glNamedBufferStorage(id_, static_cast<GLsizeiptr>(bytes ? bytes : 4), data, GL_DYNAMIC_STORAGE_BIT);
         },
         [&] { return fmt::format("a buffer of {} bytes ({})", bytes, formatBytes(double(bytes))); });
-    // GL leaves fresh storage undefined (a driver may back it with memory a deleted object of
-    // this process held): zeros, as the pool's storage is handed out again.
-    if (!data) glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
     poolStorage(id_, shape);
   }
+  // Without data: zeros. GL leaves fresh storage undefined (a driver may back it with memory a
+  // deleted object of this process held), and pooled storage holds its last owner's.
+  if (!data) glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
   allocation_ = Allocation(bytes);
 }
 void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
@@ -160,9 +157,7 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
   const std::size_t bytes = std::size_t(known ? known->bytes : 16) * std::size_t(width) * std::size_t(height) *
                             std::size_t(std::max(layers, 1));
   const StorageShape shape{internalFormat, bytes, width, height, layers};
-  if (known && (id_ = takeStorage(shape))) {  // as fresh storage: zeros
-    glClearTexImage(id_, 0, known->zeroFormat, known->zeroType, nullptr);
-  } else {
+  if (!known || !(id_ = takeStorage(shape))) {
     allocate(
         id_, true,
         [&] {
@@ -176,11 +171,9 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
           return fmt::format("a {} x {}{} {} texture ({})", width, height, layers ? fmt::format(" x {}", layers) : "",
                              name, formatBytes(double(bytes)));
         });
-    if (known) {
-      glClearTexImage(id_, 0, known->zeroFormat, known->zeroType, nullptr);  // zeros, as a fresh buffer
-      poolStorage(id_, shape);
-    }
+    if (known) poolStorage(id_, shape);
   }
+  if (known) glClearTexImage(id_, 0, known->zeroFormat, known->zeroType, nullptr);  // zeros, as a Buffer's
   allocation_ = Allocation(bytes);
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // (a pooled one may have been linearFiltering'd)
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
