@@ -64,6 +64,10 @@ GLuint takeStorage(const StorageShape& shape) {
   const std::uint64_t key = *it;
   p.idle.erase(std::next(it).base());
   p.idleBytes -= shape.bytes;
+  // Its last owner's shader writes (image stores, SSBOs) are incoherent: GL asks for a barrier
+  // before a clear or an upload touches what they wrote (llvmpipe runs them in order; a GPU need
+  // not: docs/adaptive.md's stall on an H100, which only the storage pool caused).
+  glMemoryBarrier(GL_ALL_BARRIER_BITS);
   return idOf(key);
 }
 
