@@ -172,9 +172,9 @@ void ProgressiveSolver::setUpBvh(gl::Defines& gatherDefines, std::span<const std
     return;
   }
   if (viewDriven) fail("host tracing serves plain progressive solves only");
-  hostTrace_ = std::make_unique<HostTrace>(state_.scene, state_.atlas, bvh, receivers,
-                                           unsigned(settings_.shootersPerPass),
-                                           float(kSegmentTolerance * state_.farDistance));
+  hostTrace_ =
+      std::make_unique<HostTrace>(state_.scene, state_.atlas, bvh, receivers, unsigned(settings_.shootersPerPass),
+                                  float(kSegmentTolerance * state_.farDistance));
   hostVisible_ = gl::Buffer(receivers.size() * hostTrace_->words() * sizeof(std::uint32_t));
   gatherDefines.push_back({"HOST_VISIBILITY", "1"});
   gatherDefines.push_back({"HOST_WORDS", std::to_string(hostTrace_->words())});
@@ -226,10 +226,15 @@ void ProgressiveSolver::selectPass(bool importanceOnly) {
   if (settings_.importanceDriven()) rankPass(Rank::Importance, true);
 }
 
+void ProgressiveSolver::writeControl(std::size_t offset, std::size_t bytes, const void* data) {
+  gl::barrier(gl::Barrier::BufferUpdate);
+  control_.upload(offset, bytes, data);
+}
+
 // Importance shooters only, no radiosity shot (the pass's radiosity count is 0).
 void ProgressiveSolver::importancePass() {
   const std::uint32_t none = 0;
-  control_.upload(offsetof(ControlBlock, count), sizeof none, &none);
+  writeControl(offsetof(ControlBlock, count), sizeof none, &none);
   selectPass(true);
   preparePassVisibility();
   gatherPass(Receivers::InView);  // no radiosity shooter: only importance moves
@@ -263,7 +268,7 @@ unsigned ProgressiveSolver::deliverStored() {
     // What was delivered is unshot again: a stopped solve goes on (unless its shots are spent).
     if (!budgetSpent()) {
       const std::uint32_t notDone = 0;
-      control_.upload(offsetof(ControlBlock, done), sizeof notDone, &notDone);
+      writeControl(offsetof(ControlBlock, done), sizeof notDone, &notDone);
       status_.done = false;
     }
   }
@@ -439,9 +444,9 @@ SolveStatus ProgressiveSolver::restoreState(std::span<const std::uint8_t> bytes)
   c.historyCapacity = historyCapacity_;
   c.done = 0;
   c.count = c.importanceCount = 0;
-  control_.upload(0, header, &c);
+  writeControl(0, header, &c);
   const std::size_t history = std::min<std::size_t>((bytes.size() - header - direct) / sizeof(float), historyCapacity_);
-  control_.upload(sizeof(ControlBlock), history * sizeof(float), bytes.data() + header);
+  writeControl(sizeof(ControlBlock), history * sizeof(float), bytes.data() + header);
   if (view_) {
     std::vector<float> r(state_.atlas.positionArea.size());
     std::memcpy(r.data(), bytes.data() + bytes.size() - direct, direct);

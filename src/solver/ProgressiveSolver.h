@@ -157,7 +157,7 @@ class ProgressiveSolver final : public Solver {
   bool refinesNear() const { return settings_.nearRefinement() > 0 && treeDepth_ > 0; }
   bool tracesBvh() const { return refinesNear() || visibility_ == Visibility::Bvh; }
   void setUpBvh(gl::Defines& gatherDefines, std::span<const std::uint32_t> receivers, bool viewDriven);
-  void preparePassVisibility();  // the pass's item buffers, or the host's traced answers (else none)
+  void preparePassVisibility();                  // the pass's item buffers, or the host's traced answers (else none)
   void selectPass(bool importanceOnly = false);  // the stats, then the rankings and choices
   void rankPass(Rank rank, bool importanceShooters);
   void gatherPass(Receivers receivers);
@@ -170,6 +170,9 @@ class ProgressiveSolver final : public Solver {
   unsigned shootToNextStep(unsigned budget);  // returns the shots enqueued
   bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
   SolveStatus readStatus();  // after every pass enqueued so far
+  // Writes into the control block after the passes' shader writes to it have landed (they are
+  // incoherent: GL asks for a buffer-update barrier before an upload touches what they wrote).
+  void writeControl(std::size_t offset, std::size_t bytes, const void* data);
   // The oldest pending status copy; the pass timings' stamps read so far, or with
   // `waitForStamps` all of them (until then timings() is short by the timed passes in flight).
   SolveStatus collectStatus(bool waitForStamps);
@@ -188,13 +191,13 @@ class ProgressiveSolver final : public Solver {
   gl::Buffer nodes_, nodeStats_, control_;  // the shooter tree, its per-pass sums (ShooterTree.h)
   gl::Readback statusCopies_;               // the control block's status header, read back
   std::size_t discShapes_ = 0;
-  gl::Buffer shapes_;  // per node: its exact shape (shapeTable), what the gather integrates over
-  int treeDepth_ = 0;  // levels below the deepest block
-  BvhBuffers bvh_;     // the scene's BVH: exact visibility (near shooters, or --visibility bvh)
+  gl::Buffer shapes_;     // per node: its exact shape (shapeTable), what the gather integrates over
+  int treeDepth_ = 0;     // levels below the deepest block
+  BvhBuffers bvh_;        // the scene's BVH: exact visibility (near shooters, or --visibility bvh)
   gl::Buffer receivers_;  // the gather's receiver texels in visiting order (ReceiverOrder.h)
   unsigned receiverCount_ = 0;
-  std::unique_ptr<HostTrace> hostTrace_;   // a CPU device's traced visibility (HostTrace.h)
-  gl::Buffer hostVisible_;                 // its answers for the pass, SSBO_HOST_VISIBLE
+  std::unique_ptr<HostTrace> hostTrace_;  // a CPU device's traced visibility (HostTrace.h)
+  gl::Buffer hostVisible_;                // its answers for the pass, SSBO_HOST_VISIBLE
   std::vector<std::uint32_t> hostBits_;
   Visibility visibility_;
   std::unique_ptr<ItemBuffer> itemBuffer_;        // none with --visibility bvh
