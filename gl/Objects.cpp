@@ -131,6 +131,10 @@ Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
 void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
   glNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
 }
+void Buffer::uploadAfterShaderWrites(std::size_t offset, std::size_t bytes, const void* data) {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  upload(offset, bytes, data);
+}
 void Buffer::read(std::size_t offset, std::size_t bytes, void* out) const {
   glGetNamedBufferSubData(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), out);
 }

@@ -75,6 +75,9 @@ class Buffer : public Handle<deleteBuffer> {
   explicit Buffer(std::span<const T> data) : Buffer(data.size_bytes(), data.data()) {}
   std::size_t size() const { return size_; }
   void upload(std::size_t offset, std::size_t bytes, const void* data);
+  // upload() into what shaders wrote: their writes are incoherent, and GL asks for a buffer-update
+  // barrier before an upload touches them (a solver's control block after its passes).
+  void uploadAfterShaderWrites(std::size_t offset, std::size_t bytes, const void* data);
   void read(std::size_t offset, std::size_t bytes, void* out) const;
   void bindBase(GLenum target, GLuint index) const;  // SSBO / UBO binding point
   void bind(GLenum target) const;                    // e.g. GL_DISPATCH_INDIRECT_BUFFER

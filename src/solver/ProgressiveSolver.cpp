@@ -226,15 +226,10 @@ void ProgressiveSolver::selectPass(bool importanceOnly) {
   if (settings_.importanceDriven()) rankPass(Rank::Importance, true);
 }
 
-void ProgressiveSolver::writeControl(std::size_t offset, std::size_t bytes, const void* data) {
-  gl::barrier(gl::Barrier::BufferUpdate);
-  control_.upload(offset, bytes, data);
-}
-
 // Importance shooters only, no radiosity shot (the pass's radiosity count is 0).
 void ProgressiveSolver::importancePass() {
   const std::uint32_t none = 0;
-  writeControl(offsetof(ControlBlock, count), sizeof none, &none);
+  control_.uploadAfterShaderWrites(offsetof(ControlBlock, count), sizeof none, &none);
   selectPass(true);
   preparePassVisibility();
   gatherPass(Receivers::InView);  // no radiosity shooter: only importance moves
@@ -268,7 +263,7 @@ unsigned ProgressiveSolver::deliverStored() {
     // What was delivered is unshot again: a stopped solve goes on (unless its shots are spent).
     if (!budgetSpent()) {
       const std::uint32_t notDone = 0;
-      writeControl(offsetof(ControlBlock, done), sizeof notDone, &notDone);
+      control_.uploadAfterShaderWrites(offsetof(ControlBlock, done), sizeof notDone, &notDone);
       status_.done = false;
     }
   }
@@ -444,9 +439,9 @@ SolveStatus ProgressiveSolver::restoreState(std::span<const std::uint8_t> bytes)
   c.historyCapacity = historyCapacity_;
   c.done = 0;
   c.count = c.importanceCount = 0;
-  writeControl(0, header, &c);
+  control_.uploadAfterShaderWrites(0, header, &c);
   const std::size_t history = std::min<std::size_t>((bytes.size() - header - direct) / sizeof(float), historyCapacity_);
-  writeControl(sizeof(ControlBlock), history * sizeof(float), bytes.data() + header);
+  control_.uploadAfterShaderWrites(sizeof(ControlBlock), history * sizeof(float), bytes.data() + header);
   if (view_) {
     std::vector<float> r(state_.atlas.positionArea.size());
     std::memcpy(r.data(), bytes.data() + bytes.size() - direct, direct);

@@ -170,9 +170,6 @@ class ProgressiveSolver final : public Solver {
   unsigned shootToNextStep(unsigned budget);  // returns the shots enqueued
   bool budgetSpent() const { return settings_.stop.maxShots && status_.shots >= settings_.stop.maxShots; }
   SolveStatus readStatus();  // after every pass enqueued so far
-  // Writes into the control block after the passes' shader writes to it have landed (they are
-  // incoherent: GL asks for a buffer-update barrier before an upload touches what they wrote).
-  void writeControl(std::size_t offset, std::size_t bytes, const void* data);
   // The oldest pending status copy; the pass timings' stamps read so far, or with
   // `waitForStamps` all of them (until then timings() is short by the timed passes in flight).
   SolveStatus collectStatus(bool waitForStamps);

@@ -182,8 +182,7 @@ SolveStatus StochasticSolver::restoreState(std::span<const std::uint8_t> bytes) 
   status_.shots = s.iterations;
   status_.convergence = std::numeric_limits<double>::quiet_NaN();
   status_.done = false;
-  gl::barrier(gl::Barrier::BufferUpdate);  // after the passes' shader writes to it (ProgressiveSolver::writeControl)
-  control_.upload(0, sizeof s.iterations, &s.iterations);
+  control_.uploadAfterShaderWrites(0, sizeof s.iterations, &s.iterations);
   return status_;
 }
 
