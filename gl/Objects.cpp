@@ -108,10 +108,20 @@ void deleteProgram(GLuint id) {
 void deleteQuery(GLuint id) { glDeleteQueries(1, &id); }
 void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
 
+// NVIDIA (H100, 2026-12-06): on storage the pool hands out again, an upload that follows its
+// clear can be overtaken by it. A solver's control block, cleared and then given its header, came
+// out with a header that shot nothing, and the solve ran forever (docs/adaptive.md, the stall);
+// uploading zeros instead of the clear, or waiting for the clear, cured it, and fresh storage
+// never showed it. So a pooled object's clear is waited for (at a solver's setup: the GPU is idle).
+namespace {
+void awaitPooledClear() { glFinish(); }
+}  // namespace
+
 // ---- Buffer
 Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
   const StorageShape shape{0, bytes};
-  if ((id_ = takeStorage(shape))) {
+  const bool pooled = (id_ = takeStorage(shape)) != 0;
+  if (pooled) {
     if (data) upload(0, bytes, data);
   } else {
     allocate(
@@ -126,6 +136,7 @@ Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
   // Without data: zeros. GL leaves fresh storage undefined (a driver may back it with memory a
   // deleted object of this process held), and pooled storage holds its last owner's.
   if (!data) glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+  if (pooled && !data) awaitPooledClear();
   allocation_ = Allocation(bytes);
 }
 void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
@@ -161,7 +172,8 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
   const std::size_t bytes = std::size_t(known ? known->bytes : 16) * std::size_t(width) * std::size_t(height) *
                             std::size_t(std::max(layers, 1));
   const StorageShape shape{internalFormat, bytes, width, height, layers};
-  if (!known || !(id_ = takeStorage(shape))) {
+  const bool pooled = known && (id_ = takeStorage(shape)) != 0;
+  if (!pooled) {
     allocate(
         id_, true,
         [&] {
@@ -178,6 +190,7 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
     if (known) poolStorage(id_, shape);
   }
   if (known) glClearTexImage(id_, 0, known->zeroFormat, known->zeroType, nullptr);  // zeros, as a Buffer's
+  if (pooled) awaitPooledClear();
   allocation_ = Allocation(bytes);
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // (a pooled one may have been linearFiltering'd)
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -66,7 +66,7 @@ GLuint takeStorage(const StorageShape& shape) {
   p.idleBytes -= shape.bytes;
   // Its last owner's shader writes (image stores, SSBOs) are incoherent: GL asks for a barrier
   // before a clear or an upload touches what they wrote (llvmpipe runs them in order; a GPU need
-  // not: docs/adaptive.md's stall on an H100, which only the storage pool caused).
+  // not). What an NVIDIA driver does besides: gl/Objects.cpp's awaitPooledClear.
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
   return idOf(key);
 }

@@ -2,10 +2,10 @@
 // maps fresh storage in at its first use, so a solver built again and again (bench rows, adaptive
 // rounds, sweeps, the direct split) paid for its pages in its first passes. A Buffer or Texture
 // destroyed goes back to this pool, keyed by its exact shape, and the next request of that shape
-// takes it, cleared to zero and with nearest filtering, as fresh storage made without data is
-// (gl/Objects.cpp clears that too: GL leaves it undefined). Idle storage is capped
-// (kMostIdleBytes, oldest deleted first) and given back whole before a fresh allocation is
-// retried on GL_OUT_OF_MEMORY. The pool lives with the context.
+// takes it, cleared to zero (the clear waited for: gl/Objects.cpp's awaitPooledClear) and with
+// nearest filtering, as fresh storage made without data is (cleared too: GL leaves it
+// undefined). Idle storage is capped (kMostIdleBytes, oldest deleted first) and given back whole
+// before a fresh allocation is retried on GL_OUT_OF_MEMORY. The pool lives with the context.
 #pragma once
 #include <cstddef>
 
