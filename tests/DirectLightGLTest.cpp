@@ -211,3 +211,26 @@ TEST_CASE(
     CHECK(std::count(run.output.begin(), run.output.end(), '\n') == 1);
   }
 }
+
+// Under --direct per-pixel images take only the indirect light from the elements, so adaptive
+// rounds split where the indirect light is steep (src/cli/AdaptiveRounds.cpp). The occluder's
+// shadow is in the direct light alone (nothing reflects twice): it splits leaves with the direct
+// light in the atlas, none without.
+TEST_CASE("Under per-pixel direct light adaptive rounds split on the indirect light: a direct shadow splits no leaf",
+          "[gl][direct][adaptive]") {
+  const std::string common = "solve " + occluderScene() +
+                             " --camera 'eye=0.5,0.5,0.05 target=0.5,0.5,1 up=0,1,0 fov=70' --width 16 --height 16"
+                             " --supersample 1 --quiet --subdivide adaptive --elements 4000 --direct ";
+  const auto splitsOfRound0 = [&](const std::string& mode) {
+    const test::Run run = test::hemirad(common + mode + " --out " + test::tempPath("split.exr"));
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    const std::size_t at = run.output.find("adaptive round 0:");
+    REQUIRE(at != std::string::npos);
+    const std::string line = run.output.substr(at, run.output.find('\n', at) - at);
+    const std::size_t end = line.rfind(" leaves split"), start = line.rfind(' ', end - 1) + 1;
+    return std::stoi(line.substr(start, end - start));
+  };
+  CHECK(splitsOfRound0("atlas") > 0);
+  CHECK(splitsOfRound0("per-pixel") == 0);
+}

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <numeric>
 
+#include "src/solver/DirectSplit.h"
+
 namespace hemirad {
 
 namespace {
@@ -23,8 +25,17 @@ std::vector<unsigned> solveAndCount(const SubdivideOptions& o, const AtlasMethod
   round.reached = run->reached(solved);
   const std::vector<glm::vec4> B = state.readRadiosity();
   const std::vector<std::int32_t> leafOf = leafOfTexel(atlas, baseChart, tree);
-  const std::vector<unsigned> counts = GradientPass().count(state, leafOf, tree.nodes().size(), float(o.rule.threshold),
-                                                            darkestLuminance(atlas, B, o.rule));
+  // Under --direct per-pixel images take only the indirect light from the elements: split on it.
+  const std::vector<glm::vec4> direct = run->directOnly(camera, aspect);
+  std::vector<unsigned> counts;
+  if (direct.empty())
+    counts = GradientPass().count(state, leafOf, tree.nodes().size(), float(o.rule.threshold),
+                                  darkestLuminance(atlas, B, o.rule));
+  else {
+    const std::vector<glm::vec4> indirect = indirectPart(B, direct);
+    counts = countSteepTexels(atlas, indirect, leafOf, tree.nodes().size(), float(o.rule.threshold),
+                              darkestLuminance(atlas, indirect, o.rule));
+  }
   budget = {atlas.elements, o.budget, leafElements(leafOf, tree.nodes().size())};
   round.elements = atlas.elements;
   round.leaves = tree.leafCount();

@@ -1,11 +1,30 @@
 #include "src/output/Renderer.h"
 
+#include <fmt/format.h>
+
+#include <stdexcept>
+
 #include "gl/Debug.h"
 #include "gl/State.h"
 #include "src/output/Supersample.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
+
+namespace {
+
+// Every pixel's alpha is 1: the clear's, kept by the first pass (alpha 1) and the direct pass
+// (adding alpha 0). A read that is not came from a GPU that dropped the draws (an H100 read back
+// zeros, alpha too, with no GL error: docs/adaptive.md): an error, not a black image and exit 0.
+void requireDrawn(const std::vector<float>& rgba) {
+  for (std::size_t i = 3; i < rgba.size(); i += 4)
+    if (rgba[i] != 1.0f)
+      throw std::runtime_error(fmt::format(
+          "camera render: the GPU returned pixel {} with alpha {} (every pixel's is 1): its draws were lost", i / 4,
+          rgba[i]));
+}
+
+}  // namespace
 
 Renderer::Renderer(const SolverState& state)
     : state_(state),
@@ -122,6 +141,7 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
     gl::checkErrors("camera render");
     if (direct) drawDirect(shifted, w, h);
     color.read(GL_RGBA, GL_FLOAT, rgba.size() * sizeof(float), rgba.data());
+    requireDrawn(rgba);
     grid.accumulate(rgba, width, height, 3, sums);
   }
   const double norm = 1.0 / (double(grid.scale()) * grid.scale() * grid.draws());
