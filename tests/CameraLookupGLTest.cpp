@@ -108,3 +108,11 @@ TEST_CASE("camera.frag's masked bilinear atlas lookup equals Atlas::sample pixel
   CHECK(maskedCompared > 300);  // lookups along the hypotenuse and the pentagon's slanted edges
   CHECK(background > 1000);
 }
+
+TEST_CASE("A camera render read back with a pixel whose alpha is not 1 is an error, not an image", "[cpu][camera]") {
+  std::vector<float> rgba(4 * 16, 1.0f);  // every pass keeps alpha 1
+  CHECK_NOTHROW(requireDrawn(rgba));
+  rgba[4 * 7 + 3] = 0.0f;  // pixel 7 was never drawn: zeros, as the H100 read back
+  CHECK_THROWS_WITH(requireDrawn(rgba), Catch::Contains("pixel 7 with alpha 0"));
+  CHECK_THROWS(requireDrawn(std::vector<float>(4 * 16, 0.0f)));
+}

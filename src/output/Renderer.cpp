@@ -11,11 +11,6 @@
 
 namespace hemirad {
 
-namespace {
-
-// Every pixel's alpha is 1: the clear's, kept by the first pass (alpha 1) and the direct pass
-// (adding alpha 0). A read that is not came from a GPU that dropped the draws (an H100 read back
-// zeros, alpha too, with no GL error: docs/adaptive.md): an error, not a black image and exit 0.
 void requireDrawn(const std::vector<float>& rgba) {
   for (std::size_t i = 3; i < rgba.size(); i += 4)
     if (rgba[i] != 1.0f)
@@ -23,8 +18,6 @@ void requireDrawn(const std::vector<float>& rgba) {
           "camera render: the GPU returned pixel {} with alpha {} (every pixel's is 1): its draws were lost", i / 4,
           rgba[i]));
 }
-
-}  // namespace
 
 Renderer::Renderer(const SolverState& state)
     : state_(state),

@@ -59,4 +59,10 @@ class Renderer {
   std::unique_ptr<ShownRadiosity> stitcher_;  // stitchLive(), where what is shown differs from B
 };
 
+// A camera render's read-back RGBA: every pixel's alpha is 1, the clear's, kept by the first
+// pass (alpha 1) and the direct pass (adding alpha 0). One that is not came from a GPU that
+// dropped the draws (an H100 read back zeros, alpha too, with no GL error: docs/adaptive.md):
+// throws, so a run fails with one error line instead of writing a black image and exiting 0.
+void requireDrawn(const std::vector<float>& rgba);
+
 }  // namespace hemirad
