@@ -71,7 +71,8 @@ class GradientPass {
 // chart: central differences, one-sided at the chart's edge, 0 without a neighbour (gradient.comp's).
 glm::vec2 luminanceSlope(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t);
 
-// The same count on the CPU from a B readback (the pass's twin; tests).
+// The same count on the CPU from a B readback (the pass's twin: tests, and adaptive rounds under
+// --direct per-pixel, which count B minus the direct light: src/cli/AdaptiveRounds.cpp).
 std::vector<unsigned> countSteepTexels(const Atlas& atlas, const std::vector<glm::vec4>& B,
                                        const std::vector<std::int32_t>& leafOf, std::size_t nodes, float threshold,
                                        float darkest);
