@@ -135,8 +135,10 @@ Buffer::Buffer(std::size_t bytes, const void* data) : size_(bytes) {
   }
   // Without data: zeros. GL leaves fresh storage undefined (a driver may back it with memory a
   // deleted object of this process held), and pooled storage holds its last owner's.
-  if (!data) glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
-  if (pooled && !data) awaitPooledClear();
+  if (!data) {
+    glClearNamedBufferData(id_, GL_R8UI, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+    if (pooled) awaitPooledClear();
+  }
   allocation_ = Allocation(bytes);
 }
 void Buffer::upload(std::size_t offset, std::size_t bytes, const void* data) {
@@ -189,8 +191,10 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
         });
     if (known) poolStorage(id_, shape);
   }
-  if (known) glClearTexImage(id_, 0, known->zeroFormat, known->zeroType, nullptr);  // zeros, as a Buffer's
-  if (pooled) awaitPooledClear();
+  if (known) {
+    glClearTexImage(id_, 0, known->zeroFormat, known->zeroType, nullptr);  // zeros, as a Buffer's
+    if (pooled) awaitPooledClear();
+  }
   allocation_ = Allocation(bytes);
   glTextureParameteri(id_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // (a pooled one may have been linearFiltering'd)
   glTextureParameteri(id_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);

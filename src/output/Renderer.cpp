@@ -2,8 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <stdexcept>
-
+#include "gl/Backend.h"
 #include "gl/Debug.h"
 #include "gl/State.h"
 #include "src/output/Supersample.h"
@@ -14,7 +13,7 @@ namespace hemirad {
 void requireDrawn(const std::vector<float>& rgba) {
   for (std::size_t i = 3; i < rgba.size(); i += 4)
     if (rgba[i] != 1.0f)
-      throw std::runtime_error(fmt::format(
+      throw gl::Error(fmt::format(
           "camera render: the GPU returned pixel {} with alpha {} (every pixel's is 1): its draws were lost", i / 4,
           rgba[i]));
 }
