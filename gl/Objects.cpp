@@ -229,15 +229,20 @@ void Framebuffer::checkComplete(const char* what) const {
   if (status != GL_FRAMEBUFFER_COMPLETE) throw Error(fmt::format("{} framebuffer incomplete (0x{:04x})", what, status));
 }
 void Framebuffer::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, id_); }
+// Clears cover the whole attachment: a pass drawn in bands (src/output/DrawBands.h) leaves its
+// scissor on, which they would honour.
 void Framebuffer::clearColor(float r, float g, float b, float a) {
+  glDisable(GL_SCISSOR_TEST);
   const float v[4] = {r, g, b, a};
   glClearNamedFramebufferfv(id_, GL_COLOR, 0, v);
 }
 void Framebuffer::clearColor(std::uint32_t value) {
+  glDisable(GL_SCISSOR_TEST);
   const GLuint v[4] = {value, 0, 0, 0};
   glClearNamedFramebufferuiv(id_, GL_COLOR, 0, v);
 }
 void Framebuffer::clearDepth(float depth) {
+  glDisable(GL_SCISSOR_TEST);
   glDepthMask(GL_TRUE);  // clears honour the depth mask, which a depth-equal pass may have left off
   glClearNamedFramebufferfv(id_, GL_DEPTH, 0, &depth);
 }

@@ -18,6 +18,8 @@ void RasterState::apply() const {
   enable(GL_CLIP_DISTANCE0, clipDistance0);
   enable(GL_BLEND, additiveBlend);
   if (additiveBlend) glBlendFunc(GL_ONE, GL_ONE);
+  enable(GL_SCISSOR_TEST, scissor.has_value());
+  if (scissor) glScissor(scissor->x, scissor->y, scissor->width, scissor->height);
 }
 
 void barrier(Barrier bits) { glMemoryBarrier(GLbitfield(bits)); }

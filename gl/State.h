@@ -4,6 +4,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "gl/GL.h"
 
@@ -20,15 +21,21 @@ enum class DepthFunc : GLenum { Less = GL_LESS, Greater = GL_GREATER, Equal = GL
 // metres away wins its pixels ([-1, 1] loses that to rounding near 1).
 enum class DepthRange { Standard, Reversed };
 
+// Pixels from (x, y) (bottom-up) of a framebuffer.
+struct Rect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
 struct RasterState {
   int width = 0, height = 0;  // the viewport, from the origin
   bool depthTest = true;
   DepthFunc depthFunc = DepthFunc::Less;
   DepthRange depthRange = DepthRange::Standard;
   bool depthWrite = true;
-  bool cullFaces = false;      // hemirad's faces occlude and are seen from both sides
-  bool clipDistance0 = false;  // gl_ClipDistance[0] (the item buffer's hemisphere)
-  bool additiveBlend = false;  // colour += fragment (instant radiosity sums VPL batches)
+  bool cullFaces = false;       // hemirad's faces occlude and are seen from both sides
+  bool clipDistance0 = false;   // gl_ClipDistance[0] (the item buffer's hemisphere)
+  bool additiveBlend = false;   // colour += fragment (instant radiosity sums VPL batches)
+  std::optional<Rect> scissor;  // draws only inside it
   void apply() const;
 };
 

@@ -85,17 +85,21 @@ void Renderer::usePerPixelDirect(const DirectLight& direct, const NearGather* ga
 }
 
 // The second pass of a per-pixel-direct view: each visible fragment (the depths the first pass
-// left, GL_EQUAL: the same program and vertices give the same depths) adds its direct light.
+// left, GL_EQUAL: the same program and vertices give the same depths) adds its direct light. It
+// can cost seconds, so it is drawn in bands (src/output/DrawBands.h).
 void Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
   gl::RasterState add = gl::cameraView(width, height);
   add.depthFunc = gl::DepthFunc::Equal, add.depthWrite = false, add.additiveBlend = true;
-  add.apply();
   direct_->bind(directProgram_);
   if (gather_) gather_->bind(directProgram_);
   directProgram_.set("directPass", 1);
   directProgram_.set("viewProjection", &vp[0][0]);
   directProgram_.use();
-  mesh_.draw();
+  drawInBands(bands_, width, height, [&](const gl::Rect& band) {
+    add.scissor = band;
+    add.apply();
+    mesh_.draw();
+  });
   gl::checkErrors("per-pixel direct light");
 }
 

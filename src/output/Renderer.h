@@ -6,6 +6,7 @@
 
 #include "gl/Objects.h"
 #include "src/output/DirectLight.h"
+#include "src/output/DrawBands.h"
 #include "src/output/Image.h"
 #include "src/output/NearGather.h"
 #include "src/output/ShownRadiosity.h"
@@ -40,6 +41,8 @@ class Renderer {
   // (src/solver/DirectSplit.h); with `gather` (`--final-gather near`) each pixel also regathers
   // the light of the elements near it (shaders/near_gather.glsl). The renderer keeps both.
   void usePerPixelDirect(const DirectLight& direct, const NearGather* gather = nullptr);
+  // How the per-pixel pass is split into bands (tests split it finely).
+  void setBandPlan(const BandPlan& plan) { bands_ = plan; }
 
  private:
   const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
@@ -52,6 +55,7 @@ class Renderer {
   gl::Program program_, ambientProgram_, directProgram_;
   const DirectLight* direct_ = nullptr;
   const NearGather* gather_ = nullptr;
+  BandPlan bands_;
   gl::Buffer ambientTerm_;
   CameraMesh mesh_;
   bool ambient_ = false;
@@ -61,8 +65,9 @@ class Renderer {
 
 // A camera render's read-back RGBA: every pixel's alpha is 1, the clear's, kept by the first
 // pass (alpha 1) and the direct pass (adding alpha 0). One that is not came from a GPU that
-// dropped the draws (an H100 read back zeros, alpha too, with no GL error: docs/adaptive.md):
-// throws, so a run fails with one error line instead of writing a black image and exiting 0.
+// dropped the draws (an H100 read back zeros, alpha too, with no GL error, after an 11 s draw,
+// which src/output/DrawBands.h now prevents): throws, so a run fails with one error line
+// instead of writing a black image and exiting 0.
 void requireDrawn(const std::vector<float>& rgba);
 
 }  // namespace hemirad
