@@ -16,7 +16,7 @@
 #include "shooter_tree.glsl"
 #include "near_gather.glsl"
 #endif
-in vec3 vPosition;
+in vec3 vPosition, vNormal;
 uniform bool directPass;
 #endif
 
@@ -59,12 +59,13 @@ void main() {
   float total = lookUp(vAtlas, chartOf(vPolygon), texel, weight, count);
 #ifdef PER_PIXEL_DIRECT
   if (directPass) {  // added to the first pass's colour
-    vec3 add = directLight(vPosition, vPolygon);
+    // A curved chart's receivers take the smooth normal, as its elements do (Atlas::normalOf).
+    vec3 n = vNormal == vec3(0.0) ? polygons[vPolygon].normal.xyz : normalize(vNormal);
+    vec3 add = directLight(vPosition, n, vPolygon);
 #ifdef NEAR_GATHER
     for (int k = 0; k < count; ++k) weight[k] /= total;
     add += polygons[vPolygon].reflectance.rgb *
-           nearCorrection(ontoPlane(vPosition, vPolygon), polygons[vPolygon].normal.xyz, vPolygon,
-                          Lookup(texel, weight, count));
+           nearCorrection(ontoPlane(vPosition, vPolygon), n, vPolygon, Lookup(texel, weight, count));
 #endif
     color = vec4(add, 0.0);
     return;

@@ -2,11 +2,12 @@
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec2 atlasCoord;
 layout(location = 2) in uint polygon;
+layout(location = 3) in vec3 normal;  // a curved chart's smooth normal, else 0
 uniform mat4 viewProjection;
 out vec2 vAtlas;
 flat out uint vPolygon;
 #ifdef PER_PIXEL_DIRECT
-out vec3 vPosition;
+out vec3 vPosition, vNormal;
 invariant gl_Position;  // both passes find the same depths (GL_EQUAL)
 #endif
 
@@ -15,6 +16,6 @@ void main() {
   vAtlas = atlasCoord;
   vPolygon = polygon;
 #ifdef PER_PIXEL_DIRECT
-  vPosition = position;
+  vPosition = position, vNormal = normal;
 #endif
 }

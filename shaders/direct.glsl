@@ -92,10 +92,10 @@ bool pieceHidden(vec3 x, uint base) {
   return false;
 }
 
-// rho times the irradiance / pi from every emitter at point x of `polygon` (its plane's front):
-// the direct part of B there. One-sided emitters: a piece lights only points in front of it.
-vec3 directLight(vec3 x, uint polygon) {
-  vec3 n = polygons[polygon].normal.xyz;
+// rho times the irradiance / pi from every emitter at point x of `polygon`, normal n (its plane's,
+// or a curved chart's smooth normal): the direct part of B there. One-sided emitters: a piece
+// lights only points in front of it.
+vec3 directLight(vec3 x, vec3 n, uint polygon) {
   x = ontoPlane(x, polygon);  // interpolation leaves ~1e-7
   vec3 sum = vec3(0.0);
   for (uint e = 0u; e < emitterPieces; ++e) {

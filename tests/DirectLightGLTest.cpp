@@ -14,9 +14,11 @@
 #include "cpu/ExactFormFactor.h"
 #include "src/output/DirectLight.h"
 #include "src/output/ImageFile.h"
+#include "src/output/Renderer.h"
 #include "src/reference/ErrorTable.h"
 #include "src/reference/PixelRegions.h"
 #include "src/scene/SceneLoader.h"
+#include "src/scene/SmoothNormals.h"
 #include "src/solver/Bvh.h"
 #include "tests/support/Support.h"
 
@@ -233,4 +235,58 @@ TEST_CASE("Under per-pixel direct light adaptive rounds split on the indirect li
   };
   CHECK(splitsOfRound0("atlas") > 0);
   CHECK(splitsOfRound0("per-pixel") == 0);
+}
+
+TEST_CASE(
+    "Per-pixel direct light on a curved chart takes the smooth normal: a 24-sided cylinder's pixels are rho E "
+    "times the exact point form factor at the interpolated normal, not the facet's",
+    "[gl][direct]") {
+  test::backend();
+  Scene scene;
+  const int lampMaterial = test::material(scene, 0.0, 1.0), grey = test::material(scene, 0.5, 0.0);
+  // A square lamp at x = 1.5 facing -x, beside a cylinder (radius 0.4) standing at the origin.
+  REQUIRE(scene.addPolygon({{1.5, 0.2, -0.4}, {1.5, 0.2, 0.4}, {1.5, 1.0, 0.4}, {1.5, 1.0, -0.4}}, lampMaterial,
+                           scene.addObject("lamp")));
+  test::addCylinder(scene, {0.0, 0.0, 0.0}, 0.4, 1.2, 24, grey, scene.addObject("cylinder"));
+  const Atlas atlas = buildAtlas(scene, 0.02, 16384, 0, kDefaultChartAngle);
+  REQUIRE(!atlas.vertexNormals.empty());
+  SolverState state(scene, atlas);
+  const DirectLight light(scene, state.farDistance);
+  Renderer renderer(state);
+  renderer.show(std::vector<glm::vec4>(atlas.polygonOf.size(), glm::vec4(0.0f)));  // no indirect light: convex
+  renderer.usePerPixelDirect(light);
+  const int size = 96;
+  const Camera camera{{1.3, 0.6, 1.3}, {0.0, 0.6, 0.0}, {0, 1, 0}, 40.0};
+  const Image image = renderer.render(camera, size, size, 1);
+
+  const Bvh bvh(scene);
+  const ScenePolygon& lamp = scene.polygons()[0];
+  const cpu::Polygon shape(lamp.vertices.begin(), lamp.vertices.end());
+  const Camera::PixelRays rays = camera.pixelRays(size, size);
+  double worst = 0, worstFlat = 0;
+  int n = 0;
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const glm::dvec3 d = glm::normalize(rays.corner + (x + 0.5) * rays.dx + (size - 1 - y + 0.5) * rays.dy);
+      const auto hit = bvh.intersect(glm::vec3(camera.eye), glm::vec3(d), kNoPolygon);
+      if (!hit || hit->polygon == 0) continue;
+      const ScenePolygon& facet = scene.polygons()[hit->polygon];
+      const glm::dvec3 p = camera.eye + double(hit->t) * d;
+      const glm::dvec3 smooth = smoothNormalAt(facet, atlas.vertexNormals[hit->polygon], p);
+      // The lamp wholly above both the facet's and the smooth tangent plane: F needs no clipping, nothing occludes.
+      bool above = true;
+      for (const glm::dvec3& v : lamp.vertices)
+        above = above && glm::dot(v - p, smooth) > 0.01 && glm::dot(v - p, facet.normal) > 0.01;
+      if (!above) continue;
+      const double exact = 0.5 * cpu::pointToPolygon(p, smooth, shape, lamp.normal);
+      const double flat = 0.5 * cpu::pointToPolygon(p, facet.normal, shape, lamp.normal);
+      const double got = image.rgb[(std::size_t(y) * size + x) * 3 + 1];
+      worst = std::max(worst, std::abs(got - exact) / exact),
+      worstFlat = std::max(worstFlat, std::abs(flat - exact) / exact);
+      ++n;
+    }
+  INFO(n << " pixels; worst relative error " << worst << ", the facet normal's " << worstFlat);
+  REQUIRE(n > 300);
+  CHECK(worstFlat > 0.01);  // the facets' normals are that far off: the test can tell them apart
+  CHECK(worst < 1e-3);
 }

@@ -322,8 +322,9 @@ Atlas placeCharts(const Scene& scene, std::vector<ChartShape>& shapes, const Lay
   atlas.polygonOf.assign(texels, kNoPolygon);
   atlas.normalOf.assign(texels, glm::vec3(0.0f));
   const bool curved = std::any_of(shapes.begin(), shapes.end(), [](const ChartShape& c) { return !c.group.planar; });
-  const VertexNormals smooth = curved ? smoothVertexNormals(scene, chartAngle) : VertexNormals{};
-  for (size_t id = 0; id < shapes.size(); ++id) cutChart(scene, shapes[id], atlas.charts[id], smooth, atlas);
+  if (curved) atlas.vertexNormals = smoothVertexNormals(scene, chartAngle);
+  for (size_t id = 0; id < shapes.size(); ++id)
+    cutChart(scene, shapes[id], atlas.charts[id], atlas.vertexNormals, atlas);
   return atlas;
 }
 

@@ -68,6 +68,9 @@ class Atlas {
   // Per atlas texel: area-weighted mean piece normal (on a curved chart, of the smooth normals at
   // the pieces, src/scene/SmoothNormals.h).
   std::vector<glm::vec3> normalOf;
+  // Per polygon, per vertex, its smooth normal where the atlas has a curved chart
+  // (src/scene/SmoothNormals.h; what normalOf weighs in there); empty otherwise.
+  std::vector<std::vector<glm::dvec3>> vertexNormals;
   std::size_t elements = 0;
 
   // The chart of texel t, or kNoPolygon.

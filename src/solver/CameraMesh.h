@@ -13,7 +13,8 @@ namespace hemirad {
 class CameraMesh {
  public:
   CameraMesh(const Scene& scene, const Atlas& atlas);
-  // Binds the vertex array and draws every triangle (attributes 0 position, 1 atlas, 2 polygon).
+  // Binds the vertex array and draws every triangle (attributes 0 position, 1 atlas, 2 polygon,
+  // 3 the smooth normal on a curved chart, else 0).
   void draw() const;
   // A camera's reversed-Z view-projection (gl/State.h, DepthRange::Reversed) whose near plane lies in front
   // of the whole scene: half the eye's distance to the scene's bounds, or a millionth of the
