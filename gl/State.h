@@ -32,10 +32,10 @@ struct RasterState {
   DepthFunc depthFunc = DepthFunc::Less;
   DepthRange depthRange = DepthRange::Standard;
   bool depthWrite = true;
-  bool cullFaces = false;       // hemirad's faces occlude and are seen from both sides
-  bool clipDistance0 = false;   // gl_ClipDistance[0] (the item buffer's hemisphere)
-  bool additiveBlend = false;   // colour += fragment (instant radiosity sums VPL batches)
-  std::optional<Rect> scissor;  // draws only inside it
+  bool cullFaces = false;                      // hemirad's faces occlude and are seen from both sides
+  bool clipDistance0 = false;                  // gl_ClipDistance[0] (the item buffer's hemisphere)
+  bool additiveBlend = false;                  // colour += fragment (instant radiosity sums VPL batches)
+  std::optional<Rect> scissor = std::nullopt;  // draws only inside it
   void apply() const;
 };
 
