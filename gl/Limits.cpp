@@ -40,6 +40,10 @@ const Limits& limits() {
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
     l.storageBlockBytes = std::size_t(std::max<GLint64>(block, 0));
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &l.textureSize);
+    GLint color = 1, depth = 1;  // GL_SAMPLES lists the counts largest first
+    glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, GL_RGBA32F, GL_SAMPLES, 1, &color);
+    glGetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, GL_DEPTH_COMPONENT32F, GL_SAMPLES, 1, &depth);
+    l.cameraSamples = std::max(1, std::min(color, depth));
     cached = l;
   }
   return *cached;

@@ -12,6 +12,7 @@ struct Limits {
   unsigned workGroupCount[3] = {0, 0, 0};  // GL_MAX_COMPUTE_WORK_GROUP_COUNT
   std::size_t storageBlockBytes = 0;       // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
   int textureSize = 0;                     // GL_MAX_TEXTURE_SIZE
+  int cameraSamples = 1;  // the most samples of an RGBA32F and a DEPTH_COMPONENT32F multisample texture
 };
 
 // Queried at the first call after a backend loads its functions (needs a current context).

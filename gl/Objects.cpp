@@ -201,6 +201,24 @@ Texture::Texture(GLenum internalFormat, int width, int height, int layers)
   glTextureParameteri(id_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTextureParameteri(id_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
+Texture::Texture(GLenum internalFormat, int width, int height, Samples samples)
+    : width_(width), height_(height), format_(internalFormat) {
+  const TextureFormat* known = textureFormat(internalFormat);
+  const std::size_t bytes =
+      std::size_t(known ? known->bytes : 16) * std::size_t(width) * std::size_t(height) * std::size_t(samples.count);
+  allocate(
+      id_, true,
+      [&] {
+        glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &id_);
+        glTextureStorage2DMultisample(id_, samples.count, internalFormat, width, height, GL_TRUE);
+        glGetTextureLevelParameteriv(id_, 0, GL_TEXTURE_SAMPLES, &samples_);
+      },
+      [&] {
+        return fmt::format("a {} x {} x {}-sample {} texture ({})", width, height, samples.count,
+                           known ? known->name : "", formatBytes(double(bytes)));
+      });
+  allocation_ = Allocation(bytes);
+}
 void Texture::upload(GLenum format, GLenum type, const void* data) {
   glTextureSubImage2D(id_, 0, 0, 0, width_, height_, format, type, data);
 }

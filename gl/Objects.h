@@ -96,9 +96,16 @@ class Texture : public Handle<deleteTexture> {
   // A single-level 2D texture with nearest filtering (texel elements are fetched exactly);
   // with `layers`, a 2D array texture.
   Texture(GLenum internalFormat, int width, int height, int layers = 0);
+  // A multisampled 2D texture of `samples` samples a texel at the driver's fixed positions: a
+  // render target only (read it through a sampler2DMS).
+  struct Samples {
+    int count;
+  };
+  Texture(GLenum internalFormat, int width, int height, Samples samples);
   int width() const { return width_; }
   int height() const { return height_; }
   GLenum format() const { return format_; }
+  int samples() const { return samples_; }  // what the driver gave a multisampled one; else 1
   void upload(GLenum format, GLenum type, const void* data);
   void read(GLenum format, GLenum type, std::size_t bytes, void* out) const;
   void bindUnit(GLuint unit) const;
@@ -109,7 +116,7 @@ class Texture : public Handle<deleteTexture> {
   void clear(std::uint32_t value);  // a GL_R32UI texture
 
  private:
-  int width_ = 0, height_ = 0, layers_ = 0;
+  int width_ = 0, height_ = 0, layers_ = 0, samples_ = 1;
   GLenum format_ = 0;
   Allocation allocation_;
 };

@@ -16,7 +16,7 @@
 #include "shooter_tree.glsl"
 #include "near_gather.glsl"
 #endif
-in vec3 vPosition, vNormal;
+centroid in vec3 vPosition, vNormal;
 uniform bool directPass;
 #endif
 
@@ -24,7 +24,7 @@ layout(binding = SAMPLER_ATLAS_VALUES) uniform sampler2D radiosity;
 // Seed 004's display-only ambient term (ambient.comp): rho_j A is added to what is shown.
 layout(std430, binding = SSBO_AMBIENT) readonly buffer Ambient { vec4 ambient; };
 uniform bool addAmbient;
-in vec2 vAtlas;
+centroid in vec2 vAtlas;
 flat in uint vPolygon;
 layout(location = 0) out vec4 color;
 

@@ -4,10 +4,10 @@ layout(location = 1) in vec2 atlasCoord;
 layout(location = 2) in uint polygon;
 layout(location = 3) in vec3 normal;  // a curved chart's smooth normal, else 0
 uniform mat4 viewProjection;
-out vec2 vAtlas;
+centroid out vec2 vAtlas;  // centroid: inside the surface when MSAA covers a pixel in part
 flat out uint vPolygon;
 #ifdef PER_PIXEL_DIRECT
-out vec3 vPosition, vNormal;
+centroid out vec3 vPosition, vNormal;
 invariant gl_Position;  // both passes find the same depths (GL_EQUAL)
 #endif
 

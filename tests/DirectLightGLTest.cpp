@@ -36,8 +36,8 @@ Image directSolve(const std::string& scene, const std::string& camera, const std
   const std::string out = test::tempPath("direct.exr");
   const test::Run run =
       test::hemirad("solve " + scene + " --camera '" + camera + "' --width " + std::to_string(kDirectSize) +
-                    " --height " + std::to_string(kDirectSize) + " --supersample 1 --ambient off --quiet --direct " +
-                    mode + " --out " + out + " " + more);
+                    " --height " + std::to_string(kDirectSize) +
+                    " --supersample 1 --msaa 1 --ambient off --quiet --direct " + mode + " --out " + out + " " + more);
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
   return readImage(out);

@@ -202,7 +202,7 @@ TEST_CASE("solve --method instant writes the camera images and a report, and ref
   CHECK(r["escaped_fraction"].get<double>() >= 0);
   CHECK(r["clamp_bias"].get<double>() >= 0);
   for (const std::string& bad : std::vector<std::string>{"--atlas " + test::tempPath("a.exr"), "--vpls 0", "--shots 4",
-                                                         "--shading sideways", "--interleave 0"}) {
+                                                         "--shading sideways", "--interleave 0", "--msaa 4"}) {
     const test::Run refused = test::hemirad("solve " + scene + " --method instant --quiet " + bad);
     INFO(bad << ": " << refused.output);
     CHECK(refused.exitCode == 2);

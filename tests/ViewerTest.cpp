@@ -27,8 +27,8 @@ test::Run viewUnderXvfb(const std::string& args) {
       args);
 }
 
-// The viewer's last frame after `view ARGS` and solve's --image after `solve ARGS`; the viewer's
-// summary line must contain `summary`.
+// The viewer's last frame after `view ARGS` and solve's --image after `solve ARGS` (one sample a
+// pixel, as the viewer draws); the viewer's summary line must contain `summary`.
 std::pair<Image, Image> viewAndSolve(const std::string& viewArgs, const std::string& solveArgs,
                                      const std::string& summary, const std::string& name) {
   const std::string shown = test::tempPath(name + "-view.png"), solved = test::tempPath(name + "-solve.png");
@@ -36,7 +36,7 @@ std::pair<Image, Image> viewAndSolve(const std::string& viewArgs, const std::str
   INFO(view.output);
   REQUIRE(view.exitCode == 0);
   CHECK_THAT(view.output, Contains(summary));
-  test::Run solve = test::hemirad("solve " + solveArgs + " --supersample 1 --quiet --image " + solved);
+  test::Run solve = test::hemirad("solve " + solveArgs + " --supersample 1 --msaa 1 --quiet --image " + solved);
   INFO(solve.output);
   REQUIRE(solve.exitCode == 0);
   return {readImage(shown), readImage(solved)};

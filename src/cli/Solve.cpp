@@ -9,6 +9,7 @@
 #include <optional>
 #include <tuple>
 
+#include "gl/Limits.h"
 #include "src/base/AtomicFile.h"
 #include "src/base/Error.h"
 #include "src/base/Interrupt.h"
@@ -149,6 +150,7 @@ Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
                  const ShownRadiosity& shownOf, const std::vector<glm::vec4>& shown, RunInfo& run) {
   Renderer renderer(state);
   renderer.setAmbient(o.ambient.value_or(false) && method.ambient());
+  renderer.setMultisample(std::min(o.msaa.value_or(SolveOptions::kDefaultMsaa), gl::limits().cameraSamples));
   auto t0 = std::chrono::steady_clock::now();
   const bool image = !o.out.empty() || !o.image.empty();
   const std::vector<glm::vec4> direct =
@@ -266,6 +268,9 @@ int AtlasMethod::solve(const SolveOptions& o) const {
   auto backend = gl::createBackend(o.backend);
   if (o.backend.kind == gl::BackendKind::Auto)
     fmt::print(stderr, "hemirad: backend auto chose {} ({})\n", backend->name(), backend->renderer());
+  if (o.msaa.value_or(1) > gl::limits().cameraSamples)
+    throw InputError(fmt::format("--msaa {}: the {} backend ({}) offers at most {} samples a pixel", *o.msaa,
+                                 backend->name(), backend->renderer(), gl::limits().cameraSamples));
   Discretisation d = o.discretisation;
   SubdivideOptions subdivide = o.subdivide;
   if (subdivide.adaptive && !d.texelSize) {  // --elements is the final layout's count

@@ -307,6 +307,13 @@ std::vector<Flag> deviceAndOutputFlags() {
        "as `reference` estimates it); above 8 the framebuffer stays 8 x (or N's largest divisor up to 8) and "
        "is drawn again shifted, (N / that)^2 times (--method instant: at most 8)",
        CLI::Range(1, 64)},
+      {"--msaa", "N",
+       "Coverage samples in each supersample cell of the camera image (MSAA at the GPU's fixed positions): edges are "
+       "found at N x the "
+       "--supersample grid's samples while each cell's surface is shaded once, at its centroid; at most what the "
+       "backend offers for RGBA32F (llvmpipe: 4; walkthrough frames take 1); not with --method instant "
+       "(docs/adaptive.md#msaa)",
+       CLI::Validator(CLI::IsMember(std::vector<int>{1, 2, 4, 8, 16, 32})).description("1|2|4|8|16|32")},
       {"--exposure", "STOPS", "Exposure in stops over the automatic one", any},
       {"--ambient", "on|off",
        "Seed 004's ambient term R x (area-averaged unshot radiosity; weighted by received importance in importance- "

@@ -5,6 +5,7 @@
 #include "gl/Backend.h"
 #include "gl/Debug.h"
 #include "gl/State.h"
+#include "src/output/CameraTarget.h"
 #include "src/output/Supersample.h"
 #include "src/solver/ShaderContract.h"
 
@@ -104,14 +105,9 @@ void Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
 }
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
-  const SupersampleGrid grid(supersample);
+  const SupersampleGrid grid(supersample, CameraTarget::maxScale(samples_));
   const int w = width * grid.scale(), h = height * grid.scale();
-  gl::Texture color(GL_RGBA32F, w, h), depth(GL_DEPTH_COMPONENT32F, w, h);
-  gl::Framebuffer fbo;
-  fbo.attach(GL_COLOR_ATTACHMENT0, color);
-  fbo.attach(GL_DEPTH_ATTACHMENT, depth);
-  fbo.checkComplete("camera");
-
+  CameraTarget target(w, h, samples_);
   const glm::mat4 vp = mesh_.viewProjection(camera, double(width) / height);
   gl::barrier(gl::Barrier::TextureFetch);
   state_.bindScene();
@@ -123,11 +119,9 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   const gl::Program& program = direct ? directProgram_ : program_;
   program.set("addAmbient", int(ambient));
   std::vector<double> sums;
-  std::vector<float> rgba(size_t(w) * h * 4);
+  std::vector<float> rgba;
   for (int k = 0; k < grid.draws(); ++k) {
-    fbo.clearColor(0, 0, 0, 1);
-    fbo.clearDepth(0.0f);  // reversed depth: 0 is infinitely far
-    fbo.bind();
+    target.clearAndBind();
     gl::cameraView(w, h).apply();
     const glm::mat4 shifted = grid.shift(k, w, h) * vp;
     program.set("viewProjection", &shifted[0][0]);
@@ -136,7 +130,7 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
     mesh_.draw();
     gl::checkErrors("camera render");
     if (direct) drawDirect(shifted, w, h);
-    color.read(GL_RGBA, GL_FLOAT, rgba.size() * sizeof(float), rgba.data());
+    target.read(rgba);
     requireDrawn(rgba);
     grid.accumulate(rgba, width, height, 3, sums);
   }

@@ -43,6 +43,8 @@ class Renderer {
   void usePerPixelDirect(const DirectLight& direct, const NearGather* gather = nullptr);
   // How the per-pixel pass is split into bands (tests split it finely).
   void setBandPlan(const BandPlan& plan) { bands_ = plan; }
+  // `--msaa`: coverage samples a framebuffer pixel (src/output/CameraTarget.h); 1 by default.
+  void setMultisample(int samples) { samples_ = samples; }
 
  private:
   const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
@@ -59,6 +61,7 @@ class Renderer {
   gl::Buffer ambientTerm_;
   CameraMesh mesh_;
   bool ambient_ = false;
+  int samples_ = 1;
   std::unique_ptr<gl::Texture> shown_;
   std::unique_ptr<ShownRadiosity> stitcher_;  // stitchLive(), where what is shown differs from B
 };

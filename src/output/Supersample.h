@@ -13,7 +13,8 @@ namespace hemirad {
 class SupersampleGrid {
  public:
   static constexpr int kMaxScale = 8;  // a framebuffer of at most 8 x the image a side
-  explicit SupersampleGrid(int samplesPerSide);
+  // `maxScale` (<= kMaxScale): a smaller framebuffer, drawn more times (multisampled ones).
+  explicit SupersampleGrid(int samplesPerSide, int maxScale = kMaxScale);
   int scale() const { return scale_; }
   int draws() const { return passes_ * passes_; }
   // Draw k's (0 <= k < draws()) clip-space shift, to multiply the view-projection by on the left,

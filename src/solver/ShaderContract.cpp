@@ -19,6 +19,7 @@ const gl::Defines& contractDefines() {
     d.push_back({"SHAPE_STRIDE", fmt::format("{}u", kShapeStride)});
     d.push_back({"MAX_SPLIT_DEPTH", fmt::format("{}", kMaxSplitDepth)});
     d.push_back({"MAX_TEXEL_PIECES", fmt::format("{}u", kMaxTexelPieces)});
+    d.push_back({"MAX_CAMERA_SAMPLES", fmt::format("{}", kMaxCameraSamples)});
     d.push_back({"SEGMENT_TOLERANCE", fmt::format("{}", kSegmentTolerance)});
     // Shortest round-trip text: the literals the shaders held before, so the same floats.
     d.push_back({"LUMINANCE",
