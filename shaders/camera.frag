@@ -30,6 +30,24 @@ layout(location = 0) out vec4 color;
 
 // The texels the lookup blends at atlas coordinate a, their weights and the weights' sum (0: no
 // texel of the chart near).
+// p (on its polygon's plane) kept inside its convex polygon, 1e-4 of the polygon's size clear of
+// every edge. A partly covered cell's shading point can fall on or past its polygon's edge (on
+// llvmpipe, centroid interpolation along a crease), where a crease's other wall is seen edge-on
+// or from behind and the form factors to it vanish (the furnace: 6-12 % dark pixels along its
+// diagonal crease); a pixel centre that a symmetric view puts on a crease line, as well.
+vec3 insidePolygon(vec3 p, uint polygon) {
+  uvec4 v = polygons[polygon].vertices;
+  vec3 n = polygons[polygon].normal.xyz;
+  for (int pass = 0; pass < 2; ++pass)  // twice: a push off one edge may cross its neighbour
+    for (uint i = 0u; i < v.y; ++i) {
+      vec3 a = polygonVertex[v.x + i].xyz, b = polygonVertex[v.x + (i + 1u) % v.y].xyz;
+      vec3 inward = normalize(cross(n, b - a));
+      float clear = 1e-4 * length(b - a), d = dot(inward, p - a);
+      if (d < clear) p += (clear - d) * inward;
+    }
+  return p;
+}
+
 float lookUp(vec2 a, uint chart, out ivec2 texel[4], out float weight[4], out int count) {
   vec2 c = a - 0.5;
   ivec2 i0 = ivec2(floor(c));
@@ -61,11 +79,12 @@ void main() {
   if (directPass) {  // added to the first pass's colour
     // A curved chart's receivers take the smooth normal, as its elements do (Atlas::normalOf).
     vec3 n = vNormal == vec3(0.0) ? polygons[vPolygon].normal.xyz : normalize(vNormal);
-    vec3 add = directLight(vPosition, n, vPolygon);
+    vec3 x = insidePolygon(vPosition, vPolygon);
+    vec3 add = directLight(x, n, vPolygon);
 #ifdef NEAR_GATHER
     for (int k = 0; k < count; ++k) weight[k] /= total;
     add += polygons[vPolygon].reflectance.rgb *
-           nearCorrection(ontoPlane(vPosition, vPolygon), n, vPolygon, Lookup(texel, weight, count));
+           nearCorrection(ontoPlane(x, vPolygon), n, vPolygon, Lookup(texel, weight, count));
 #endif
     color = vec4(add, 0.0);
     return;
