@@ -73,7 +73,7 @@ void Commands::addSolve() {
   add(s, "--width", solve.width);
   add(s, "--height", solve.height);
   add(s, "--supersample", solve.supersample);
-  add(s, "--msaa", solve.msaa, fmt::format("{}", SolveOptions::kDefaultMsaa));
+  add(s, "--msaa", solve.msaa, fmt::format("{}, or the backend's most if fewer", SolveOptions::kDefaultMsaa));
   add(s, "--exposure", solve.exposure);
   add(s, "--ambient", solve.ambient, "off; on for --camera-path frames");
   add(s, "--subdivide", solve.subdivide.adaptive);

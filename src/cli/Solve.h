@@ -26,10 +26,10 @@ struct SolveOptions {
   gl::BackendOptions backend;
   std::optional<std::string> camera;
   int width = 512, height = 512, supersample = 2;
-  // Coverage samples a supersample cell (src/output/CameraTarget.h); unset: kDefaultMsaa, or 1
-  // where a method draws its own images (--method instant).
+  // Coverage samples a supersample cell (src/output/CameraTarget.h); unset: kDefaultMsaa or the
+  // backend's most if fewer (llvmpipe: 4), or 1 where a method draws its own images (instant).
   std::optional<int> msaa;
-  static constexpr int kDefaultMsaa = 4;  // every GL 4.5 driver's least GL_MAX_SAMPLES, llvmpipe's most
+  static constexpr int kDefaultMsaa = 8;  // the H100's best edges: 16 and 32 find them worse
   double exposure = 0;                    // stops over the automatic exposure
   // Seed 004's ambient term on the camera images (never on B, report, atlas, PLY): a preview's device,
   // so on for --camera-path frames and off for a solve's own images unless given (issue 31).

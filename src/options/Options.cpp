@@ -309,10 +309,9 @@ std::vector<Flag> deviceAndOutputFlags() {
        CLI::Range(1, 64)},
       {"--msaa", "N",
        "Coverage samples in each supersample cell of the camera image (MSAA at the GPU's fixed positions): edges are "
-       "found at N x the "
-       "--supersample grid's samples while each cell's surface is shaded once, at its centroid; at most what the "
-       "backend offers for RGBA32F (llvmpipe: 4; walkthrough frames take 1); not with --method instant "
-       "(docs/adaptive.md#msaa)",
+       "found at N x the --supersample grid's samples while each cell's surface is shaded once, at its centroid "
+       "(llvmpipe offers 4; walkthrough frames and the viewer take 1; not with --method instant; "
+       "docs/adaptive.md#msaa)",
        CLI::Validator(CLI::IsMember(std::vector<int>{1, 2, 4, 8, 16, 32})).description("1|2|4|8|16|32")},
       {"--exposure", "STOPS", "Exposure in stops over the automatic one", any},
       {"--ambient", "on|off",

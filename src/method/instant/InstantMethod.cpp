@@ -88,7 +88,8 @@ class InstantMethod final : public MethodUnit {
           "--atlas, --ply and --gltf need radiosity per element; --method instant shades camera pixels "
           "only (--out, --image)");
     if (!o.checkpoint.empty() || !o.resume.empty()) throw InputError("--method instant has nothing to checkpoint");
-    if (o.msaa) throw InputError("--msaa: --method instant shades every sample of its G-buffer (use --supersample)");
+    if (o.msaa.value_or(1) > 1)
+      throw InputError("--msaa: --method instant shades every sample of its G-buffer (use --supersample)");
     // Its deferred passes rebuild each sample's ray from the pixel grid: no shifted draws.
     if (o.supersample > SupersampleGrid::kMaxScale)
       throw InputError(fmt::format("--supersample {}: --method instant samples at most {} a pixel side", o.supersample,
