@@ -10,6 +10,7 @@
 #include "src/output/Renderer.h"
 #include "src/reference/PixelRegions.h"
 #include "src/scene/SceneLoader.h"
+#include "tests/support/CornellView.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
@@ -27,22 +28,18 @@ TEST_CASE(
     "that one triangle covers as they were",
     "[gl][camera][direct]") {
   test::backend();
-  const Scene scene = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
-  const Atlas atlas = buildAtlas(scene, 60.0);
-  SolverState state(scene, atlas);
-  const std::vector<glm::vec4> sent(atlas.polygonOf.size(), glm::vec4(0.05f, 0.04f, 0.03f, 0.0f));
-  const DirectLight light(scene, state.farDistance);
-  const Camera camera = resolveCamera(scene, "");
-  Renderer renderer(state);
-  renderer.show(sent);
-  renderer.usePerPixelDirect(light);
+  const test::CornellView v;
+  const Camera& camera = v.camera;
+  Renderer renderer(v.state);
+  renderer.show(v.sent);
+  renderer.usePerPixelDirect(v.light);
   const int size = 40;
   const Image fine = renderer.render(camera, size, size, 16);
   const Image plain = renderer.render(camera, size, size, 2);
   renderer.setMultisample(4);  // llvmpipe's most
   const Image msaa = renderer.render(camera, size, size, 2);
 
-  const PixelRegions regions = pixelRegions(scene, camera, size, size);
+  const PixelRegions regions = pixelRegions(v.scene, camera, size, size);
   double plainEdge = 0, msaaEdge = 0;
   int edges = 0, interiors = 0, same = 0;
   double worstInterior = 0;

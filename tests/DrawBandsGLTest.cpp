@@ -7,6 +7,7 @@
 #include "src/output/DrawBands.h"
 #include "src/output/Renderer.h"
 #include "src/scene/SceneLoader.h"
+#include "tests/support/CornellView.h"
 #include "tests/support/Support.h"
 
 using namespace hemirad;
@@ -51,16 +52,12 @@ TEST_CASE(
     "whole",
     "[gl][camera][direct]") {
   test::backend();
-  const Scene scene = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));
-  const Atlas atlas = buildAtlas(scene, 60.0);
-  SolverState state(scene, atlas);
-  const std::vector<glm::vec4> sent(atlas.polygonOf.size(), glm::vec4(0.05f, 0.04f, 0.03f, 0.0f));
-  const DirectLight light(scene, state.farDistance);
-  const NearGather gather(scene, atlas, sent);
-  const Camera camera = resolveCamera(scene, "");
-  Renderer renderer(state);
-  renderer.show(sent);
-  renderer.usePerPixelDirect(light, &gather);
+  const test::CornellView v;
+  const NearGather gather(v.scene, v.atlas, v.sent);
+  const Camera& camera = v.camera;
+  Renderer renderer(v.state);
+  renderer.show(v.sent);
+  renderer.usePerPixelDirect(v.light, &gather);
   renderer.setBandPlan({.firstTiles = 100, .maxTiles = 100});  // 160^2 pixels: 9 tiles in one band
   const Image whole = renderer.render(camera, 40, 40, 4);
   renderer.setBandPlan({.seconds = 1e-9, .firstTiles = 1, .maxTiles = 1});  // 9 bands
