@@ -7,7 +7,9 @@
 #include <cmath>
 
 #include "gl/Limits.h"
+#include "src/output/CameraTarget.h"
 #include "src/output/Renderer.h"
+#include "src/output/Supersample.h"
 #include "src/reference/PixelRegions.h"
 #include "src/scene/SceneLoader.h"
 #include "tests/support/CornellView.h"
@@ -86,4 +88,26 @@ TEST_CASE(
     CHECK_THAT(run.output, Catch::Contains(message));
     CHECK(std::count(run.output.begin(), run.output.end(), '\n') == 1);
   }
+}
+
+TEST_CASE("MSAA never meets the grid's shifted draws: one framebuffer of N x the image, else one sample a cell",
+          "[camera]") {
+  // 256^2: 4 x 4 and 8 x 8 cells of 8 samples fit one framebuffer (8.4 M and 33.6 M samples).
+  CHECK(cameraPlan(256, 256, 4, 8, 16384).scale == 4);
+  CHECK(cameraPlan(256, 256, 4, 8, 16384).samples == 8);
+  CHECK(cameraPlan(256, 256, 8, 8, 16384).scale == 8);
+  // 16 x 16 cells of 8 samples would be 134 M samples: the grid alone, at 8 x and 4 draws.
+  const CameraPlan fine = cameraPlan(256, 256, 16, 8, 16384);
+  CHECK(fine.samples == 1);
+  CHECK(fine.scale == 8);
+  CHECK(SupersampleGrid(16, fine.scale).draws() == 4);
+  // Past the GPU's texture size, the same; and a single-sampled plan is the grid's own.
+  CHECK(cameraPlan(2048, 2048, 8, 4, 8192).samples == 1);
+  CHECK(cameraPlan(512, 512, 32, 1, 16384).scale == SupersampleGrid(32).scale());
+  for (int n = 1; n <= 64; ++n)
+    for (int m : {2, 4, 8}) {
+      const CameraPlan p = cameraPlan(64, 48, n, m, 16384);
+      INFO("N " << n << ", M " << m);
+      CHECK((p.samples == 1 || SupersampleGrid(n, p.scale).draws() == 1));
+    }
 }

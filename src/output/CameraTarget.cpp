@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "gl/Backend.h"
 #include "gl/State.h"
 #include "src/output/Supersample.h"
@@ -34,10 +36,12 @@ CameraTarget::CameraTarget(int width, int height, int samples)
   resolve_.emplace(computeProgram("resolve.comp"));
 }
 
-int CameraTarget::maxScale(int samples) {
-  int scale = SupersampleGrid::kMaxScale;
-  while (scale > 1 && scale * scale * samples > SupersampleGrid::kMaxScale * SupersampleGrid::kMaxScale) --scale;
-  return scale;
+CameraPlan cameraPlan(int width, int height, int supersample, int samples, int maxTextureSize) {
+  const int n = std::max(1, supersample);
+  const std::size_t all = std::size_t(width) * n * std::size_t(height) * n * std::size_t(std::max(1, samples));
+  if (samples > 1 && all <= CameraPlan::kMaxSamples && std::max(width, height) * n <= maxTextureSize)
+    return {n, samples};
+  return {SupersampleGrid(n).scale(), 1};
 }
 
 void CameraTarget::clearAndBind() {

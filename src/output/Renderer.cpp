@@ -4,6 +4,7 @@
 
 #include "gl/Backend.h"
 #include "gl/Debug.h"
+#include "gl/Limits.h"
 #include "gl/State.h"
 #include "src/output/CameraTarget.h"
 #include "src/output/Supersample.h"
@@ -105,9 +106,10 @@ void Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
 }
 
 Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
-  const SupersampleGrid grid(supersample, CameraTarget::maxScale(samples_));
+  const CameraPlan plan = cameraPlan(width, height, supersample, samples_, gl::limits().textureSize);
+  const SupersampleGrid grid(supersample, plan.scale);
   const int w = width * grid.scale(), h = height * grid.scale();
-  CameraTarget target(w, h, samples_);
+  CameraTarget target(w, h, plan.samples);
   const glm::mat4 vp = mesh_.viewProjection(camera, double(width) / height);
   gl::barrier(gl::Barrier::TextureFetch);
   state_.bindScene();

@@ -9,7 +9,7 @@ namespace hemirad {
 
 SupersampleGrid::SupersampleGrid(int samplesPerSide, int maxScale) {
   const int n = std::max(1, samplesPerSide);
-  for (int s = std::clamp(maxScale, 1, std::min(n, kMaxScale)); s >= 1; --s)  // the largest framebuffer factor that divides N
+  for (int s = std::clamp(maxScale, 1, n); s >= 1; --s)  // the largest framebuffer factor that divides N
     if (n % s == 0) {
       scale_ = s, passes_ = n / s;
       break;

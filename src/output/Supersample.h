@@ -13,7 +13,7 @@ namespace hemirad {
 class SupersampleGrid {
  public:
   static constexpr int kMaxScale = 8;  // a framebuffer of at most 8 x the image a side
-  // `maxScale` (<= kMaxScale): a smaller framebuffer, drawn more times (multisampled ones).
+  // `maxScale`: the largest framebuffer factor allowed (a multisampled render takes N itself).
   explicit SupersampleGrid(int samplesPerSide, int maxScale = kMaxScale);
   int scale() const { return scale_; }
   int draws() const { return passes_ * passes_; }
