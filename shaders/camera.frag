@@ -28,8 +28,6 @@ centroid in vec2 vAtlas;
 flat in uint vPolygon;
 layout(location = 0) out vec4 color;
 
-// The texels the lookup blends at atlas coordinate a, their weights and the weights' sum (0: no
-// texel of the chart near).
 // p (on its polygon's plane) kept inside its convex polygon, 1e-4 of the polygon's size clear of
 // every edge. A partly covered cell's shading point can fall on or past its polygon's edge (on
 // llvmpipe, centroid interpolation along a crease), where a crease's other wall is seen edge-on
@@ -48,6 +46,8 @@ vec3 insidePolygon(vec3 p, uint polygon) {
   return p;
 }
 
+// The texels the lookup blends at atlas coordinate a, their weights and the weights' sum (0: no
+// texel of the chart near).
 float lookUp(vec2 a, uint chart, out ivec2 texel[4], out float weight[4], out int count) {
   vec2 c = a - 0.5;
   ivec2 i0 = ivec2(floor(c));
