@@ -308,9 +308,10 @@ std::vector<Flag> deviceAndOutputFlags() {
        "is drawn again shifted, (N / that)^2 times (--method instant: at most 8)",
        CLI::Range(1, 64)},
       {"--msaa", "N",
-       "Coverage samples in each supersample cell of the camera image (MSAA at the GPU's fixed positions): edges are "
+       "Coverage samples in each supersample cell of --out and --image (MSAA at the GPU's fixed positions): edges are "
        "found at N x the --supersample grid's samples while each cell's surface is shaded once, at its centroid "
-       "(llvmpipe offers 4; walkthrough frames and the viewer take 1; not with --method instant; "
+       "(llvmpipe offers 4; walkthrough and animation frames, the viewer and validate's figures take 1; not with "
+       "--method instant; "
        "docs/adaptive.md#msaa)",
        CLI::Validator(CLI::IsMember(std::vector<int>{1, 2, 4, 8, 16, 32})).description("1|2|4|8|16|32")},
       {"--exposure", "STOPS", "Exposure in stops over the automatic one", any},
