@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "gl/Limits.h"
 #include "src/output/CameraTarget.h"
@@ -87,6 +90,19 @@ TEST_CASE(
     CHECK(run.exitCode == 2);
     CHECK_THAT(run.output, Catch::Contains(message));
     CHECK(std::count(run.output.begin(), run.output.end(), '\n') == 1);
+  }
+  // The report says what the image drew: the default (8, or the backend's most) however fine the
+  // grid that fits one framebuffer (48^2 of 16 x 16 cells), or what --msaa asked.
+  const std::string report = test::tempPath("msaa.json");
+  for (const auto& [flags, samples] : std::vector<std::pair<std::string, int>>{
+           {"", std::min(8, most)}, {"--msaa 1", 1}, {"--supersample 16", std::min(8, most)}}) {
+    const test::Run run =
+        test::hemirad("solve " + cornell + " --elements 300 --shots 20 --width 48 --height 48 " + "--quiet --out " +
+                      test::tempPath("m.exr") + " --report " + report + " " + flags);
+    INFO(flags << ": " << run.output);
+    REQUIRE(run.exitCode == 0);
+    const nlohmann::json r = nlohmann::json::parse(std::ifstream(report));
+    CHECK(r["camera_image"]["msaa"] == samples);
   }
 }
 

@@ -155,9 +155,12 @@ Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
   const bool image = !o.out.empty() || !o.image.empty();
   const std::vector<glm::vec4> direct =
       image ? method.directOnly(camera, double(o.width) / o.height) : std::vector<glm::vec4>{};
+  run.supersample = o.supersample;
   if (direct.empty()) {
     renderer.show(shown);
-    return renderer.render(camera, o.width, o.height, o.supersample);
+    Image view = renderer.render(camera, o.width, o.height, o.supersample);
+    run.msaa = renderer.lastSamples();
+    return view;
   }
   renderer.show(shownOf(indirectPart(solved, direct)));
   const DirectLight light(scene, state.farDistance);
@@ -168,6 +171,7 @@ Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
   t0 = std::chrono::steady_clock::now();
   Image view = renderer.render(camera, o.width, o.height, o.supersample);
   run.directPixelsMs = msSince(t0);
+  run.msaa = renderer.lastSamples();
   return view;
 }
 

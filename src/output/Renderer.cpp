@@ -110,6 +110,7 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   const SupersampleGrid grid(supersample, plan.scale);
   const int w = width * grid.scale(), h = height * grid.scale();
   CameraTarget target(w, h, plan.samples);
+  lastSamples_ = plan.samples;
   const glm::mat4 vp = mesh_.viewProjection(camera, double(width) / height);
   gl::barrier(gl::Barrier::TextureFetch);
   state_.bindScene();

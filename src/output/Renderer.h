@@ -45,6 +45,8 @@ class Renderer {
   void setBandPlan(const BandPlan& plan) { bands_ = plan; }
   // `--msaa`: coverage samples a framebuffer pixel (src/output/CameraTarget.h); 1 by default.
   void setMultisample(int samples) { samples_ = samples; }
+  // The samples a cell the last render drew: setMultisample's, or 1 where cameraPlan fell back.
+  int lastSamples() const { return lastSamples_; }
 
  private:
   const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
@@ -61,7 +63,7 @@ class Renderer {
   gl::Buffer ambientTerm_;
   CameraMesh mesh_;
   bool ambient_ = false;
-  int samples_ = 1;
+  int samples_ = 1, lastSamples_ = 1;
   std::unique_ptr<gl::Texture> shown_;
   std::unique_ptr<ShownRadiosity> stitcher_;  // stitchLive(), where what is shown differs from B
 };

@@ -24,11 +24,12 @@ struct RunInfo {
   std::string direct;
   std::string finalGather;  // with direct "per-pixel": "off" or "near"
   double directSplitMs = 0, directPixelsMs = 0;
-  double refineNear = 0;         // progressive: receivers nearer than this many shooter sides see its parts
-  std::string visibility;        // progressive: "item-buffer" or "bvh" (--visibility)
-  unsigned importanceShots = 0;  // importance-driven solves
-  unsigned deliveryShots = 0;    // perspective-driven solves: item buffers that delivered stored entries
-  unsigned fovDecayShots = 0;    // ... and their decay interval
+  int supersample = 0, msaa = 0;  // the camera image's N x N cells and the samples a cell drawn (0: none)
+  double refineNear = 0;          // progressive: receivers nearer than this many shooter sides see its parts
+  std::string visibility;         // progressive: "item-buffer" or "bvh" (--visibility)
+  unsigned importanceShots = 0;   // importance-driven solves
+  unsigned deliveryShots = 0;     // perspective-driven solves: item buffers that delivered stored entries
+  unsigned fovDecayShots = 0;     // ... and their decay interval
   std::size_t elements = 0, itemTriangles = 0;
   std::size_t charts = 0;      // src/scene/Charts.h
   std::size_t clusters = 0;    // of them, clusters of small charts (src/scene/Clusters.h)
