@@ -28,8 +28,9 @@ centroid in vec2 vAtlas;
 flat in uint vPolygon;
 layout(location = 0) out vec4 color;
 
-// p (on its polygon's plane) kept inside its convex polygon, 1e-4 of the polygon's size clear of
-// every edge. A partly covered cell's shading point can fall on or past its polygon's edge (on
+#ifdef PER_PIXEL_DIRECT
+// p (on its polygon's plane) kept inside its convex polygon, clear of each edge by 1e-4 of its
+// length. A partly covered cell's shading point can fall on or past its polygon's edge (on
 // llvmpipe, centroid interpolation along a crease), where a crease's other wall is seen edge-on
 // or from behind and the form factors to it vanish (the furnace: 6-12 % dark pixels along its
 // diagonal crease); a pixel centre that a symmetric view puts on a crease line, as well.
@@ -45,6 +46,7 @@ vec3 insidePolygon(vec3 p, uint polygon) {
     }
   return p;
 }
+#endif
 
 // The texels the lookup blends at atlas coordinate a, their weights and the weights' sum (0: no
 // texel of the chart near).

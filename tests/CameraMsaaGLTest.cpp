@@ -23,7 +23,7 @@ using namespace hemirad;
 namespace {
 
 double pixelLuminance(const Image& img, std::size_t p) {
-  return 0.2126 * img.rgb[3 * p] + 0.7152 * img.rgb[3 * p + 1] + 0.0722 * img.rgb[3 * p + 2];
+  return luminance(glm::dvec3(img.rgb[3 * p], img.rgb[3 * p + 1], img.rgb[3 * p + 2]));
 }
 
 }  // namespace
