@@ -252,6 +252,47 @@ TEST_CASE("Lookups across leaves of different density show no step once seams ar
   CHECK(stitched < 4 * ramp);  // measured 1.8: a kink where the densities meet, no step
 }
 
+TEST_CASE("A limited slope follows a ramp as the central difference does, and stays flat beside a kink and at a peak",
+          "[cpu][adaptive]") {
+  // The near gather's linear profiles (src/output/NearGather.cpp): a central difference beside a
+  // kink (an umbra beside its penumbra) would carry the ramp's slope into the flat side.
+  const Scene scene = shadowScene();
+  const Atlas atlas = buildAtlas(scene, kTexel);
+  const std::uint32_t floor = atlas.chartOf[0];
+  auto slopes = [&](auto profile, double x) {  // at the floor texel whose centre is nearest world x, z ~ 0
+    std::vector<glm::vec4> B(atlas.positionArea.size(), glm::vec4(0.0f));
+    glm::ivec2 at(-1);
+    double best = 1e9;
+    for (int y = 0; y < atlas.height; ++y)
+      for (int t = 0; t < atlas.width; ++t) {
+        const std::size_t i = std::size_t(y) * atlas.width + t;
+        if (atlas.chartAt(i) != floor || atlas.positionArea[i].w <= 0) continue;
+        const glm::vec4 p = atlas.positionArea[i];
+        B[i] = glm::vec4(glm::vec3(float(profile(double(p.x)))), 0);
+        const double d = std::abs(p.x - x) + std::abs(p.z - 0.01);
+        if (d < best) best = d, at = {t, y};
+      }
+    return std::pair{luminanceSlope(atlas, B, at), luminanceSlope(atlas, B, at, SlopeRule::Limited)};
+  };
+  const double step = kTexel / 4;  // the ramps' change per texel
+  auto ramp = [](double x) { return 1 + x / 4; };
+  const auto [rampCentral, rampLimited] = slopes(ramp, 0.5);
+  CHECK(glm::length(rampCentral) == Approx(step).epsilon(1e-3));
+  CHECK(glm::length(rampLimited - rampCentral) < 1e-6);
+  const double x0 = 0.5 * kTexel;  // a texel centre (cells start at -2)
+  auto kink = [x0](double x) { return 1 + std::max(0.0, x - x0) / 4; };
+  const auto [kinkCentral, kinkLimited] = slopes(kink, x0);
+  CHECK(glm::length(kinkCentral) == Approx(step / 2).epsilon(1e-3));
+  CHECK(glm::length(kinkLimited) == 0);
+  const auto [upCentral, upLimited] = slopes(kink, x0 + kTexel);  // on the ramp: both follow it
+  CHECK(glm::length(upLimited) == Approx(step).epsilon(1e-3));
+  auto peak = [x0](double x) { return 2 - std::abs(x - x0) / 4; };
+  CHECK(glm::length(slopes(peak, x0).second) == 0);
+  const auto [edgeCentral, edgeLimited] = slopes(ramp, -2 + kTexel / 2);  // the chart's edge: one-sided
+  CHECK(glm::length(edgeLimited) == Approx(step).epsilon(1e-3));
+  CHECK(glm::length(edgeLimited - edgeCentral) < 1e-6);
+}
+
 // A round only decides where leaves split, which the first shots (the direct light) show: it
 // stops at kRoundConvergence, the final layout's solve at the stop rule (docs/adaptive.md).
 TEST_CASE("Adaptive rounds solve to the round convergence, not to the stop rule", "[gl][adaptive]") {
@@ -281,8 +322,9 @@ TEST_CASE("Adaptive rounds solve to the round convergence, not to the stop rule"
   for (const AdaptiveRound& r : layout.rounds) CHECK(r.convergence < 0.9);
 }
 
-TEST_CASE("On a refined layout the hemicube's item resolution is planned from the base cells, a disc map's from the finest",
-          "[cpu][adaptive]") {
+TEST_CASE(
+    "On a refined layout the hemicube's item resolution is planned from the base cells, a disc map's from the finest",
+    "[cpu][adaptive]") {
   const Scene scene = shadowScene();
   const Atlas base = buildAtlas(scene, kTexel);
   LeafTree tree(base, 2);

@@ -19,7 +19,7 @@ float lumIn(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t, s
 
 }  // namespace
 
-glm::vec2 luminanceSlope(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t) {
+glm::vec2 luminanceSlope(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t, SlopeRule rule) {
   const std::size_t i = std::size_t(t.y) * std::size_t(atlas.width) + std::size_t(t.x);
   const std::uint32_t chart = atlas.chartAt(i);
   const float here = float(luminance(glm::dvec3(B[i])));
@@ -27,12 +27,17 @@ glm::vec2 luminanceSlope(const Atlas& atlas, const std::vector<glm::vec4>& B, gl
   for (int axis = 0; axis < 2; ++axis) {
     const glm::ivec2 step = axis == 0 ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
     const float lo = lumIn(atlas, B, t - step, chart), hi = lumIn(atlas, B, t + step, chart);
-    if (lo >= 0 && hi >= 0)
-      slope[axis] = 0.5f * (hi - lo);
-    else if (hi >= 0)
+    if (lo >= 0 && hi >= 0) {
+      const float up = hi - here, down = here - lo;
+      if (rule == SlopeRule::Central)
+        slope[axis] = 0.5f * (hi - lo);
+      else  // minmod
+        slope[axis] = up * down <= 0 ? 0.0f : (std::abs(up) < std::abs(down) ? up : down);
+    } else if (hi >= 0) {
       slope[axis] = hi - here;
-    else if (lo >= 0)
+    } else if (lo >= 0) {
       slope[axis] = here - lo;
+    }
   }
   return slope;
 }

@@ -67,9 +67,17 @@ class GradientPass {
   gl::Program program_;
 };
 
+// How luminanceSlope takes a texel with neighbours on both sides: their central difference
+// (gradient.comp's), or minmod, as finite-volume schemes limit slopes: the smaller one-sided
+// difference where both agree in sign, else 0. A linear profile with a central difference
+// overshoots at a kink (an element in a contact shadow's umbra beside its penumbra: the
+// penumbra's slope, extrapolated into the umbra) and at an extremum; a limited one does not.
+enum class SlopeRule { Central, Limited };
+
 // The change of B's luminance per texel step at texel t along the atlas's x and y, within t's
-// chart: central differences, one-sided at the chart's edge, 0 without a neighbour (gradient.comp's).
-glm::vec2 luminanceSlope(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t);
+// chart: by `rule` inside it, one-sided at the chart's edge, 0 without a neighbour.
+glm::vec2 luminanceSlope(const Atlas& atlas, const std::vector<glm::vec4>& B, glm::ivec2 t,
+                         SlopeRule rule = SlopeRule::Central);
 
 // The same count on the CPU from a B readback (the pass's twin: tests, and adaptive rounds under
 // --direct per-pixel, which count B minus the direct light: src/cli/AdaptiveRounds.cpp).
