@@ -14,7 +14,6 @@
 #include "direct.glsl"
 #ifdef NEAR_GATHER
 #include "shooter_tree.glsl"
-#include "formfactor_moment.glsl"
 #include "near_gather.glsl"
 #endif
 centroid in vec3 vPosition, vNormal;

@@ -6,7 +6,7 @@
 // blends, with the lookup's weights, and the pixel gets the difference: near nodes' blend is
 // replaced by their exact light at the point, far ones are in neither and cancel. Needs
 // scene.glsl, hemisphere.glsl, formfactor.glsl, segment.glsl, bvh.glsl, bvh_segment.glsl,
-// direct.glsl (its segmentEps, the gather's tolerance), formfactor_moment.glsl and shooter_tree.glsl (the nodes; each node's stats[] hold NearGather's source: unshot.rgb the mean
+// direct.glsl (its segmentEps, the gather's tolerance) and shooter_tree.glsl (the nodes; each node's stats[] hold NearGather's source: unshot.rgb the mean
 // light its elements send on, lightCentre where it sits; a single element's viewCentre and range
 // its half-axes and slopes, leafProfile's).
 uniform uint gatherBlocks;    // nodes [0, gatherBlocks) are the roots
@@ -33,20 +33,23 @@ vec3 nodeOrigin(uint n) {
 
 // A single element's light is linear across it where NearGather gave it slopes (the sources'
 // last two vec4s: half-axes u and v, u x v along its normal, and the relative change of its light
-// per element step along each): S (1 + g . (y - c)) sends p exactly S F (1 + g . (ybar - c)), ybar
-// where p sees the element's light come from (formfactor_moment.glsl). Beside a crease the nearest
-// element of the other wall fills much of p's hemisphere, and its light falls toward the crease
-// (the wall's top is lit at grazing angles): a constant S overstates it by ~20 % at a fifth of an
-// element from the crease, and S at its quadrants' centres, taken before, by 43 % of the linear
-// part at a tenth and 107 % at a twentieth.
+// per element step along each): its quadrants send S (1 + slope . their offset), and p receives
+// S F times the mean of that over the quadrants, weighted by the share of F each subtends from p.
+// Beside a crease the nearest element of the other wall fills much of p's hemisphere, and its
+// light falls toward the crease (the wall's top is lit at grazing angles): a constant S would
+// overstate it by ~20 % at a fifth of an element from the crease.
 float leafProfile(uint n, vec3 p, vec3 np) {
   vec4 hu = stats[n].viewCentre, hv = stats[n].range;
   if (hu.xyz == vec3(0.0)) return 1.0;
-  vec3 c = nodes[n].centreArea.xyz, u = hu.xyz, v = hv.xyz, ybar;
-  if (kernelCentroid(p, np, c - u - v, c + u - v, c + u + v, c - u + v, normalize(cross(u, v)), ybar) <= 0.0)
-    return 1.0;
-  vec3 m = ybar - c;
-  return max(0.0, 1.0 + 0.5 * (hu.w * dot(m, u) / dot(u, u) + hv.w * dot(m, v) / dot(v, v)));
+  vec3 c = nodes[n].centreArea.xyz, ns = nodes[n].normal.xyz, u = 0.5 * hu.xyz, v = 0.5 * hv.xyz;
+  float sum = 0.0, weights = 0.0;
+  for (int q = 0; q < 4; ++q) {
+    float su = (q & 1) == 0 ? -1.0 : 1.0, sv = q < 2 ? -1.0 : 1.0;
+    vec3 qc = c + su * u + sv * v;  // the quadrant's centre; its corners qc -+ u -+ v
+    float F = pointToQuad(p, np, qc - u - v, qc + u - v, qc + u + v, qc - u + v, ns);
+    sum += F * max(0.0, 1.0 + 0.25 * (su * hu.w + sv * hv.w)), weights += F;
+  }
+  return weights > 0.0 ? sum / weights : 1.0;
 }
 
 // Light node n sends to point p (normal np, on chart `chart`): its mean S (linear across a single

@@ -49,8 +49,8 @@ TEST_CASE(
   const std::vector<ErrorRow> off = errorTable(scene, regions, readImage(plain), reference, Image{});
   const std::vector<ErrorRow> near = errorTable(scene, regions, readImage(gathered), reference, Image{});
   INFO("without:\n" << markdown(off) << "with --final-gather near:\n" << markdown(near));
-  // Measured (2 x 2 cells of 4 samples): corner band (1 px) bias +6.1 % -> +2.3 % (+2.2 % with the
-  // profile taken at the quadrants' centres and central slopes; +4.1 % with each element's light
+  // Measured (2 x 2 cells of 4 samples): corner band (1 px) bias +6.1 % -> +2.5 % (+2.2 % with
+  // central slopes, where the blocks' faces come out darker; +4.1 % with each element's light
   // constant across it), the edge band's mean |e| 6.6 -> 5.2 %; interiors 1.35 -> 1.38 % mean |e|.
   const ErrorRow &cornerOff = row(off, "corner band (1 px)"), &cornerNear = row(near, "corner band (1 px)");
   REQUIRE(cornerOff.pixels > 400);

@@ -48,7 +48,7 @@ std::vector<glm::vec4> nodeSources(const Atlas& atlas, const std::vector<Shooter
 // at the crease, more at its far side): per element of a planar projection chart, its half-axes
 // (the cell's sides / 2, u x v along the chart's normal) and its luminance's change per element
 // step along each, relative to its own (SlopeRule::Limited: minmod within its chart, one-sided at
-// the chart's edge), near_gather.glsl's linear profile (leafProfile). 0 elsewhere: constant.
+// the chart's edge), which near_gather.glsl spreads over its quadrants. 0 elsewhere: constant.
 void leafSlopes(const Atlas& atlas, const std::vector<ShooterNode>& nodes, const std::vector<glm::vec4>& sent,
                 std::vector<glm::vec4>& out) {
   for (std::size_t n = 0; n < nodes.size(); ++n) {
@@ -58,9 +58,9 @@ void leafSlopes(const Atlas& atlas, const std::vector<ShooterNode>& nodes, const
     const Chart& chart = atlas.charts[atlas.chartOf[nodes[n].polygon]];
     const double own = luminance(glm::dvec3(glm::vec3(sent[t])));
     if (chart.uvMapped() || !chart.planar || atlas.positionArea[t].w <= 0 || own <= 0) continue;
-    // Relative to its own light; at most 2, so the profile stays >= 0 to the element's edges (1/2 step).
+    // Relative to its own light; quadrants at +-1/4 step stay >= 0.
     const glm::vec2 change = luminanceSlope(atlas, sent, {r.x, r.y}, SlopeRule::Limited);
-    glm::dvec2 slope = glm::clamp(glm::dvec2(change) / own, -2.0, 2.0);
+    glm::dvec2 slope = glm::clamp(glm::dvec2(change) / own, -4.0, 4.0);
     glm::dvec3 hu = chart.frame.u * (chart.cellSize / 2), hv = chart.frame.v * (chart.cellSize / 2);
     if (glm::dot(glm::cross(hu, hv), glm::dvec3(nodes[n].normal)) < 0) std::swap(hu, hv), std::swap(slope.x, slope.y);
     out[n * 4 + 2] = glm::vec4(glm::vec3(hu), float(slope.x));
