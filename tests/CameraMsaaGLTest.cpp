@@ -97,7 +97,7 @@ TEST_CASE(
   for (const auto& [flags, samples] : std::vector<std::pair<std::string, int>>{
            {"", std::min(8, most)}, {"--msaa 1", 1}, {"--supersample 16", std::min(8, most)}}) {
     const test::Run run =
-        test::hemirad("solve " + cornell + " --elements 300 --shots 20 --width 48 --height 48 " + "--quiet --out " +
+        test::hemirad("solve " + cornell + " --elements 300 --shots 20 --width 48 --height 48 --quiet --out " +
                       test::tempPath("m.exr") + " --report " + report + " " + flags);
     INFO(flags << ": " << run.output);
     REQUIRE(run.exitCode == 0);

@@ -12,7 +12,9 @@ namespace hemirad {
 
 class SupersampleGrid {
  public:
-  static constexpr int kMaxScale = 8;  // a framebuffer of at most 8 x the image a side
+  // A single-sampled framebuffer of at most 8 x the image a side (a multisampled one of cameraPlan,
+  // src/output/CameraTarget.h, is bounded by its samples instead).
+  static constexpr int kMaxScale = 8;
   // `maxScale`: the largest framebuffer factor allowed (a multisampled render takes N itself).
   explicit SupersampleGrid(int samplesPerSide, int maxScale = kMaxScale);
   int scale() const { return scale_; }
