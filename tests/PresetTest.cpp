@@ -94,6 +94,22 @@ TEST_CASE("The default refines near its shooters where the solve stops at 0.99 o
   CHECK(at["radiosity_hash"] != off["radiosity_hash"]);  // the refinement changed something
 }
 
+// Under --final-gather near the camera regathers each pixel's near field from the elements, so auto
+// refines within kGatherRefineNear block sides: the same solve as that value given, bit for bit.
+TEST_CASE("Under the near gather the default refines within 16 block sides where the solve stops at 0.99 or more",
+          "[cli][preset]") {
+  const std::string common = "--elements 600 --item-res 64 --width 16 --height 16 --out " +
+                             test::tempPath("gather_plan.exr"),
+                    gather = " --direct per-pixel --final-gather near";
+  const nlohmann::json at = presetSolve(common + " --converge 0.99" + gather),
+                       given = presetSolve(common + " --converge 0.99 --refine-near 16"),
+                       below = presetSolve(common + " --converge 0.98" + gather);
+  CHECK(at["refine_near"] == kGatherRefineNear);
+  CHECK(at["preset"] == "fast with --item-res 64");
+  CHECK(at["radiosity_hash"] == given["radiosity_hash"]);
+  CHECK(below["refine_near"] == 0.0);
+}
+
 TEST_CASE("The seed003 preset reproduces the old default bitwise: seed 003's item buffer and level-1 shooting",
           "[heavy][cli][preset]") {  // CLI runs without memory-safety stakes: optimized only
   const std::string common = "--elements 1500 --shots 64";

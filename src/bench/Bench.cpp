@@ -372,7 +372,7 @@ void runInstantBench(const BenchOptions& o, gl::RenderBackend& backend, const ch
 
 // Time to convergence per scene, element count and shooters a pass, against the measured ceilings.
 void runProgressiveBench(const BenchOptions& o, gl::RenderBackend& backend, const char* date, const Say& say) {
-  const double refineNear = refineNearFor(o.progressive.refineNear, o.converge);  // what the solves run with
+  const double refineNear = refineNearFor(o.progressive.refineNear, o.converge, false);  // what the solves run with
   say(
       fmt::format("hemirad bench, {}, {} ({}), {}, converge {}, chart angle {}, preset {}: shoot level {}, item mesh "
                   "L{}, {} item buffer {}, visibility {}, refine near {:g}\n\n",

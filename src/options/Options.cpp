@@ -210,9 +210,10 @@ std::vector<Flag> sceneAndSolverFlags() {
            "by one, each from its own origin with exact visibility, and the far receivers what the near ones took "
            "less, so the shot is conserved (hierarchical radiosity's link refinement; 0: off; {0:g}: preset refined); "
            "auto: {0:g} where the solve stops at --converge {1:g} or more, whose accuracy needs it (every Cornell "
-           "object within 0.2 % of element-by-element shooting at 0.999), else 0 "
+           "object within 0.2 % of element-by-element shooting at 0.999), {2:g} there under --final-gather near, "
+           "whose images show the elements' errors beside contacts, else 0 "
            "(docs/design.md#near-shooter-refinement)",
-           kRefinedPlan.refineNear, kRefineFrom),
+           kRefinedPlan.refineNear, kRefineFrom, kGatherRefineNear),
        autoOr(kAutoRefineNear, 0, 16, true)},
       {"--visibility", "HOW",
        "Whether a receiver sees a shooter: item-buffer (seed 003: the shooter's item buffer nominates occluders, "

@@ -154,9 +154,9 @@ void checkResumable(const std::string& path, const nlohmann::json& savedAsWritte
           "parameters{}",
           path, key, it == saved.end() ? "(none)" : it->dump(), value.dump(),
           key == "refine_near" && it != saved.end() && it->is_number()
-              ? fmt::format(" (--refine-near auto refines from --converge {:g}: give --refine-near {:g} to go on "
-                            "as it began)",
-                            kRefineFrom, it->get<double>())
+              ? fmt::format(" (--refine-near auto refines from --converge {:g}, within {:g} block sides under "
+                            "--final-gather near: give --refine-near {:g} to go on as it began)",
+                            kRefineFrom, kGatherRefineNear, it->get<double>())
               : "");
   }
 }

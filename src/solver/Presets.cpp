@@ -53,9 +53,10 @@ std::string refineNearText(double refineNear) {
   return refineNear == kAutoRefineNear ? "auto" : fmt::format("{:g}", refineNear);
 }
 
-double refineNearFor(double refineNear, double targetConvergence) {
+double refineNearFor(double refineNear, double targetConvergence, bool nearGather) {
   if (refineNear != kAutoRefineNear) return refineNear;
-  return targetConvergence >= kRefineFrom ? kRefinedPlan.refineNear : 0.0;
+  if (targetConvergence < kRefineFrom) return 0.0;
+  return nearGather ? kGatherRefineNear : kRefinedPlan.refineNear;
 }
 
 std::string presetNames() {

@@ -55,8 +55,15 @@ inline constexpr std::string_view kDefaultPreset = "fast";
 // (docs/design.md#near-shooter-refinement). Hierarchical radiosity likewise refines links only
 // while their error is above the solution's tolerance.
 inline constexpr double kRefineFrom = 0.99;
-// refineNear as given, or for auto: kRefinedPlan's where targetConvergence >= kRefineFrom, else 0.
-double refineNearFor(double refineNear, double targetConvergence);
+// --refine-near auto under the camera's --final-gather near: the gather regathers each pixel's near
+// field from the elements, so what the solve got wrong at them beside contacts shows in the image.
+// Refining within 16 block sides took the Cornell box's floor p95 4.13 -> 2.89 % and its
+// interiors 0.68 -> 0.54 % (10k elements, 0.999, H200: run 2.1 -> 2.5 s; llvmpipe's solve 12 ->
+// 96 s; docs/adaptive.md#the-solves-shooting-plan-near-contacts-2026-12-06-h200).
+inline constexpr double kGatherRefineNear = 16.0;
+// refineNear as given, or for auto where targetConvergence >= kRefineFrom: kGatherRefineNear for
+// a solve whose images gather their near field, else kRefinedPlan's; below it 0.
+double refineNearFor(double refineNear, double targetConvergence, bool nearGather);
 std::string refineNearText(double refineNear);  // "auto" or the number
 // --item-res's or --shoot-level's value as printed: "auto" for its auto value, else the number
 // and `suffix` (a side in pixels: "^2").

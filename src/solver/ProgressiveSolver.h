@@ -61,6 +61,7 @@ struct ProgressiveSettings {
   std::string preset{kDefaultPreset};        // the preset the five above started from (the report names it)
   Visibility visibility = Visibility::Auto;
   HostTraceUse hostTrace = HostTraceUse::OnCpuDevice;  // who traces --visibility bvh's segments
+  bool nearGather = false;  // the camera's images regather their near field: auto refines further
   ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel, refineNear}; }
   // Starts from preset `name` (InputError for an unknown name): its five values and its name.
   void usePreset(std::string_view name) {
@@ -70,8 +71,9 @@ struct ProgressiveSettings {
     itemResolution = p.plan.itemResolution, shootLevel = p.plan.shootLevel, refineNear = p.plan.refineNear;
   }
   std::string presetLabel() const { return hemirad::presetLabel(preset, plan()); }
-  // The near-shooter refinement this solve runs with: refineNear, auto resolved by the stop rule.
-  double nearRefinement() const { return refineNearFor(refineNear, stop.targetConvergence); }
+  // The near-shooter refinement this solve runs with: refineNear, auto resolved by the stop rule
+  // and the images' near gather.
+  double nearRefinement() const { return refineNearFor(refineNear, stop.targetConvergence, nearGather); }
   // A block whose elements' unshot radiosity spans more than uniformRatio (least / largest
   // luminance) shoots its brightest quadrant, down to splitDepth levels (ShooterTree.h).
   // Depth 3 and 0.1: within 1 % of per-element shooting on the Cornell box's objects with

@@ -120,6 +120,7 @@ class ProgressiveMethod final : public AtlasMethod {
       throw InputError("--direct per-pixel renders one solve's --out and --image, not --camera-path frames");
     if (nearGather_ && !perPixelDirect_)
       throw InputError("--final-gather near adds to per-pixel direct light: give --direct per-pixel with it");
+    settings_.nearGather = nearGather_;
   }
   std::string quickFlags() const override { return "--elements 300 --item-res 64 --item-subdiv 1"; }
   // What is left unshot at 0.9995 lowers B by < 0.05 %; exact form factors lose < 0.05 % more.
@@ -149,7 +150,7 @@ class ProgressiveMethod final : public AtlasMethod {
  private:
   ProgressiveSettings settings_;
   bool perPixelDirect_ = false;  // --direct per-pixel: camera images only, so not in identity()
-  bool nearGather_ = false;      // --final-gather near: the same
+  bool nearGather_ = false;      // --final-gather near: the same but for auto's refine_near
 };
 
 }  // namespace
