@@ -23,6 +23,7 @@ uniform uint width, height, seed;
 uniform float totalPower;  // W: the emitters' total lum(E) A
 uniform uint firstSample;  // the global index of this dispatch's first sample (batches are runs of indices)
 uniform uint samples;      // paths per pixel this dispatch
+uniform uint bounces;      // reflections a path may take (--bounces; 1: direct light only), at most MAX_BOUNCES
 uniform vec3 eye, corner, dx, dy;  // Camera::pixelRays: window point w looks along corner + w.x dx + w.y dy
 
 const uint MAX_BOUNCES = 4096u;        // a cap roulette reaches with probability < 0.99^4096 ~ 1e-18
@@ -79,7 +80,7 @@ vec3 tracePath(vec3 x, vec3 d, uint pixel, uint s) {
   float t = bvhIntersect(x, d, NO_POLYGON, hit);
   if (t == BVH_MISS || dot(polygons[hit].normal.xyz, d) >= 0.0) return vec3(0.0);  // nothing, or a back face
   vec3 value = polygons[hit].emission.rgb, weight = vec3(1.0);
-  for (uint depth = 0u; depth < MAX_BOUNCES; ++depth) {
+  for (uint depth = 0u; depth < min(bounces, MAX_BOUNCES); ++depth) {  // depth + 1 reflections
     x += t * d;
     vec3 n = polygons[hit].normal.xyz, rho = polygons[hit].reflectance.rgb;
     float survive = min(max(rho.r, max(rho.g, rho.b)), MAX_SURVIVAL);

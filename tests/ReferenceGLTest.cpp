@@ -27,10 +27,11 @@ namespace {
 
 std::string analyticScene(const std::string& name) { return test::sourcePath("scenes/analytic/" + name); }
 
-ReferenceEstimate referenceOf(const Scene& scene, const Camera& camera, int size, unsigned spp, unsigned seed = 7) {
+ReferenceEstimate referenceOf(const Scene& scene, const Camera& camera, int size, unsigned spp, unsigned seed = 7,
+                              unsigned bounces = kReferenceBounceCap) {
   test::backend();
   ReferenceSettings s;
-  s.width = s.height = size, s.samples = spp, s.batches = 16, s.seed = seed;
+  s.width = s.height = size, s.samples = spp, s.batches = 16, s.seed = seed, s.bounces = bounces;
   BatchStatistics statistics(size, size, spp / s.batches);
   PathTracer(scene).render(camera, s, [&](const std::vector<glm::vec4>& sums) { statistics.add(sums); });
   return statistics.estimate();
@@ -99,6 +100,25 @@ TEST_CASE(
   INFO("mean " << e.meanLuminance << ", mean standard error " << e.meanStandardError);
   CHECK(worst < 6.0);  // Student's t with 15 degrees of freedom: P(|t| > 6) ~ 2e-5 a pixel
   CHECK(std::abs(e.meanLuminance - 2.0) < 0.01);
+}
+
+// --bounces N: in the closed furnace (E 1, rho 1/2 everywhere) light reflected at most N times
+// sums to B_N = 1 + 1/2 + ... + 1/2^N exactly; 1 is the direct light per-pixel direct light computes.
+TEST_CASE("With --bounces N the reference sees the furnace's exact partial sum 2 - 2^-N of its reflections",
+          "[gl][reference]") {
+  const Scene scene = loadScene(analyticScene("furnace.obj"));
+  const Camera camera = resolveCamera(scene, std::nullopt);
+  for (unsigned n : {0u, 1u, 2u}) {
+    const ReferenceEstimate e = referenceOf(scene, camera, 32, 64, 7, n);
+    const double exact = 2.0 - std::ldexp(1.0, -int(n));
+    double worst = 0;
+    for (std::size_t p = 0; p < e.luminanceError.size(); ++p)
+      worst = std::max(worst, std::abs(pixelLum(e.mean, p) - exact) / std::max(e.luminanceError[p], 1e-7));
+    INFO("--bounces " << n << ": mean " << e.meanLuminance << " (exact " << exact << "), worst " << worst
+                      << " standard errors");
+    CHECK(worst < 6.0);
+    CHECK(std::abs(e.meanLuminance - exact) < 0.005 * exact);
+  }
 }
 
 TEST_CASE(

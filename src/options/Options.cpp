@@ -12,6 +12,7 @@
 #include "gl/Backend.h"
 #include "src/base/DataDir.h"
 #include "src/base/Error.h"
+#include "src/reference/PathTracer.h"
 #include "src/scene/Charts.h"
 #include "src/scene/SceneLoader.h"
 #include "src/solver/Control.h"
@@ -407,6 +408,11 @@ std::vector<Flag> frameAndCommandFlags() {
        CLI::Range(1u, 1u << 24)},
       {"--batches", "K", "Reference: independent batches, whose spread gives each pixel's standard error",
        CLI::Range(2u, 1024u)},
+      {"--bounces", "N",
+       "Reference: reflections a path may take before the camera: 1 is the direct light on what the camera sees "
+       "(what solve --direct per-pixel computes), 0 the emitters alone; Russian roulette ends paths unbiased below "
+       "the cap (docs/reference.md#bounces)",
+       CLI::Range(0u, kReferenceBounceCap), fmt::format("{} (unlimited)", kReferenceBounceCap)},
       {"--stderr", "FILE",
        "The reference's per-pixel standard error of B (.exr): reference writes it, compare reads image B's (a noise "
        "column)",

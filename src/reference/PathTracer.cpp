@@ -50,6 +50,7 @@ void PathTracer::render(const Camera& camera, const ReferenceSettings& s, const 
   program_.set("width", unsigned(s.width));
   program_.set("height", unsigned(s.height));
   program_.set("seed", s.seed);
+  program_.set("bounces", s.bounces);
   program_.set("eye", float(camera.eye.x), float(camera.eye.y), float(camera.eye.z));
   program_.set("corner", float(rays.corner.x), float(rays.corner.y), float(rays.corner.z));
   program_.set("dx", float(rays.dx.x), float(rays.dx.y), float(rays.dx.z));

@@ -16,10 +16,15 @@
 
 namespace hemirad {
 
+// The most reflections a path takes (shaders/reference.comp's MAX_BOUNCES): roulette ends a path
+// before it with probability 1 - 0.99^4096 ~ 1 - 1e-18, so the default is unlimited in effect.
+inline constexpr unsigned kReferenceBounceCap = 4096;
+
 struct ReferenceSettings {
   unsigned samples = 64;  // paths per pixel, over all batches (--spp): seconds on llvmpipe at 128^2
   unsigned batches = 16;  // independent batches: the standard error's degrees of freedom + 1
   unsigned seed = 0;
+  unsigned bounces = kReferenceBounceCap;  // reflections a path may take (--bounces; 1: direct light only)
   int width = 128, height = 128;
 };
 

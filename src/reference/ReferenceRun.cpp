@@ -48,6 +48,7 @@ void addReferenceFlags(CLI::App* r, ReferenceOptions& o, const ReferenceWriters&
   add(r, "--emission", o.load.emission);
   add(r, "--spp", o.settings.samples);
   add(r, "--batches", o.settings.batches);
+  add(r, "--bounces", o.settings.bounces);
   add(r, "--seed", o.settings.seed);
   add(r, "--camera", o.camera);
   add(r, "--width", o.settings.width);
