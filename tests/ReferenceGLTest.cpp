@@ -282,6 +282,7 @@ TEST_CASE("Bad reference and compare input is one error line and a nonzero exit 
   };
   oneError("reference " + furnace + " --spp 100 --batches 16 --out " + out, "not a multiple of --batches");
   oneError("reference " + furnace + " --out " + out + " --stderr " + out, "give each output its own");
+  oneError("reference " + furnace + " --bounces 4097 --out " + out, "--bounces");
   oneError("compare " + test::tempPath("missing.exr") + " " + out + " --scene " + furnace, "missing.exr");
   const std::string small = test::tempPath("small.exr"), large = test::tempPath("large.exr");
   writeExr(small, Image{4, 4, std::vector<float>(48, 1.0f)});

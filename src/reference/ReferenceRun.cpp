@@ -78,12 +78,13 @@ int runReference(const ReferenceOptions& o, const ReferenceWriters& w) {
   if (!o.standardError.empty()) outputs.add("--stderr", o.standardError, w.linear(e.standardError));
   if (!o.image.empty()) outputs.add("--image", o.image, w.render(o.image, e.mean, scale));
   outputs.commit();
-  fmt::print(stderr,
-             "hemirad: reference: {} x {} px, {} paths per pixel ({} batches of {}, seed {}) in {:.2f} s on {}; mean B "
-             "{:.6g}, mean standard error {:.4g} ({:.3f} % of it)\n",
-             s.width, s.height, s.samples, s.batches, s.samples / s.batches, s.seed, seconds, backend->renderer(),
-             e.meanLuminance, e.meanStandardError,
-             e.meanLuminance > 0 ? 100 * e.meanStandardError / e.meanLuminance : 0.0);
+  const std::string capped = s.bounces < kReferenceBounceCap ? fmt::format(", at most {} bounces", s.bounces) : "";
+  fmt::print(
+      stderr,
+      "hemirad: reference: {} x {} px, {} paths per pixel ({} batches of {}, seed {}{}) in {:.2f} s on {}; mean B "
+      "{:.6g}, mean standard error {:.4g} ({:.3f} % of it)\n",
+      s.width, s.height, s.samples, s.batches, s.samples / s.batches, s.seed, capped, seconds, backend->renderer(),
+      e.meanLuminance, e.meanStandardError, e.meanLuminance > 0 ? 100 * e.meanStandardError / e.meanLuminance : 0.0);
   return 0;
 }
 
