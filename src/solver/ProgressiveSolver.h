@@ -61,7 +61,7 @@ struct ProgressiveSettings {
   std::string preset{kDefaultPreset};        // the preset the five above started from (the report names it)
   Visibility visibility = Visibility::Auto;
   HostTraceUse hostTrace = HostTraceUse::OnCpuDevice;  // who traces --visibility bvh's segments
-  bool nearGather = false;  // the camera's images regather their near field: auto refines further
+  bool nearGather = false;  // --final-gather near: images regather their near field; auto refines further
   ItemPlan plan() const { return {projection, itemSubdivision, itemResolution, shootLevel, refineNear}; }
   // Starts from preset `name` (InputError for an unknown name): its five values and its name.
   void usePreset(std::string_view name) {

@@ -20,12 +20,8 @@ namespace {
 
 class ProgressiveRun final : public AtlasRun {
  public:
-  ProgressiveRun(SolverState& state, const ProgressiveSettings& settings, bool perPixelDirect, bool nearGather)
-      : settings_(settings),
-        solver_(state, settings),
-        state_(state),
-        perPixelDirect_(perPixelDirect),
-        nearGather_(nearGather) {}
+  ProgressiveRun(SolverState& state, const ProgressiveSettings& settings, bool perPixelDirect)
+      : settings_(settings), solver_(state, settings), state_(state), perPixelDirect_(perPixelDirect) {}
   Solver& solver() override { return solver_; }
   void look(const Camera& camera, double aspect) override {
     if (settings_.importanceDriven()) solver_.look(camera, aspect);
@@ -47,13 +43,13 @@ class ProgressiveRun final : public AtlasRun {
     run.itemTriangles = solver_.itemTriangles();
     run.discShapes = solver_.discShapes();
     run.direct = perPixelDirect_ ? "per-pixel" : "atlas";
-    run.finalGather = nearGather_ ? "near" : "off";
+    run.finalGather = settings_.nearGather ? "near" : "off";
   }
   std::vector<glm::vec4> directOnly(const Camera& camera, double aspect) const override {
     if (!perPixelDirect_) return {};
     return directOnlyRadiosity(state_.scene, state_.atlas, settings_, camera, aspect);
   }
-  bool nearGather() const override { return nearGather_; }
+  bool nearGather() const override { return settings_.nearGather; }
   std::string reached(const SolveStatus& status) const override {
     return fmt::format("{} shots, convergence {:.4f}", status.shots, status.convergence);
   }
@@ -64,7 +60,7 @@ class ProgressiveRun final : public AtlasRun {
   const ProgressiveSettings settings_;  // its own: startRound hands it settings made for the round
   ProgressiveSolver solver_;
   const SolverState& state_;
-  bool perPixelDirect_, nearGather_;
+  bool perPixelDirect_;
 };
 
 int ProgressiveRun::walkthrough(const SolveOptions& o, const Scene& scene, const Atlas& atlas, SolverState& state,
@@ -108,7 +104,7 @@ class ProgressiveMethod final : public AtlasMethod {
             parseFlag(
                 "--direct", perPixelDirect_, [](const std::string& v) { return v == "per-pixel"; }, "atlas"),
             parseFlag(
-                "--final-gather", nearGather_, [](const std::string& v) { return v == "near"; }, "off"),
+                "--final-gather", p.nearGather, [](const std::string& v) { return v == "near"; }, "off"),
             switchFlag("--sync-timings", [&p] { p.timings = gl::TimerMode::Synchronous; }),
             acceptFlag("--camera-path")};
   }
@@ -118,20 +114,19 @@ class ProgressiveMethod final : public AtlasMethod {
     if (!stop.maxShots && !stop.targetConvergence) stop.targetConvergence = o.cameraPath.empty() ? 0.9 : 0.9999;
     if (perPixelDirect_ && !o.cameraPath.empty())
       throw InputError("--direct per-pixel renders one solve's --out and --image, not --camera-path frames");
-    if (nearGather_ && !perPixelDirect_)
+    if (settings_.nearGather && !perPixelDirect_)
       throw InputError("--final-gather near adds to per-pixel direct light: give --direct per-pixel with it");
-    settings_.nearGather = nearGather_;
   }
   std::string quickFlags() const override { return "--elements 300 --item-res 64 --item-subdiv 1"; }
   // What is left unshot at 0.9995 lowers B by < 0.05 %; exact form factors lose < 0.05 % more.
   ClosedBoxRun closedBox() const override { return {"--elements 300 --converge 0.9995", 2, 0.001}; }
   std::unique_ptr<AtlasRun> start(SolverState& state) const override {
-    return std::make_unique<ProgressiveRun>(state, settings_, perPixelDirect_, nearGather_);
+    return std::make_unique<ProgressiveRun>(state, settings_, perPixelDirect_);
   }
   std::unique_ptr<AtlasRun> startRound(SolverState& state) const override {
     ProgressiveSettings round = settings_;
     round.stop = roundStop(settings_.stop);
-    return std::make_unique<ProgressiveRun>(state, round, perPixelDirect_, nearGather_);
+    return std::make_unique<ProgressiveRun>(state, round, perPixelDirect_);
   }
   nlohmann::json identity() const override {
     const ProgressiveSettings& p = settings_;
@@ -150,7 +145,6 @@ class ProgressiveMethod final : public AtlasMethod {
  private:
   ProgressiveSettings settings_;
   bool perPixelDirect_ = false;  // --direct per-pixel: camera images only, so not in identity()
-  bool nearGather_ = false;      // --final-gather near: the same but for auto's refine_near
 };
 
 }  // namespace
