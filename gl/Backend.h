@@ -55,5 +55,9 @@ std::unique_ptr<RenderBackend> createOSMesaBackend(const BackendOptions& options
 std::unique_ptr<RenderBackend> createEglBackend(const BackendOptions& options, bool hardwareOnly);
 
 BackendKind parseBackendKind(const std::string& name);  // throws Error for unknown names
+// Whether createBackend(options) will rasterize on the CPU (llvmpipe), told from the EGL device
+// list without making a context: osmesa always; egl where the device it tries first (--gpu's) is
+// Mesa's software one or none is listed; auto where no hardware device is listed.
+bool rendersOnCpu(const BackendOptions& options);
 
 }  // namespace hemirad::gl

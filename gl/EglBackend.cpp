@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include "gl/GL.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <string>
@@ -56,6 +57,24 @@ bool hasToken(const char* list, const char* token) {
   for (const char* p = list; (p = std::strstr(p, token)); p += n)
     if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
   return false;
+}
+
+// Per EGL device, in the order EglBackend tries them, whether it is Mesa's software rasterizer
+// (empty without libEGL or device enumeration).
+std::vector<bool> eglDevicesSoftware() {
+  const EglApi& a = api();
+  if (!a.lib || !a.getProcAddress) return {};
+  auto queryDevices = a.get<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
+  auto queryDeviceString = a.get<PFNEGLQUERYDEVICESTRINGEXTPROC>("eglQueryDeviceStringEXT");
+  if (!queryDevices || !queryDeviceString) return {};
+  EGLint count = 0;
+  queryDevices(0, nullptr, &count);
+  std::vector<EGLDeviceEXT> devices(count);
+  queryDevices(count, devices.data(), &count);
+  std::vector<bool> software;
+  for (EGLint i = 0; i < count; ++i)
+    software.push_back(hasToken(queryDeviceString(devices[i], EGL_EXTENSIONS), "EGL_MESA_device_software"));
+  return software;
 }
 
 class EglBackend final : public RenderBackend {
@@ -143,6 +162,14 @@ class EglBackend final : public RenderBackend {
 };
 
 }  // namespace
+
+bool rendersOnCpu(const BackendOptions& options) {
+  if (options.kind == BackendKind::OSMesa) return true;
+  const std::vector<bool> software = eglDevicesSoftware();
+  if (options.gpu >= 0) return options.gpu >= int(software.size()) || software[std::size_t(options.gpu)];
+  if (options.kind == BackendKind::Egl) return software.empty() || software.front();
+  return std::find(software.begin(), software.end(), false) == software.end();  // auto: any hardware device
+}
 
 std::unique_ptr<RenderBackend> createEglBackend(const BackendOptions& options, bool hardwareOnly) {
   return std::make_unique<EglBackend>(options, hardwareOnly);

@@ -193,18 +193,29 @@ TEST_CASE("Per-pixel direct light and the near final gather are deterministic: t
 
 TEST_CASE(
     "Bad --direct or --final-gather input is one error line and exit code 2: an unknown mode, a method without it, a "
-    "walkthrough, the gather without per-pixel direct light",
+    "walkthrough, the gather with atlas direct light, an exact image plan it cannot give",
     "[gl][direct][cli][bad-input]") {
   const std::string cornell = test::sourcePath("scenes/cornell/cornell.obj");
   const std::string out = " --out " + test::tempPath("bad_direct.exr");
   const std::pair<std::string, std::string> cases[] = {
-      {"--direct perpixel", "--direct: perpixel not in {atlas,per-pixel}"},
+      {"--direct perpixel", "--direct: perpixel not in {auto,atlas,per-pixel}"},
       {"--method stochastic --direct per-pixel", "--direct is for --method progressive, not stochastic"},
       {"--direct per-pixel --camera-path " + test::sourcePath("scenes/cornell/cornell.path") + " --frames " +
            test::tempPath("frames"),
        "--direct per-pixel renders one solve's --out and --image, not --camera-path frames"},
-      {"--direct per-pixel --final-gather far", "--final-gather: far not in {off,near}"},
-      {"--final-gather near", "--final-gather near adds to per-pixel direct light: give --direct per-pixel with it"}};
+      {"--final-gather near --camera-path " + test::sourcePath("scenes/cornell/cornell.path") + " --frames " +
+           test::tempPath("frames"),
+       "--final-gather near renders one solve's --out and --image, not --camera-path frames"},
+      {"--direct per-pixel --final-gather far", "--final-gather: far not in {auto,off,near}"},
+      {"--direct atlas --final-gather near",
+       "--final-gather near adds to per-pixel direct light: it cannot take --direct atlas"},
+      {"--image-plan best", "--image-plan: best not in {auto,quick,exact}"},
+      {"--image-plan exact --method stochastic --shots 4",
+       "--image-plan exact takes per-pixel direct light and the near final gather, progressive refinement's, not "
+       "stochastic's"},
+      {"--image-plan exact --camera-path " + test::sourcePath("scenes/cornell/cornell.path") + " --frames " +
+           test::tempPath("frames"),
+       "--image-plan exact renders one solve's --out and --image, not --camera-path frames"}};
   for (const auto& [flags, message] : cases) {
     const test::Run run = test::hemirad("solve " + cornell + " " + flags + out);
     INFO(flags << ": " << run.output);

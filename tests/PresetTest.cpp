@@ -110,6 +110,59 @@ TEST_CASE("Under the near gather the default refines within 16 block sides where
   CHECK(below["refine_near"] == 0.0);
 }
 
+// The image plan (docs/solve.md#exact-images): auto is exact where one solve's image stops at
+// kExactImagesFrom or more on a GPU, quick on a CPU rasterizer and below it.
+TEST_CASE(
+    "The auto image plan is exact for a converged solve's image on a GPU, quick on a CPU, below 0.999 or "
+    "without an image",
+    "[preset]") {
+  CHECK(exactImagesFor(ImagePlan::Auto, 0.999, true, true));
+  CHECK(exactImagesFor(ImagePlan::Auto, 0.9999, true, true));
+  CHECK_FALSE(exactImagesFor(ImagePlan::Auto, 0.999, true, false));   // llvmpipe: 10-100x the time
+  CHECK_FALSE(exactImagesFor(ImagePlan::Auto, 0.998, true, true));    // not converged enough to show
+  CHECK_FALSE(exactImagesFor(ImagePlan::Auto, 0.999, false, true));   // no --out or --image
+  CHECK(exactImagesFor(ImagePlan::Exact, 0.5, false, false));         // asked for: always
+  CHECK_FALSE(exactImagesFor(ImagePlan::Quick, 0.9999, true, true));  // asked against: never
+}
+
+// --image-plan exact (auto's choice on a GPU, tested above; CI has llvmpipe): contact cuts,
+// per-pixel direct light, the near gather (so refined within 16 sides) and 4 x 4 samples, bit for
+// bit the image those flags give; each flag given keeps its value; auto on llvmpipe is quick and
+// says how to ask for the exact image.
+TEST_CASE(
+    "--image-plan exact is bit for bit the image of its four refinements given, a flag given beside it keeps its "
+    "value, and on llvmpipe auto is the quick image",
+    "[cli][preset]") {
+  const std::string common = "--elements 300 --item-res 64 --width 16 --height 16 --converge 0.999 --out ";
+  const std::string a = test::tempPath("exact_plan.exr"), b = test::tempPath("exact_given.exr"),
+                    c = test::tempPath("exact_quick.exr");
+  const nlohmann::json exact = presetSolve(common + a + " --image-plan exact"),
+                       given = presetSolve(common + b +
+                                           " --discontinuities contact --direct per-pixel --final-gather near "
+                                           "--refine-near 16 --supersample 4"),
+                       overridden = presetSolve(common + c + " --image-plan exact --direct atlas --supersample 3"),
+                       quick = presetSolve(common + c);
+  CHECK(exact["discontinuities"] == "contact");
+  CHECK(exact["direct"] == "per-pixel");
+  CHECK(exact["final_gather"] == "near");
+  CHECK(exact["refine_near"] == kGatherRefineNear);
+  CHECK(exact["camera_image"]["supersample"] == kExactImagesSupersample);
+  CHECK(exact["elements"] > quick["elements"]);  // the contact cuts' pieces
+  CHECK(exact["radiosity_hash"] == given["radiosity_hash"]);
+  CHECK(!test::readText(a).empty());
+  CHECK(test::readText(a) == test::readText(b));
+  CHECK(overridden["discontinuities"] == "contact");
+  CHECK(overridden["direct"] == "atlas");                       // given
+  CHECK_FALSE(overridden.contains("final_gather"));             // auto: no gather without per-pixel light
+  CHECK(overridden["refine_near"] == kRefinedPlan.refineNear);  // so auto's 4
+  CHECK(overridden["camera_image"]["supersample"] == 3);        // given
+  CHECK(quick["discontinuities"] == "off");
+  CHECK(quick["direct"] == "atlas");
+  CHECK(quick["camera_image"]["supersample"] == kDefaultSupersample);
+  const test::Run run = test::hemirad("solve " + kPresetScene + " " + common + c + " --quiet");
+  CHECK_THAT(run.output, Contains("on a CPU rasterizer: the quick camera image; --image-plan exact for the exact one"));
+}
+
 TEST_CASE("The seed003 preset reproduces the old default bitwise: seed 003's item buffer and level-1 shooting",
           "[heavy][cli][preset]") {  // CLI runs without memory-safety stakes: optimized only
   const std::string common = "--elements 1500 --shots 64";

@@ -72,12 +72,13 @@ void Commands::addSolve() {
   add(s, "--camera", solve.camera);
   add(s, "--width", solve.width);
   add(s, "--height", solve.height);
-  add(s, "--supersample", solve.supersample);
+  add(s, "--supersample", supersample, "auto");
+  add(s, "--image-plan", imagePlan);
   add(s, "--msaa", solve.msaa, fmt::format("{}, or the backend's most if fewer", SolveOptions::kDefaultMsaa));
   add(s, "--exposure", solve.exposure);
   add(s, "--ambient", solve.ambient, "off; on for --camera-path frames");
   add(s, "--subdivide", solve.subdivide.adaptive);
-  add(s, "--discontinuities", solve.discontinuities);
+  add(s, "--discontinuities", discontinuities, "auto");
   add(s, "--leaf-depth", solve.subdivide.maxDepth);
   add(s, "--split-gradient", solve.subdivide.rule.threshold);
   addSolveOutputs(s);
@@ -300,8 +301,22 @@ void Commands::addCompare() {
 void Commands::settle() {
   if (!*solveCmd) return;
   MethodUnit& method = methods.choose(solve.methodName, *solveCmd);
+  solve.imagePlan = parseImagePlan(imagePlan);
+  solve.gpu = !gl::rendersOnCpu(solve.backend);
   method.settle(solve);
   solve.method = &method;
+  // The auto ones follow the method's choice of an exact camera image; the user's word stands.
+  solve.exactImages = method.exactImages();
+  if (solve.imagePlan == ImagePlan::Exact && !solve.exactImages)
+    throw InputError(
+        fmt::format("--image-plan exact takes per-pixel direct light and the near final gather, "
+                    "progressive refinement's, not {}'s",
+                    method.name()));
+  solve.discontinuities = discontinuities == "auto" ? solve.exactImages && solve.discretisation.uv != UvSource::Input
+                                                    : discontinuities == "contact";
+  solve.supersample = supersample != kAutoSupersample ? supersample
+                      : solve.exactImages             ? kExactImagesSupersample
+                                                      : kDefaultSupersample;
   solve.progress = !quiet;
 }
 

@@ -232,6 +232,21 @@ void cutAtContacts(Scene& scene, Atlas& atlas, int maxTextureSize, double chartA
       lines.size(), findMs, cut->lines, cut->charts, cut->pieces, cutMs, atlas.elements, before);
 }
 
+// A converged solve's image plan, on stderr: exact, or quick where auto keeps a CPU's time.
+void announceImagePlan(const SolveOptions& o, double targetConvergence) {
+  const bool image = o.cameraPath.empty() && (!o.out.empty() || !o.image.empty());
+  if (o.exactImages)
+    fmt::print(stderr,
+               "hemirad: the camera image is exact (--image-plan {}): per-pixel direct light, the near final gather, "
+               "contact cuts, {} x {} samples a pixel, each but where its flag is given (docs/solve.md#exact-images)\n",
+               o.imagePlan == ImagePlan::Exact ? "exact" : "auto", kExactImagesSupersample, kExactImagesSupersample);
+  else if (o.imagePlan == ImagePlan::Auto && exactImagesFor(o.imagePlan, targetConvergence, image, true))
+    fmt::print(stderr,
+               "hemirad: converging to {:g} on a CPU rasterizer: the quick camera image; --image-plan exact for the "
+               "exact one, 10-100x the time here (docs/solve.md#exact-images)\n",
+               targetConvergence);
+}
+
 // The report's description of the run: what every atlas method has, then the method's own.
 RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, const Atlas& atlas, AtlasRun& method) {
   RunInfo run;
@@ -243,6 +258,7 @@ RunInfo describeRun(const SolveOptions& o, const gl::RenderBackend& backend, con
   run.texelSize = atlas.texelSize;
   run.elements = atlas.elements;
   run.charts = atlas.charts.size();
+  run.discontinuities = o.discontinuities ? "contact" : "off";
   run.clusters =
       std::size_t(std::count_if(atlas.charts.begin(), atlas.charts.end(), [](const Chart& c) { return c.clustered; }));
   method.describe(run);
@@ -281,6 +297,7 @@ int AtlasMethod::solve(const SolveOptions& o) const {
     subdivide.budget = d.elements.value_or(Discretisation::kDefaultElements);
     d.elements = subdivide.budget / SubdivideOptions::kFirstRoundShare;
   }
+  announceImagePlan(o, stop().targetConvergence);
   Atlas atlas = buildAtlas(scene, d, backend->maxTextureSize());
   if (o.discontinuities) cutAtContacts(scene, atlas, backend->maxTextureSize(), d.chartAngle);
   if (subdivide.adaptive) {  // from here on, the refined (cut, if any) scene and atlas are the solve's

@@ -19,8 +19,12 @@ struct SolveOptions {
   std::string scene;
   LoadOptions load;
   Discretisation discretisation;
-  SubdivideOptions subdivide;              // --subdivide, --leaf-depth, --split-gradient
-  bool discontinuities = false;            // --discontinuities contact
+  SubdivideOptions subdivide;    // --subdivide, --leaf-depth, --split-gradient
+  bool discontinuities = false;  // --discontinuities contact (auto: exactImages)
+  // --image-plan, whether the backend will be a GPU (gl::rendersOnCpu), and so whether the camera
+  // image is exact (MethodUnit::exactImages): the auto flags' choice (docs/solve.md#exact-images).
+  ImagePlan imagePlan = ImagePlan::Auto;
+  bool gpu = false, exactImages = false;
   std::string methodName = "progressive";  // --method
   const MethodUnit* method = nullptr;      // that method, its own flags bound (Commands::settle)
   gl::BackendOptions backend;

@@ -55,6 +55,9 @@ class MethodUnit {
   virtual std::vector<MethodFlag> flags() = 0;
   // After binding, before any work: InputError for what this method cannot do with `o`.
   virtual void settle(const SolveOptions& o) = 0;
+  // After settle: whether its camera image is exact (--image-plan, exactImagesFor): solve's auto
+  // --discontinuities and --supersample follow it (docs/solve.md#exact-images).
+  virtual bool exactImages() const { return false; }
   // The solve, from the scene to the files; 128 + a signal when one stopped it.
   virtual int solve(const SolveOptions& o) const = 0;
   // Whether --checkpoint and --resume mean something to it.

@@ -171,9 +171,9 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--discontinuities", "MODE",
        "Discontinuity meshing: contact cuts every planar chart along the outlines of polygons touching it (edges "
        "within 1e-3 of the scene's diagonal in front of its plane: a block on the floor, a lamp just under the "
-       "ceiling), each side its own chart, so no element straddles lit and unlit parts; off: no cuts "
-       "(docs/adaptive.md#discontinuity-meshing-d0)",
-       oneOf(std::map<std::string, bool>{{"off", false}, {"contact", true}}, "contact|off"), "off"},
+       "ceiling), each side its own chart, so no element straddles lit and unlit parts; off: no cuts; auto: contact "
+       "for an exact camera image (--image-plan), else off (docs/adaptive.md#discontinuity-meshing-d0)",
+       names({"auto", "contact", "off"}), "auto"},
       {"--leaf-depth", "D", "Adaptive: the quadtree's maximum depth (texels 2^-D of --texel-size a side)",
        CLI::Range(1, 4)},
       {"--split-gradient", "G",
@@ -231,13 +231,15 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--direct", "MODE",
        "Camera images' direct light: looked up in the elements like the rest (atlas), or computed per pixel, exactly "
        "(per-pixel: Lambert's contour integral to each emitter with exact visibility, the solution giving only the "
-       "indirect light; sharp shadow edges; docs/design.md#per-pixel-direct). The atlas, PLY and glTF keep B",
-       names({"atlas", "per-pixel"}), "atlas"},
+       "indirect light; sharp shadow edges; docs/design.md#per-pixel-direct); auto: per-pixel for an exact camera "
+       "image (--image-plan) or with --final-gather near, else atlas. The atlas, PLY and glTF keep B",
+       names({"auto", "atlas", "per-pixel"}), "auto"},
       {"--final-gather", "MODE",
-       "Camera images with --direct per-pixel: off, or near (each pixel gathers again the light of the elements "
+       "Camera images with per-pixel direct light: off, or near (each pixel gathers again the light of the elements "
        "within two of their sides, exactly, at its own point: creases and contacts that a lookup between element "
-       "centres smooths over; docs/design.md#final-gather)",
-       names({"off", "near"}), "off"},
+       "centres smooths over; docs/design.md#final-gather); auto: near for an exact camera image (--image-plan) "
+       "with its direct light per pixel, else off",
+       names({"auto", "off", "near"}), "auto"},
       {"--preset", "NAME",
        "Start the item buffer and shooters from a named plan (docs/cli.md#presets): fast (the default: hemicube at "
        "item-mesh level 0, planned shooter blocks and resolution), refined (fast, refined near its shooters: "
@@ -304,11 +306,21 @@ std::vector<Flag> deviceAndOutputFlags() {
        "SCENE.camera, else the framed bounds"},
       {"--width", "PIXELS", "Image (or window) width", kPixels},
       {"--height", "PIXELS", "Image (or window) height", kPixels},
-      {"--supersample", "N",
-       "Samples per pixel side, a regular N x N grid box-filtered (anti-aliasing toward the pixel's integral, "
-       "as `reference` estimates it); above 8 the framebuffer stays 8 x (or N's largest divisor up to 8) and "
-       "is drawn again shifted, (N / that)^2 times (--method instant: at most 8)",
-       CLI::Range(1, 64)},
+      {"--supersample", "N|auto",
+       fmt::format("Samples per pixel side, a regular N x N grid box-filtered (anti-aliasing toward the pixel's "
+                   "integral, as `reference` estimates it); above 8 the framebuffer stays 8 x (or N's largest divisor "
+                   "up to 8) and is drawn again shifted, (N / that)^2 times (--method instant: at most 8); auto: {} "
+                   "for an exact camera image (--image-plan), else {}",
+                   kExactImagesSupersample, kDefaultSupersample),
+       autoOr(kAutoSupersample, 1, 64)},
+      {"--image-plan", "PLAN",
+       fmt::format("Camera images (--out, --image): quick (the elements' light looked up, {0} x {0} samples a pixel), "
+                   "exact (issue 31's refinements: contact cuts, per-pixel direct light, the near final gather, {1} x "
+                   "{1} samples; 10-100x the time on llvmpipe) or auto: exact where one solve stops at --converge "
+                   "{2:g} or more on a GPU, else quick; --discontinuities, --direct, --final-gather and "
+                   "--supersample given override their part (docs/solve.md#exact-images)",
+                   kDefaultSupersample, kExactImagesSupersample, kExactImagesFrom),
+       names({"auto", "quick", "exact"}), "auto"},
       {"--msaa", "N",
        "Coverage samples in each supersample cell of --out and --image (MSAA at the GPU's fixed positions): edges are "
        "found at N x the --supersample grid's samples while each cell's surface is shaded once, at its centroid "

@@ -65,6 +65,7 @@ nlohmann::json reportJson(const RunInfo& r) {
   if (!r.preset.empty()) report["preset"] = r.preset;
   if (!r.projection.empty()) report["projection"] = r.projection;
   if (!r.direct.empty()) report["direct"] = r.direct;
+  if (!r.discontinuities.empty()) report["discontinuities"] = r.discontinuities;
   if (!r.visibility.empty()) report["visibility"] = r.visibility;
   if (r.direct == "per-pixel") report["final_gather"] = r.finalGather;
   if (r.supersample) report["camera_image"] = {{"supersample", r.supersample}, {"msaa", r.msaa}};

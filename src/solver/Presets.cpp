@@ -59,6 +59,15 @@ double refineNearFor(double refineNear, double targetConvergence, bool nearGathe
   return nearGather ? kGatherRefineNear : kRefinedPlan.refineNear;
 }
 
+bool exactImagesFor(ImagePlan plan, double targetConvergence, bool image, bool gpu) {
+  if (plan != ImagePlan::Auto) return plan == ImagePlan::Exact;
+  return image && gpu && targetConvergence >= kExactImagesFrom;
+}
+
+ImagePlan parseImagePlan(const std::string& name) {
+  return name == "exact" ? ImagePlan::Exact : name == "quick" ? ImagePlan::Quick : ImagePlan::Auto;
+}
+
 std::string presetNames() {
   std::string names;
   for (const Preset& p : presets()) names += (names.empty() ? "" : ", ") + std::string(p.name);

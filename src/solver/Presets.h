@@ -61,6 +61,24 @@ inline constexpr double kRefineFrom = 0.99;
 // interiors 0.68 -> 0.54 % (10k elements, 0.999, H200: run 2.1 -> 2.5 s; llvmpipe's solve 12 ->
 // 96 s; docs/adaptive.md#the-solves-shooting-plan-near-contacts-2026-12-06-h200).
 inline constexpr double kGatherRefineNear = 16.0;
+// Camera images (--out, --image, docs/solve.md#exact-images): quick (B looked up in the elements,
+// kDefaultSupersample^2 samples a pixel) or exact, with every refinement issue 31 measured against
+// the unbiased reference: contact cuts (--discontinuities), per-pixel direct light (--direct), the
+// near final gather (--final-gather, with kGatherRefineNear) and kExactImagesSupersample^2 samples.
+// Cornell box, 10k elements, 256^2, against 65,536 paths a pixel (H200): interiors 0.80 -> 0.54 %,
+// 1-px edge band 4.05 -> 1.27 %, floor p95 8.11 -> 2.89 %; run 0.33 -> 2.5 s. On llvmpipe the
+// exact image costs 10-100x (the gather and per-pixel visibility on 2 cores), so auto takes it
+// where a solve asks for a converged answer on a GPU. Each of those flags given overrides its part.
+enum class ImagePlan { Auto, Quick, Exact };
+inline constexpr double kExactImagesFrom = 0.999;
+inline constexpr int kExactImagesSupersample = 4;
+inline constexpr int kDefaultSupersample = 2;
+inline constexpr int kAutoSupersample = 0;  // --supersample auto: as the image plan says
+// Whether the camera image is exact: `plan` exact, or auto where one solve's image (`image`: --out
+// or --image, no walkthrough) stops at targetConvergence >= kExactImagesFrom on a GPU (`gpu`).
+bool exactImagesFor(ImagePlan plan, double targetConvergence, bool image, bool gpu);
+ImagePlan parseImagePlan(const std::string& name);  // auto, quick, exact
+
 // refineNear as given, or for auto where targetConvergence >= kRefineFrom: kGatherRefineNear for
 // a solve whose images gather their near field, else kRefinedPlan's; below it 0.
 double refineNearFor(double refineNear, double targetConvergence, bool nearGather);

@@ -2,6 +2,9 @@
 // (seed 004), the only method with a convergence to stop at and walkthroughs.
 #include <fmt/format.h>
 
+#include <optional>
+#include <utility>
+
 #include "src/base/Error.h"
 #include "src/cli/Solve.h"
 #include "src/method/MethodFlag.h"
@@ -81,6 +84,11 @@ int ProgressiveRun::walkthrough(const SolveOptions& o, const Scene& scene, const
   return 0;
 }
 
+// --direct, --final-gather: `on` ("per-pixel", "near") true, the other value false, auto unset.
+auto autoOrGiven(const char* on) {
+  return [on](const std::string& v) { return v == "auto" ? std::optional<bool>() : std::optional<bool>(v == on); };
+}
+
 class ProgressiveMethod final : public AtlasMethod {
  public:
   std::string name() const override { return "progressive"; }
@@ -101,22 +109,30 @@ class ProgressiveMethod final : public AtlasMethod {
             bindFlag("--algorithm", p.algorithm),
             bindFlag("--fov-decay", p.fovDecayShots),
             bindFlag("--shooters-per-pass", p.shootersPerPass),
-            parseFlag(
-                "--direct", perPixelDirect_, [](const std::string& v) { return v == "per-pixel"; }, "atlas"),
-            parseFlag(
-                "--final-gather", p.nearGather, [](const std::string& v) { return v == "near"; }, "off"),
+            parseFlag("--direct", direct_, autoOrGiven("per-pixel"), "auto"),
+            parseFlag("--final-gather", gather_, autoOrGiven("near"), "auto"),
             switchFlag("--sync-timings", [&p] { p.timings = gl::TimerMode::Synchronous; }),
             acceptFlag("--camera-path")};
   }
-  // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told.
+  // A walkthrough shoots until its path ends; a single solve stops at 0.9 unless told. The image
+  // plan (docs/solve.md#exact-images) sets what --direct and --final-gather leave auto.
   void settle(const SolveOptions& o) override {
     StopRule& stop = settings_.stop;
     if (!stop.maxShots && !stop.targetConvergence) stop.targetConvergence = o.cameraPath.empty() ? 0.9 : 0.9999;
-    if (perPixelDirect_ && !o.cameraPath.empty())
-      throw InputError("--direct per-pixel renders one solve's --out and --image, not --camera-path frames");
-    if (settings_.nearGather && !perPixelDirect_)
-      throw InputError("--final-gather near adds to per-pixel direct light: give --direct per-pixel with it");
+    if (!o.cameraPath.empty())
+      for (auto [flag, on] : {std::pair{"--direct per-pixel", direct_.value_or(false)},
+                              {"--final-gather near", gather_.value_or(false)},
+                              {"--image-plan exact", o.imagePlan == ImagePlan::Exact}})
+        if (on)
+          throw InputError(fmt::format("{} renders one solve's --out and --image, not --camera-path frames", flag));
+    if (gather_.value_or(false) && !direct_.value_or(true))
+      throw InputError("--final-gather near adds to per-pixel direct light: it cannot take --direct atlas");
+    const bool image = o.cameraPath.empty() && (!o.out.empty() || !o.image.empty());
+    exactImages_ = exactImagesFor(o.imagePlan, stop.targetConvergence, image, o.gpu);
+    perPixelDirect_ = direct_.value_or(exactImages_ || gather_.value_or(false));
+    settings_.nearGather = gather_.value_or(exactImages_ && perPixelDirect_);
   }
+  bool exactImages() const override { return exactImages_; }
   std::string quickFlags() const override { return "--elements 300 --item-res 64 --item-subdiv 1"; }
   // What is left unshot at 0.9995 lowers B by < 0.05 %; exact form factors lose < 0.05 % more.
   ClosedBoxRun closedBox() const override { return {"--elements 300 --converge 0.9995", 2, 0.001}; }
@@ -144,7 +160,9 @@ class ProgressiveMethod final : public AtlasMethod {
 
  private:
   ProgressiveSettings settings_;
-  bool perPixelDirect_ = false;  // --direct per-pixel: camera images only, so not in identity()
+  std::optional<bool> direct_, gather_;  // --direct, --final-gather as given
+  bool perPixelDirect_ = false;          // camera images only, so not in identity()
+  bool exactImages_ = false;
 };
 
 }  // namespace
