@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "gl/Backend.h"
 #include "src/solver/Presets.h"
 #include "tests/support/Files.h"
 #include "tests/support/Support.h"
@@ -123,6 +124,9 @@ TEST_CASE(
   CHECK_FALSE(exactImagesFor(ImagePlan::Auto, 0.999, false, true));   // no --out or --image
   CHECK(exactImagesFor(ImagePlan::Exact, 0.5, false, false));         // asked for: always
   CHECK_FALSE(exactImagesFor(ImagePlan::Quick, 0.9999, true, true));  // asked against: never
+  // What `gpu` is told from: osmesa is llvmpipe, and an EGL device that is not listed is no GPU.
+  CHECK(gl::rendersOnCpu({gl::BackendKind::OSMesa, -1, false}));
+  CHECK(gl::rendersOnCpu({gl::BackendKind::Egl, 99, false}));
 }
 
 // --image-plan exact (auto's choice on a GPU, tested above; CI has llvmpipe): contact cuts,
