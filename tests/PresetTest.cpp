@@ -134,7 +134,7 @@ TEST_CASE(
 // bit the image those flags give; each flag given keeps its value; auto on llvmpipe is quick and
 // says how to ask for the exact image.
 TEST_CASE(
-    "--image-plan exact is bit for bit the image of its four refinements given, a flag given beside it keeps its "
+    "The exact image plan is bit for bit the image of its four refinements given, a flag given beside it keeps its "
     "value, and on llvmpipe auto is the quick image",
     "[cli][preset]") {
   const std::string common = "--elements 300 --item-res 64 --width 16 --height 16 --converge 0.999 --out ";
