@@ -165,6 +165,11 @@ TEST_CASE(
   CHECK(quick["camera_image"]["supersample"] == kDefaultSupersample);
   const test::Run run = test::hemirad("solve " + kPresetScene + " " + common + c + " --quiet");
   CHECK_THAT(run.output, Contains("on a CPU rasterizer: the quick camera image; --image-plan exact for the exact one"));
+  // The exact image's line names what is in effect of it: not the direct light given as atlas.
+  const test::Run told = test::hemirad("solve " + kPresetScene + " " + common + c +
+                                       " --quiet --image-plan exact --direct atlas --supersample 3");
+  CHECK_THAT(told.output,
+             Contains("the camera image is exact (--image-plan exact): contact cuts, 3 x 3 samples a pixel"));
 }
 
 TEST_CASE("The seed003 preset reproduces the old default bitwise: seed 003's item buffer and level-1 shooting",

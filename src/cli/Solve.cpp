@@ -1,6 +1,7 @@
 #include "src/cli/Solve.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -232,14 +233,17 @@ void cutAtContacts(Scene& scene, Atlas& atlas, int maxTextureSize, double chartA
       lines.size(), findMs, cut->lines, cut->charts, cut->pieces, cutMs, atlas.elements, before);
 }
 
-// A converged solve's image plan, on stderr: exact, or quick where auto keeps a CPU's time.
-void announceImagePlan(const SolveOptions& o, double targetConvergence) {
+// A converged solve's image plan, on stderr: exact (with what is in effect of it), or quick where
+// auto keeps a CPU's time.
+void announceImagePlan(const SolveOptions& o, const AtlasMethod& method) {
+  const double targetConvergence = method.stop().targetConvergence;
   const bool image = o.cameraPath.empty() && (!o.out.empty() || !o.image.empty());
+  std::vector<std::string> parts = method.pixelRefinements();
+  if (o.discontinuities) parts.emplace_back("contact cuts");
+  parts.push_back(fmt::format("{} x {} samples a pixel", o.supersample, o.supersample));
   if (o.exactImages)
-    fmt::print(stderr,
-               "hemirad: the camera image is exact (--image-plan {}): per-pixel direct light, the near final gather, "
-               "contact cuts, {} x {} samples a pixel, each but where its flag is given (docs/solve.md#exact-images)\n",
-               o.imagePlan == ImagePlan::Exact ? "exact" : "auto", kExactImagesSupersample, kExactImagesSupersample);
+    fmt::print(stderr, "hemirad: the camera image is exact (--image-plan {}): {} (docs/solve.md#exact-images)\n",
+               o.imagePlan == ImagePlan::Exact ? "exact" : "auto", fmt::join(parts, ", "));
   else if (o.imagePlan == ImagePlan::Auto && exactImagesFor(o.imagePlan, targetConvergence, image, true))
     fmt::print(stderr,
                "hemirad: converging to {:g} on a CPU rasterizer: the quick camera image; --image-plan exact for the "
@@ -297,7 +301,7 @@ int AtlasMethod::solve(const SolveOptions& o) const {
     subdivide.budget = d.elements.value_or(Discretisation::kDefaultElements);
     d.elements = subdivide.budget / SubdivideOptions::kFirstRoundShare;
   }
-  announceImagePlan(o, stop().targetConvergence);
+  announceImagePlan(o, *this);
   Atlas atlas = buildAtlas(scene, d, backend->maxTextureSize());
   if (o.discontinuities) cutAtContacts(scene, atlas, backend->maxTextureSize(), d.chartAngle);
   if (subdivide.adaptive) {  // from here on, the refined (cut, if any) scene and atlas are the solve's

@@ -104,6 +104,9 @@ class AtlasMethod : public MethodUnit {
   // Its parameters a checkpoint must have been made with (beside the scene and atlas).
   virtual nlohmann::json identity() const = 0;
   virtual const StopRule& stop() const = 0;
+  // The camera image's per-pixel refinements in effect ("per-pixel direct light", ...), for the
+  // line that announces an exact image.
+  virtual std::vector<std::string> pixelRefinements() const { return {}; }
 };
 
 }  // namespace hemirad

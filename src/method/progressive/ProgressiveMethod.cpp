@@ -133,6 +133,12 @@ class ProgressiveMethod final : public AtlasMethod {
     settings_.nearGather = gather_.value_or(exactImages_ && perPixelDirect_);
   }
   bool exactImages() const override { return exactImages_; }
+  std::vector<std::string> pixelRefinements() const override {
+    std::vector<std::string> parts;
+    if (perPixelDirect_) parts.emplace_back("per-pixel direct light");
+    if (settings_.nearGather) parts.emplace_back("the near final gather");
+    return parts;
+  }
   std::string quickFlags() const override { return "--elements 300 --item-res 64 --item-subdiv 1"; }
   // What is left unshot at 0.9995 lowers B by < 0.05 %; exact form factors lose < 0.05 % more.
   ClosedBoxRun closedBox() const override { return {"--elements 300 --converge 0.9995", 2, 0.001}; }
