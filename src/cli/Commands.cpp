@@ -306,16 +306,16 @@ void Commands::settle() {
   method.settle(solve);
   solve.method = &method;
   // The auto ones follow the method's choice of an exact camera image; the user's word stands.
-  solve.exactImages = method.exactImages();
-  if (solve.imagePlan == ImagePlan::Exact && !solve.exactImages)
+  const bool exact = method.exactImages();
+  if (solve.imagePlan == ImagePlan::Exact && !exact)
     throw InputError(
         fmt::format("--image-plan exact takes per-pixel direct light and the near final gather, "
                     "progressive refinement's, not {}'s",
                     method.name()));
-  solve.discontinuities = discontinuities == "auto" ? solve.exactImages && solve.discretisation.uv != UvSource::Input
-                                                    : discontinuities == "contact";
+  solve.discontinuities =
+      discontinuities == "auto" ? exact && solve.discretisation.uv != UvSource::Input : discontinuities == "contact";
   solve.supersample = supersample != kAutoSupersample ? supersample
-                      : solve.exactImages             ? kExactImagesSupersample
+                      : exact                         ? kExactImagesSupersample
                                                       : kDefaultSupersample;
   solve.progress = !quiet;
 }

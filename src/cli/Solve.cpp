@@ -237,14 +237,13 @@ void cutAtContacts(Scene& scene, Atlas& atlas, int maxTextureSize, double chartA
 // auto keeps a CPU's time.
 void announceImagePlan(const SolveOptions& o, const AtlasMethod& method) {
   const double targetConvergence = method.stop().targetConvergence;
-  const bool image = o.cameraPath.empty() && (!o.out.empty() || !o.image.empty());
   std::vector<std::string> parts = method.pixelRefinements();
   if (o.discontinuities) parts.emplace_back("contact cuts");
   parts.push_back(fmt::format("{} x {} samples a pixel", o.supersample, o.supersample));
-  if (o.exactImages)
+  if (method.exactImages())
     fmt::print(stderr, "hemirad: the camera image is exact (--image-plan {}): {} (docs/solve.md#exact-images)\n",
                o.imagePlan == ImagePlan::Exact ? "exact" : "auto", fmt::join(parts, ", "));
-  else if (o.imagePlan == ImagePlan::Auto && exactImagesFor(o.imagePlan, targetConvergence, image, true))
+  else if (o.imagePlan == ImagePlan::Auto && exactImagesFor(o.imagePlan, targetConvergence, o.cameraImage(), true))
     fmt::print(stderr,
                "hemirad: converging to {:g} on a CPU rasterizer: the quick camera image; --image-plan exact for the "
                "exact one, 10-100x the time here (docs/solve.md#exact-images)\n",

@@ -20,11 +20,11 @@ struct SolveOptions {
   LoadOptions load;
   Discretisation discretisation;
   SubdivideOptions subdivide;    // --subdivide, --leaf-depth, --split-gradient
-  bool discontinuities = false;  // --discontinuities contact (auto: exactImages)
-  // --image-plan, whether the backend will be a GPU (gl::rendersOnCpu), and so whether the camera
-  // image is exact (MethodUnit::exactImages): the auto flags' choice (docs/solve.md#exact-images).
+  bool discontinuities = false;  // --discontinuities contact (auto: MethodUnit::exactImages)
+  // --image-plan, and whether the backend will be a GPU (gl::rendersOnCpu): what the method's
+  // exactImages() follows (docs/solve.md#exact-images).
   ImagePlan imagePlan = ImagePlan::Auto;
-  bool gpu = false, exactImages = false;
+  bool gpu = false;
   std::string methodName = "progressive";  // --method
   const MethodUnit* method = nullptr;      // that method, its own flags bound (Commands::settle)
   gl::BackendOptions backend;
@@ -49,6 +49,9 @@ struct SolveOptions {
   WalkthroughOptions walkthrough;
   double referenceConvergence = 0.99;
   bool progress = true;
+
+  // One solve's camera image: --out or --image, not a walkthrough's frames.
+  bool cameraImage() const { return cameraPath.empty() && (!out.empty() || !image.empty()); }
 };
 
 // Runs options.method; the methods with a Solver through AtlasMethod::solve (Solve.cpp).

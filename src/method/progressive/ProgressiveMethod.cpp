@@ -127,8 +127,7 @@ class ProgressiveMethod final : public AtlasMethod {
           throw InputError(fmt::format("{} renders one solve's --out and --image, not --camera-path frames", flag));
     if (gather_.value_or(false) && !direct_.value_or(true))
       throw InputError("--final-gather near adds to per-pixel direct light: it cannot take --direct atlas");
-    const bool image = o.cameraPath.empty() && (!o.out.empty() || !o.image.empty());
-    exactImages_ = exactImagesFor(o.imagePlan, stop.targetConvergence, image, o.gpu);
+    exactImages_ = exactImagesFor(o.imagePlan, stop.targetConvergence, o.cameraImage(), o.gpu);
     perPixelDirect_ = direct_.value_or(exactImages_ || gather_.value_or(false));
     settings_.nearGather = gather_.value_or(exactImages_ && perPixelDirect_);
   }
