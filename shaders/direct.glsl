@@ -49,7 +49,11 @@ bool pieceMayBeBlocked(vec3 x, vec3 n, uint base) {
     p[i] = shooterShape[base + 1u + uint(i)].xyz;
     lo = min(lo, p[i]), hi = max(hi, p[i]), centre += p[i] / float(count);
   }
-  vec3 nl = cross(p[1] - p[0], p[2] - p[0]);
+  vec3 nl = normalize(cross(p[1] - p[0], p[2] - p[0])), side[4];  // the pyramid's planes, outward
+  for (int i = 0; i < count; ++i) {
+    side[i] = normalize(cross(p[i] - x, p[(i + 1) % count] - x));
+    side[i] *= dot(side[i], centre - x) > 0.0 ? -1.0 : 1.0;
+  }
   // A triangle that only touches the pyramid's boundary (a wall meeting the lamp at its edge, x's
   // own plane) blocks no segment inside it: within `touch` of a plane counts as outside, so
   // rounding does not send such points to the grid's 64 segment tests.
@@ -62,14 +66,10 @@ bool pieceMayBeBlocked(vec3 x, vec3 n, uint base) {
     uint first = floatBitsToUint(bvhNode[k].lo.w), tris = hit ? floatBitsToUint(bvhNode[k].hi.w) : 0u;
     for (uint t = first; t < first + tris; ++t) {
       vec3 a = bvhTriangle[t].v0.xyz, b = a + bvhTriangle[t].e1.xyz, c = a + bvhTriangle[t].e2.xyz;
-      vec3 unitL = normalize(nl);
-      bool outside = max(max(dot(unitL, a - p[0]), dot(unitL, b - p[0])), dot(unitL, c - p[0])) <= touch ||
+      bool outside = max(max(dot(nl, a - p[0]), dot(nl, b - p[0])), dot(nl, c - p[0])) <= touch ||
                      (aboveHorizon && max(max(dot(n, a - x), dot(n, b - x)), dot(n, c - x)) <= touch);
-      for (int i = 0; i < count && !outside; ++i) {
-        vec3 side = normalize(cross(p[i] - x, p[(i + 1) % count] - x));
-        side *= dot(side, centre - x) > 0.0 ? -1.0 : 1.0;  // outward
-        outside = min(min(dot(side, a - x), dot(side, b - x)), dot(side, c - x)) >= -touch;
-      }
+      for (int i = 0; i < count && !outside; ++i)
+        outside = min(min(dot(side[i], a - x), dot(side[i], b - x)), dot(side[i], c - x)) >= -touch;
       if (!outside) return true;
     }
   }
