@@ -73,7 +73,7 @@ void Commands::addSolve() {
   add(s, "--width", solve.width);
   add(s, "--height", solve.height);
   add(s, "--supersample", supersample, "auto");
-  add(s, "--image-plan", imagePlan);
+  add(s, "--image-plan", solve.imagePlan);
   add(s, "--msaa", solve.msaa, fmt::format("{}, or the backend's most if fewer", SolveOptions::kDefaultMsaa));
   add(s, "--exposure", solve.exposure);
   add(s, "--ambient", solve.ambient, "off; on for --camera-path frames");
@@ -301,7 +301,6 @@ void Commands::addCompare() {
 void Commands::settle() {
   if (!*solveCmd) return;
   MethodUnit& method = methods.choose(solve.methodName, *solveCmd);
-  solve.imagePlan = parseImagePlan(imagePlan);
   solve.gpu = !gl::rendersOnCpu(solve.backend);
   method.settle(solve);
   solve.method = &method;

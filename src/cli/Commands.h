@@ -62,9 +62,8 @@ struct Commands {
   // Flags read into text, turned into the options after parsing.
   std::string viewShading = "deferred", shooters = "16";
   std::vector<int> validateProjections{0};  // Projections, or options::kAllProjections
-  // solve's --image-plan, --discontinuities and --supersample, auto resolved in settle()
-  // (docs/solve.md#exact-images).
-  std::string imagePlan = "auto", discontinuities = "auto";
+  // solve's --discontinuities and --supersample, auto resolved in settle() (docs/solve.md#exact-images).
+  std::string discontinuities = "auto";
   int supersample = kAutoSupersample;
   bool quiet = false;
   std::string docs;

@@ -320,7 +320,8 @@ std::vector<Flag> deviceAndOutputFlags() {
                    "{2:g} or more on a GPU, else quick; --discontinuities, --direct, --final-gather and "
                    "--supersample given override their part (docs/solve.md#exact-images)",
                    kDefaultSupersample, kExactImagesSupersample, kExactImagesFrom),
-       names({"auto", "quick", "exact"}), "auto"},
+       enumeration<ImagePlan>({{"auto", ImagePlan::Auto}, {"quick", ImagePlan::Quick}, {"exact", ImagePlan::Exact}}),
+       "auto"},
       {"--msaa", "N",
        "Coverage samples in each supersample cell of --out and --image (MSAA at the GPU's fixed positions): edges are "
        "found at N x the --supersample grid's samples while each cell's surface is shaded once, at its centroid "

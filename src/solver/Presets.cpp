@@ -64,10 +64,6 @@ bool exactImagesFor(ImagePlan plan, double targetConvergence, bool image, bool g
   return image && gpu && targetConvergence >= kExactImagesFrom;
 }
 
-ImagePlan parseImagePlan(const std::string& name) {
-  return name == "exact" ? ImagePlan::Exact : name == "quick" ? ImagePlan::Quick : ImagePlan::Auto;
-}
-
 std::string presetNames() {
   std::string names;
   for (const Preset& p : presets()) names += (names.empty() ? "" : ", ") + std::string(p.name);

@@ -77,7 +77,6 @@ inline constexpr int kAutoSupersample = 0;  // --supersample auto: as the image 
 // Whether the camera image is exact: `plan` exact, or auto where one solve's image (`image`: --out
 // or --image, no walkthrough) stops at targetConvergence >= kExactImagesFrom on a GPU (`gpu`).
 bool exactImagesFor(ImagePlan plan, double targetConvergence, bool image, bool gpu);
-ImagePlan parseImagePlan(const std::string& name);  // auto, quick, exact
 
 // refineNear as given, or for auto where targetConvergence >= kRefineFrom: kGatherRefineNear for
 // a solve whose images gather their near field, else kRefinedPlan's; below it 0.
