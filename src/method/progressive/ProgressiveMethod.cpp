@@ -130,6 +130,7 @@ class ProgressiveMethod final : public AtlasMethod {
     exactImages_ = exactImagesFor(o.imagePlan, stop.targetConvergence, o.cameraImage(), o.gpu);
     perPixelDirect_ = direct_.value_or(exactImages_ || gather_.value_or(false));
     settings_.nearGather = gather_.value_or(exactImages_ && perPixelDirect_);
+    settings_.shootersPerPass = passShootersFor(settings_.shootersPerPass, settings_.nearRefinement());
   }
   bool exactImages() const override { return exactImages_; }
   std::vector<std::string> pixelRefinements() const override {
