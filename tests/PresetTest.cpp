@@ -31,6 +31,22 @@ double jsonLuminance(const nlohmann::json& rgb) {
   return 0.2126 * rgb[0].get<double>() + 0.7152 * rgb[1].get<double>() + 0.0722 * rgb[2].get<double>();
 }
 
+// The largest relative difference of an object's mean luminance (the light's aside) between two
+// reports of the same scene; each object's is logged.
+double worstObject(const nlohmann::json& solved, const nlohmann::json& reference) {
+  double worst = 0;
+  for (const auto& f : solved["objects"])
+    for (const auto& r : reference["objects"])
+      if (f["name"] == r["name"] && f["name"] != "light") {
+        const double a = jsonLuminance(f["mean_radiosity"]), b = jsonLuminance(r["mean_radiosity"]);
+        UNSCOPED_INFO(solved["preset"].get<std::string>()
+                      << " " << f["name"].get<std::string>() << ": " << a << ", element by element " << b << " ("
+                      << (a / b - 1) * 100 << " %)");
+        worst = std::max(worst, std::abs(a / b - 1));
+      }
+  return worst;
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -56,20 +72,7 @@ TEST_CASE(
   CHECK(reference["preset"] == "reference with --item-res 256");
   CHECK(reference["shoot_level"] == 0);
   CHECK(fast["shots"].get<unsigned>() * 2 < reference["shots"].get<unsigned>());  // coarse shooters: far fewer shots
-  auto worstObject = [&](const nlohmann::json& solved) {
-    double worst = 0;
-    for (const auto& f : solved["objects"])
-      for (const auto& r : reference["objects"])
-        if (f["name"] == r["name"] && f["name"] != "light") {
-          const double a = jsonLuminance(f["mean_radiosity"]), b = jsonLuminance(r["mean_radiosity"]);
-          UNSCOPED_INFO(solved["preset"].get<std::string>()
-                        << " " << f["name"].get<std::string>() << ": " << a << ", element by element " << b << " ("
-                        << (a / b - 1) * 100 << " %)");
-          worst = std::max(worst, std::abs(a / b - 1));
-        }
-    return worst;
-  };
-  const double fastWorst = worstObject(fast), unrefinedWorst = worstObject(unrefined);
+  const double fastWorst = worstObject(fast, reference), unrefinedWorst = worstObject(unrefined, reference);
   INFO("worst object: default " << fastWorst * 100 << " %, unrefined " << unrefinedWorst * 100 << " % (default "
                                 << fast["shots"] << " shots, element by element " << reference["shots"] << ")");
   CHECK(fastWorst < 0.002);
@@ -127,16 +130,7 @@ TEST_CASE(
                        reference = presetSolve(common + " --shoot-level 0 --refine-near 0");
   CHECK(wide["shooters_per_pass"] == kWideRefinedPassShooters);  // given 16, held to 8
   CHECK(reference["shooters_per_pass"] == 16);
-  double worst = 0;
-  for (const auto& w : wide["objects"])
-    for (const auto& r : reference["objects"])
-      if (w["name"] == r["name"] && w["name"] != "light") {
-        const double a = jsonLuminance(w["mean_radiosity"]), b = jsonLuminance(r["mean_radiosity"]);
-        UNSCOPED_INFO(w["name"].get<std::string>()
-                      << ": " << a << ", element by element " << b << " (" << (a / b - 1) * 100 << " %)");
-        worst = std::max(worst, std::abs(a / b - 1));
-      }
-  CHECK(worst < 0.0025);
+  CHECK(worstObject(wide, reference) < 0.0025);
 }
 
 // The image plan (docs/solve.md#exact-images): auto is exact where one solve's image stops at
