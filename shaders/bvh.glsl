@@ -2,7 +2,7 @@
 // CPU for tests). SSBO_BVH_NODES the nodes, SSBO_BVH_TRIANGLES the triangles; every member a vec4 (seed 002 §4.1).
 
 struct BvhNode {
-  vec4 lo;  // xyz box min; w (uint bits): inner node: its second child; leaf: first triangle
+  vec4 lo;  // xyz box min; w (uint bits): inner node: the index past its subtree; leaf: first triangle
   vec4 hi;  // xyz box max; w (uint bits): leaf: triangle count; inner node: 0
 };
 struct BvhTriangle {
