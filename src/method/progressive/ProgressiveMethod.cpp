@@ -39,7 +39,7 @@ class ProgressiveRun final : public AtlasRun {
     run.shootLevel = settings_.shootLevel;
     run.refineNear = settings_.nearRefinement();
     run.visibility = visibilityName(solver_.visibility());
-    run.shootersPerPass = settings_.shootersPerPass;
+    run.shootersPerPass = settings_.passShooters();
     run.importanceShots = solver_.importanceShots();
     run.deliveryShots = solver_.deliveryShots();
     run.fovDecayShots = solver_.fovDecayShots();
@@ -130,7 +130,6 @@ class ProgressiveMethod final : public AtlasMethod {
     exactImages_ = exactImagesFor(o.imagePlan, stop.targetConvergence, o.cameraImage(), o.gpu);
     perPixelDirect_ = direct_.value_or(exactImages_ || gather_.value_or(false));
     settings_.nearGather = gather_.value_or(exactImages_ && perPixelDirect_);
-    settings_.shootersPerPass = passShootersFor(settings_.shootersPerPass, settings_.nearRefinement());
   }
   bool exactImages() const override { return exactImages_; }
   std::vector<std::string> pixelRefinements() const override {
@@ -157,7 +156,7 @@ class ProgressiveMethod final : public AtlasMethod {
                                {"projection", projectionName(p.projection)},
                                {"shoot_level", p.shootLevel},
                                {"refine_near", p.nearRefinement()},
-                               {"shooters_per_pass", p.shootersPerPass}};
+                               {"shooters_per_pass", p.passShooters()}};
     if (p.algorithm == Algorithm::Perspective) identity["fov_decay"] = p.fovDecayShots;  // 0: the default
     if (p.visibility != Visibility::Auto) identity["visibility"] = visibilityName(p.visibility);
     return identity;
