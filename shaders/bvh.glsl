@@ -14,6 +14,15 @@ layout(std430, binding = SSBO_BVH_TRIANGLES) readonly buffer BvhTriangles { BvhT
 
 const float BVH_MISS = 3.402823e38;
 
+// llvmpipe (Mesa 22.3's gallivm) counts an invocation's loop iterations with one counter for all
+// its loops and, past 65,535 (LP_MAX_TGSI_LOOP_ITERATIONS), ends every loop at its next turn: a
+// walk cut there answers wrongly and says nothing. Walks that end unfinished set walksCut, which
+// the host turns into an error (BvhBuffers::requireWholeWalks; tests/WalkGuardGLTest.cpp).
+layout(std430, binding = SSBO_WALKS_CUT) buffer WalksCut { uint walksCut; };
+void walkEnded(bool whole) {
+  if (!whole) walksCut = 1u;
+}
+
 // The walk, in preorder and without a stack (src/solver/Bvh.h): from node n into its first child,
 // which follows it, when the walk meets an inner node's box (`enter`); else past its subtree.
 // A walk runs `for (uint n = 0u, end = bvhNext(0u, false); n < end; n = bvhNext(n, hit))`.
@@ -47,7 +56,8 @@ float bvhIntersect(vec3 o, vec3 d, uint skip, out uint polygon) {
   float tMax = BVH_MISS;
   polygon = 0xFFFFFFFFu;
   bool hit;
-  for (uint n = 0u, end = bvhNext(0u, false); n < end; n = bvhNext(n, hit)) {
+  uint n = 0u, end = bvhNext(0u, false);
+  for (; n < end; n = bvhNext(n, hit)) {
     hit = bvhHitBox(n, o, invD, tMax);
     uint first = floatBitsToUint(bvhNode[n].lo.w), count = hit ? floatBitsToUint(bvhNode[n].hi.w) : 0u;
     for (uint i = first; i < first + count; ++i) {  // a leaf's triangles
@@ -57,5 +67,6 @@ float bvhIntersect(vec3 o, vec3 d, uint skip, out uint polygon) {
       if (t > 0.0 && t < tMax) tMax = t, polygon = q;
     }
   }
+  walkEnded(n >= end);
   return tMax;
 }

@@ -9,7 +9,8 @@ bool segmentBlocked(vec3 o, vec3 x, uint passA, uint passB, float eps) {
   vec3 d = x - o;
   vec3 invD = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));  // an axis-parallel segment: no 0 * inf
   bool hit;
-  for (uint n = 0u, end = bvhNext(0u, false); n < end; n = bvhNext(n, hit)) {
+  uint n = 0u, end = bvhNext(0u, false);
+  for (; n < end; n = bvhNext(n, hit)) {
     hit = bvhHitBox(n, o, invD, 1.0);
     uint first = floatBitsToUint(bvhNode[n].lo.w), count = hit ? floatBitsToUint(bvhNode[n].hi.w) : 0u;
     for (uint i = first; i < first + count; ++i) {  // a leaf's triangles
@@ -18,6 +19,7 @@ bool segmentBlocked(vec3 o, vec3 x, uint passA, uint passB, float eps) {
       if (c != passA && c != passB && blocksSegment(q, o, x, eps)) return true;
     }
   }
+  walkEnded(n >= end);
   return false;
 }
 

@@ -61,7 +61,8 @@ bool pieceMayBeBlocked(vec3 x, vec3 n, uint base) {
   bool aboveHorizon = true;
   for (int i = 0; i < count; ++i) aboveHorizon = aboveHorizon && dot(n, p[i] - x) > 0.0;
   bool hit;
-  for (uint k = 0u, end = bvhNext(0u, false); k < end; k = bvhNext(k, hit)) {
+  uint k = 0u, end = bvhNext(0u, false);
+  for (; k < end; k = bvhNext(k, hit)) {
     hit = all(lessThanEqual(bvhNode[k].lo.xyz, hi)) && all(greaterThanEqual(bvhNode[k].hi.xyz, lo));
     uint first = floatBitsToUint(bvhNode[k].lo.w), tris = hit ? floatBitsToUint(bvhNode[k].hi.w) : 0u;
     for (uint t = first; t < first + tris; ++t) {
@@ -73,6 +74,7 @@ bool pieceMayBeBlocked(vec3 x, vec3 n, uint base) {
       if (!outside) return true;
     }
   }
+  walkEnded(k >= end);
   return false;
 }
 
@@ -84,7 +86,8 @@ bool pieceHidden(vec3 x, uint base) {
   vec3 p0 = shooterShape[base + 1u].xyz, d = p0 - x;
   vec3 invD = 1.0 / mix(d, vec3(1e-30), equal(d, vec3(0.0)));
   bool hit;
-  for (uint k = 0u, end = bvhNext(0u, false); k < end; k = bvhNext(k, hit)) {
+  uint k = 0u, end = bvhNext(0u, false);
+  for (; k < end; k = bvhNext(k, hit)) {
     hit = bvhHitBox(k, x, invD, 1.0);
     uint first = floatBitsToUint(bvhNode[k].lo.w), tris = hit ? floatBitsToUint(bvhNode[k].hi.w) : 0u;
     for (uint t = first; t < first + tris; ++t) {
@@ -94,6 +97,7 @@ bool pieceHidden(vec3 x, uint base) {
       if (all) return true;
     }
   }
+  walkEnded(k >= end);
   return false;
 }
 

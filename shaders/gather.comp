@@ -60,9 +60,9 @@ void main() {
   vec4 received = vec4(0.0);
   vec4 keep = vec4(1.0);  // 0 in the channels this texel's own block shoots this pass
 #ifdef REFINE_NEAR
-  const bool firstPhase = splitPhase == 0u;  // a shooter's own dB is reset once, in the first
+  const bool firstDispatch = splitPhase == 0u && nearSlot == 0u;  // a shooter's own dB is reset once
 #else
-  const bool firstPhase = true;
+  const bool firstDispatch = true;
 #endif
   for (uint s = 0u; s < control.shootersPerPass + control.importanceCount; ++s) {
     if (!activeShooter(s)) continue;
@@ -72,7 +72,7 @@ void main() {
     if (deferred) shot = vec4(snapshot[(view.z - 1u) * blockCount + b].rgb - snapshot[(entering - 1u) * blockCount + b].rgb, 0.0);
 #endif
     if (inShooterBlock(s, t, polygon)) {  // (a deferred pass shoots table entries, not the block's dB)
-      if (!deferred && firstPhase) keep *= s < control.shootersPerPass ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(1.0, 1.0, 1.0, 0.0);
+      if (!deferred && firstDispatch) keep *= s < control.shootersPerPass ? vec4(0.0, 0.0, 0.0, 1.0) : vec4(1.0, 1.0, 1.0, 0.0);
       continue;
     }
     if (s < control.shootersPerPass && !receivesRadiosity) continue;
@@ -80,9 +80,10 @@ void main() {
     float visible;
 #ifdef REFINE_NEAR
     // Near-shooter refinement (transfer_split.glsl): a radiosity shot (not a stored entry's
-    // delivery) near its receiver in phase 0, part by part; every other pair in phase 1.
+    // delivery) near its receiver in phase 0, part by part, one shooter a dispatch (nearSlot);
+    // every other pair in phase 1.
     bool near = s < control.shootersPerPass && !deferred && nearNode(control.shooter[s].shape, r.x);
-    if (near != (splitPhase == 0u)) continue;
+    if (near != (splitPhase == 0u) || (near && s != nearSlot)) continue;
     if (near) {
       received.rgb += nearTransfer(s, t, r.x, polygon);
       continue;

@@ -9,7 +9,9 @@
 // direct.glsl (its segmentEps, the gather's tolerance) and shooter_tree.glsl (the nodes; each node's stats[] hold NearGather's source: unshot.rgb the mean
 // light its elements send on, lightCentre where it sits; a single element's viewCentre and range
 // its half-axes and slopes, leafProfile's).
-uniform uint gatherBlocks;    // nodes [0, gatherBlocks) are the roots
+// The roots (blocks) this draw gathers, [gatherFirst, gatherEnd): all of them, or a share where
+// llvmpipe's loop limit cut a walk (bvh.glsl; Renderer::render draws the shares one by one).
+uniform uint gatherFirst, gatherEnd;
 uniform float gatherReach;    // a node is near within gatherReach x its radius of its centre
 
 // The chart-masked bilinear lookup of camera.frag: up to four texels and their weights (sum 1).
@@ -70,9 +72,11 @@ vec3 nearCorrection(vec3 x, vec3 nx, uint polygon, Lookup l) {
   for (int k = 0; k < l.count; ++k)
     c[k] = texelFetch(atlasPositionArea, l.texel[k], 0).xyz, nc[k] = texelFetch(atlasNormal, l.texel[k], 0).xyz;
   vec3 sum = vec3(0.0);
-  for (uint b = 0u; b < gatherBlocks; ++b) {
+  uint b = gatherFirst;
+  for (; b < gatherEnd; ++b) {
     if (!nearGatherNode(b, x)) continue;  // far: the lookup's blend holds it
     uint depth = 0u, path = 0u;
+    bool whole = false;  // false if llvmpipe's loop limit ends the walk (bvh.glsl)
     while (true) {
       uint n = nodeOnPath(b, depth, path);
       // An empty quadrant, or a flat part of x's own chart (in x's plane: it sends x nothing).
@@ -91,8 +95,13 @@ vec3 nearCorrection(vec3 x, vec3 nx, uint polygon, Lookup l) {
         for (int k = 0; k < l.count; ++k) d -= l.weight[k] * nodeLight(n, S, o, c[k], nc[k], chart, false);
         sum += d;
       }
-      if (!pathNext(depth, path, false)) break;
+      if (!pathNext(depth, path, false)) {
+        whole = true;
+        break;
+      }
     }
+    walkEnded(whole);
   }
+  walkEnded(b >= gatherEnd);
   return sum;
 }

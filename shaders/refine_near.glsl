@@ -30,6 +30,7 @@ NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon, float side) {
   NearLight l = NearLight(vec3(0.0), 0.0, 0.0);
   // Depth first, the last child first (nodeOnPath; the order fixes the sums' bits).
   uint depth = 0u, path = 0u;
+  bool whole = false;  // false if llvmpipe's loop limit ends the walk (bvh.glsl)
   while (true) {
     uint n = nodeOnPath(root, depth, path);
     bool empty = nodes[n].rect.z <= 0;
@@ -46,7 +47,11 @@ NearLight nearLight(uint root, vec3 x, vec3 nr, uint polygon, float side) {
       l.all += w;
       if (w > 0.0 && tracedClear(o, nodes[n].polygon, x, polygon, side, eps)) l.seen += w, l.seenRgb += st.unshot.rgb / area * F;
     }
-    if (!pathNext(depth, path, true)) break;
+    if (!pathNext(depth, path, true)) {
+      whole = true;
+      break;
+    }
   }
+  walkEnded(whole);
   return l;
 }

@@ -29,9 +29,9 @@ layout(std430, binding = SSBO_NODE_STATS) readonly buffer Stats { NodeStats stat
 #endif
 
 // The node `depth` levels below root b along `path` (two bits a level, the deepest lowest): walks
-// of a tree that call segmentBlocked per node keep their place in a path, not a stack array, since
-// llvmpipe (Mesa 22.3) loses nodes of a stack-array walk around segmentBlocked's own (a furnace
-// regathered so gave 1.67 instead of 2; the H200 gave 2).
+// of a tree that call segmentBlocked per node keep their place in a path, not a stack array (a
+// stack-array walk lost nodes on llvmpipe: a furnace regathered so gave 1.67 instead of 2, the
+// H200 2; likely llvmpipe's loop limit, bvh.glsl, which its extra loop turns passed sooner).
 uint nodeOnPath(uint b, uint depth, uint path) {
   uint n = b;
   for (uint l = depth; l > 0u; --l) n = nodes[n].firstChild + ((path >> (2u * (l - 1u))) & 3u);

@@ -7,7 +7,12 @@
 // atomically; phase 1 the far pairs, scaled by 1 + deficit / (1 - near share), so the shot is
 // conserved and, where light leaves the scene (an open side), leaves in the same proportion
 // (tests/ShooterTreeTest.cpp). Needs refine_near.glsl and visibility.glsl.
+// Phase 0 runs once per radiosity shooter slot of the pass (nearSlot), so that an invocation walks
+// one shooter's parts: llvmpipe ends every loop of an invocation once its loops together have run
+// 65,535 iterations (bvh.glsl), and one walk per near shooter, 16 in one invocation, passed that
+// (Cornell objects 1-4 % dark against element-by-element shooting; docs/design.md).
 uniform uint splitPhase;
+uniform uint nearSlot;
 const float kSplitScale = 16777216.0;  // 2^24: the sums' fixed point, in fractions of the shot power
 
 // Phase 0: what receiver texel t (centre x, on `polygon`) near shooter s gets from its parts; adds

@@ -257,10 +257,9 @@ std::vector<Flag> sceneAndSolverFlags() {
        "scene after each camera move",
        kCount, "a quarter of the shooter blocks"},
       {"--shooters-per-pass", "K",
-       fmt::format("Seed 003's batching: the K best blocks shoot in one pass (at most {} where --refine-near "
-                   "exceeds {:g}: docs/design.md#near-shooter-refinement); stochastic iteration: K random texels an "
-                   "iteration (at most {})",
-                   kWideRefinedPassShooters, kRefinedPlan.refineNear, kMaxPassShooters),
+       fmt::format("Seed 003's batching: the K best blocks shoot in one pass; stochastic "
+                   "iteration: K random texels an iteration (at most {})",
+                   kMaxPassShooters),
        CLI::Range(1, int(kMaxPassShooters))},
       {"--seed", "N",
        "Random seed of stochastic iteration, instant radiosity and the path-traced reference: the "

@@ -30,6 +30,8 @@ class DirectLight {
   static gl::Defines defines() { return {{"PER_PIXEL_DIRECT", "1"}}; }
   // Binds the pieces and the BVH and sets direct.glsl's uniforms on `program`.
   void bind(const gl::Program& program) const;
+  // Where llvmpipe's loop limit cut a walk of the images drawn with it (BvhBuffers.h).
+  const BvhBuffers& walks() const { return bvh_; }
 
  private:
   gl::Buffer pieces_;

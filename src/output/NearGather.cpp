@@ -102,8 +102,13 @@ void NearGather::bind(const gl::Program& program) const {
   sources_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_NODE_STATS);
   shapes_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
   program.set("emitterBase", emitterBase_);
-  program.set("gatherBlocks", blocks_);
   program.set("gatherReach", float(kGatherReach));
+  bindBlocks(program, 0, blocks_);
+}
+
+void NearGather::bindBlocks(const gl::Program& program, unsigned first, unsigned end) const {
+  program.set("gatherFirst", first);
+  program.set("gatherEnd", end);
 }
 
 }  // namespace hemirad

@@ -33,6 +33,9 @@ class NearGather {
   // Binds the nodes, their shapes with the emitter pieces after them (formfactor.glsl's one shape
   // table; direct.glsl's `emitterBase`) and sources, and sets near_gather.glsl's uniforms.
   void bind(const gl::Program& program) const;
+  // The blocks (roots) a draw gathers: [first, end) of blocks() (Renderer::drawDirect).
+  void bindBlocks(const gl::Program& program, unsigned first, unsigned end) const;
+  unsigned blocks() const { return blocks_; }
 
  private:
   gl::Buffer nodes_, shapes_, sources_;

@@ -1,5 +1,7 @@
 #include "src/output/Renderer.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "gl/Backend.h"
@@ -87,25 +89,50 @@ void Renderer::usePerPixelDirect(const DirectLight& direct, const NearGather* ga
 }
 
 // The second pass of a per-pixel-direct view: each visible fragment (the depths the first pass
-// left, GL_EQUAL: the same program and vertices give the same depths) adds its direct light. It
-// can cost seconds, so it is drawn in bands (src/output/DrawBands.h).
-void Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
+// left, GL_EQUAL: the same program and vertices give the same depths) adds its direct light and
+// near gather. It can cost seconds, so it is drawn in bands (src/output/DrawBands.h). In `parts`
+// > 1 the direct light is drawn alone, then the gather's blocks in `parts` shares, one a draw.
+void Renderer::drawDirect(const glm::mat4& vp, int width, int height, unsigned parts) {
   gl::RasterState add = gl::cameraView(width, height);
   add.depthFunc = gl::DepthFunc::Equal, add.depthWrite = false, add.additiveBlend = true;
   direct_->bind(directProgram_);
   if (gather_) gather_->bind(directProgram_);
   directProgram_.set("directPass", 1);
   directProgram_.set("viewProjection", &vp[0][0]);
-  directProgram_.use();
-  drawInBands(bands_, width, height, [&](const gl::Rect& band) {
-    add.scissor = band;
-    add.apply();
-    mesh_.draw();
-  });
+  const unsigned blocks = gather_ ? gather_->blocks() : 0, draws = parts == 1 ? 1 : parts + 1;
+  for (unsigned d = 0; d < draws; ++d) {
+    directProgram_.set("addDirect", int(d == 0));
+    if (gather_ && parts > 1)
+      gather_->bindBlocks(directProgram_, d ? blocks * (d - 1) / parts : 0, d ? blocks * d / parts : 0);
+    directProgram_.use();
+    drawInBands(bands_, width, height, [&](const gl::Rect& band) {
+      add.scissor = band;
+      add.apply();
+      mesh_.draw();
+    });
+  }
   gl::checkErrors("per-pixel direct light");
 }
 
+// llvmpipe ends all of a shader invocation's loops after 65,535 turns in all (shaders/bvh.glsl),
+// which a pixel's near gather beside a crease can pass: where a walk was cut, the view is drawn
+// again with the gather in 4 x as many shares, each walking less, down to a block a draw.
 Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
+  const bool direct = direct_ && &atlasValues == &shown();  // other values (error maps) are shown as they are
+  if (!direct) return draw(camera, width, height, supersample, atlasValues, 0);
+  const unsigned most = gather_ ? std::max(gather_->blocks(), 1u) : 1;
+  for (unsigned parts = 1;; parts = std::min(most, parts * 4)) {
+    Image view = draw(camera, width, height, supersample, atlasValues, parts);
+    lastShares_ = parts;
+    if (parts == most) direct_->walks().requireWholeWalks("the camera image's per-pixel light");
+    if (!direct_->walks().walksCut()) return view;
+    direct_->walks().clearWalksCut();
+  }
+}
+
+// One view; `parts`: 0 without per-pixel direct light, else drawDirect's.
+Image Renderer::draw(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues,
+                     unsigned parts) {
   const CameraPlan plan = cameraPlan(width, height, supersample, samples_, gl::limits().textureSize);
   const SupersampleGrid grid(supersample, plan.scale);
   const int w = width * grid.scale(), h = height * grid.scale();
@@ -118,7 +145,7 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   const bool ambient = ambient_ && &atlasValues == &shown();
   if (ambient) updateAmbient();
   ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_AMBIENT);
-  const bool direct = direct_ && &atlasValues == &shown();  // other values (error maps) are shown as they are
+  const bool direct = parts > 0;
   const gl::Program& program = direct ? directProgram_ : program_;
   program.set("addAmbient", int(ambient));
   std::vector<double> sums;
@@ -132,7 +159,7 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
     program.use();
     mesh_.draw();
     gl::checkErrors("camera render");
-    if (direct) drawDirect(shifted, w, h);
+    if (direct) drawDirect(shifted, w, h, parts);
     target.read(rgba);
     requireDrawn(rgba);
     grid.accumulate(rgba, width, height, 3, sums);

@@ -47,6 +47,9 @@ class Renderer {
   void setMultisample(int samples) { samples_ = samples; }
   // The samples a cell the last render drew: setMultisample's, or 1 where cameraPlan fell back.
   int lastSamples() const { return lastSamples_; }
+  // The shares the last render's near gather was drawn in: 1, or more where llvmpipe's loop limit
+  // cut a walk (render()).
+  unsigned lastShares() const { return lastShares_; }
 
  private:
   const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
@@ -54,7 +57,9 @@ class Renderer {
   const SolverState& state_;
   void updateAmbient();
 
-  void drawDirect(const glm::mat4& vp, int width, int height);
+  Image draw(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues,
+             unsigned parts);
+  void drawDirect(const glm::mat4& vp, int width, int height, unsigned parts);
 
   gl::Program program_, ambientProgram_, directProgram_;
   const DirectLight* direct_ = nullptr;
@@ -64,6 +69,7 @@ class Renderer {
   CameraMesh mesh_;
   bool ambient_ = false;
   int samples_ = 1, lastSamples_ = 1;
+  unsigned lastShares_ = 1;
   std::unique_ptr<gl::Texture> shown_;
   std::unique_ptr<ShownRadiosity> stitcher_;  // stitchLive(), where what is shown differs from B
 };

@@ -67,6 +67,7 @@ void PathTracer::render(const Camera& camera, const ReferenceSettings& s, const 
     }
     gl::barrier(gl::Barrier::BufferUpdate);
     sums.read(0, pixels * sizeof(glm::vec4), batch.data());
+    bvh_.requireWholeWalks("reference");
     consume(batch);
   }
 }

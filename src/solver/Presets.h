@@ -61,15 +61,6 @@ inline constexpr double kRefineFrom = 0.99;
 // interiors 0.68 -> 0.54 % (10k elements, 0.999, H200: run 2.1 -> 2.5 s; llvmpipe's solve 12 ->
 // 96 s; docs/adaptive.md#the-solves-shooting-plan-near-contacts-2026-12-06-h200).
 inline constexpr double kGatherRefineNear = 16.0;
-// Passes refined within more than kRefinedPlan's block sides shoot at most this many blocks: with
-// more, what the pass's near receivers take falls short, an open defect (docs/design.md#near-shooter-refinement:
-// Cornell box at 10k elements refined within 16 sides, objects 1.4-2.6 % dark against
-// element-by-element shooting with 16 a pass, within 0.03 % with 8).
-inline constexpr int kWideRefinedPassShooters = 8;
-inline int passShootersFor(int shooters, double refineNear) {
-  return refineNear > kRefinedPlan.refineNear && shooters > kWideRefinedPassShooters ? kWideRefinedPassShooters
-                                                                                     : shooters;
-}
 // Camera images (--out, --image, docs/solve.md#exact-images): quick (B looked up in the elements,
 // kDefaultSupersample^2 samples a pixel) or exact, with every refinement issue 31 measured against
 // the unbiased reference: contact cuts (--discontinuities), per-pixel direct light (--direct), the

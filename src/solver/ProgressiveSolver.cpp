@@ -54,7 +54,6 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   if (settings.shootersPerPass < 1 || unsigned(settings.shootersPerPass) > kMaxPassShooters)
     throw InputError(
         fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shootersPerPass));
-  settings_.shootersPerPass = settings.passShooters();  // every use below and in the passes: the held value
   const unsigned keep = unsigned(settings_.shootersPerPass);
   const bool perspective = settings.algorithm == Algorithm::Perspective;
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
@@ -315,12 +314,19 @@ void ProgressiveSolver::gatherPass(Receivers receivers) {
   receivers_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_RECEIVERS);
   if (hostTrace_) hostVisible_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_HOST_VISIBLE);
   gather_.use();
-  const unsigned phases = refinesNear() ? 2 : 1;  // transfer_split.glsl: near pairs, then far ones
-  for (unsigned phase = 0; phase < phases; ++phase) {
-    if (phases == 2) gather_.set("splitPhase", phase);
+  auto dispatch = [&] {
     gl::dispatchLinear(gl::groupsFor(receiverCount_, kGatherGroup));
     gl::barrier(kAllBarriers);
+  };
+  if (refinesNear()) {  // transfer_split.glsl: the near pairs one shooter slot a dispatch, then the far pairs
+    gather_.set("splitPhase", 0u);
+    for (unsigned s = 0; s < unsigned(settings_.shootersPerPass); ++s) {
+      gather_.set("nearSlot", s);
+      dispatch();
+    }
+    gather_.set("splitPhase", 1u);
   }
+  dispatch();
 }
 
 SolveStatus ProgressiveSolver::advance(unsigned shots) {
@@ -490,6 +496,7 @@ SolveStatus ProgressiveSolver::collectStatus(bool waitForStamps) {
   gl::checkErrors("progressive shot");
   status_ = {c.shots, c.convergence, c.done != 0};
   importanceShots_ = c.importanceShots;
+  if (status_.done && tracesBvh()) bvh_.requireWholeWalks("solve");  // a finished solve's exact visibility
   return status_;
 }
 

@@ -74,9 +74,6 @@ struct ProgressiveSettings {
   // The near-shooter refinement this solve runs with: refineNear, auto resolved by the stop rule
   // and the images' near gather.
   double nearRefinement() const { return refineNearFor(refineNear, stop.targetConvergence, nearGather); }
-  // The shooters a pass runs with: shootersPerPass, held to kWideRefinedPassShooters where the
-  // near refinement is wide (passShootersFor, src/solver/Presets.h).
-  int passShooters() const { return passShootersFor(shootersPerPass, nearRefinement()); }
   // A block whose elements' unshot radiosity spans more than uniformRatio (least / largest
   // luminance) shoots its brightest quadrant, down to splitDepth levels (ShooterTree.h).
   // Depth 3 and 0.1: within 1 % of per-element shooting on the Cornell box's objects with

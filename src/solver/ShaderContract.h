@@ -45,6 +45,7 @@
   X(SSBO_LEAF_COUNTS, 27)      /* gradient.comp: per leaf its texels over the gradient threshold */        \
   X(SSBO_RECEIVERS, 28)        /* gather.comp: its receiver texels in visiting order (ReceiverOrder.h) */  \
   X(SSBO_HOST_VISIBLE, 29)     /* visibility.glsl: the host's traced answers for the pass (HostTrace.h) */ \
+  X(SSBO_WALKS_CUT, 30)        /* bvh.glsl: set where llvmpipe's loop limit cut a walk (BvhBuffers.h) */   \
   X(SSBO_PROBE_IN, 0)          /* the *_probe.comp test kernels: inputs */                                 \
   X(SSBO_PROBE_OUT, 1)         /* and outputs */                                                           \
   X(SSBO_PROBE_POINTS, 2)      /* projection_probe.comp: item-buffer points */                             \

@@ -114,6 +114,7 @@ VplStats VplTracer::trace() {
   dispatch();
   std::vector<GpuPathEnd> ends(levels_.count[0]);
   pathEnds_.read(0, ends.size() * sizeof(GpuPathEnd), ends.data());
+  bvhBuffers_.requireWholeWalks("instant radiosity's VPL paths");
   VplStats s;
   s.vpls = settings_.vpls, s.paths = levels_.count[0], s.emitted = emitted_;
   for (const GpuPathEnd& e : ends) {

@@ -72,6 +72,7 @@ std::vector<ProbeSample> FormFactorProbe::fromShooter(std::size_t s) {
   gpuMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::vector<ProbeSample> out(a.polygonOf.size());
   result_.read(GL_RGBA, GL_FLOAT, out.size() * sizeof(ProbeSample), out.data());
+  if (traced_) bvh_.requireWholeWalks("validate's traced visibility");
   gl::checkErrors("form factor probe");
   return out;
 }

@@ -39,7 +39,7 @@ class ProgressiveRun final : public AtlasRun {
     run.shootLevel = settings_.shootLevel;
     run.refineNear = settings_.nearRefinement();
     run.visibility = visibilityName(solver_.visibility());
-    run.shootersPerPass = settings_.passShooters();
+    run.shootersPerPass = settings_.shootersPerPass;
     run.importanceShots = solver_.importanceShots();
     run.deliveryShots = solver_.deliveryShots();
     run.fovDecayShots = solver_.fovDecayShots();
@@ -156,7 +156,7 @@ class ProgressiveMethod final : public AtlasMethod {
                                {"projection", projectionName(p.projection)},
                                {"shoot_level", p.shootLevel},
                                {"refine_near", p.nearRefinement()},
-                               {"shooters_per_pass", p.passShooters()}};
+                               {"shooters_per_pass", p.shootersPerPass}};
     if (p.algorithm == Algorithm::Perspective) identity["fov_decay"] = p.fovDecayShots;  // 0: the default
     if (p.visibility != Visibility::Auto) identity["visibility"] = visibilityName(p.visibility);
     return identity;
