@@ -14,6 +14,13 @@
 
 namespace hemirad {
 
+namespace {
+// llvmpipe's first try at a near-gathered view: the Cornell box's gather took 16 shares at 1,000
+// elements (64^2); a draw more than needed costs a raster pass, a cut try the whole view (there
+// 9.5 s for the per-pixel pass from 1 share, 4.2 s from 16, the same bytes).
+constexpr unsigned kFirstSoftwareShares = 16;
+}  // namespace
+
 void requireDrawn(const std::vector<float>& rgba) {
   for (std::size_t i = 3; i < rgba.size(); i += 4)
     if (rgba[i] != 1.0f)
@@ -100,6 +107,7 @@ void Renderer::drawDirect(const glm::mat4& vp, int width, int height, unsigned p
   directProgram_.set("directPass", 1);
   directProgram_.set("viewProjection", &vp[0][0]);
   const unsigned blocks = gather_ ? gather_->blocks() : 0, draws = parts == 1 ? 1 : parts + 1;
+  const bool cutBefore = parts > 1 && direct_->walks().walksCut();  // by an earlier grid draw's shares
   for (unsigned d = 0; d < draws; ++d) {
     directProgram_.set("addDirect", int(d == 0));
     if (gather_ && parts > 1)
@@ -110,18 +118,24 @@ void Renderer::drawDirect(const glm::mat4& vp, int width, int height, unsigned p
       add.apply();
       mesh_.draw();
     });
+    // Drawn alone, the direct light's walks were cut: no share of the gather helps (render()).
+    if (parts > 1 && d == 0 && !cutBefore)
+      direct_->walks().requireWholeWalks("the camera image's per-pixel direct light");
   }
   gl::checkErrors("per-pixel direct light");
 }
 
 // llvmpipe ends all of a shader invocation's loops after 65,535 turns in all (shaders/bvh.glsl),
 // which a pixel's near gather beside a crease can pass: where a walk was cut, the view is drawn
-// again with the gather in 4 x as many shares, each walking less, down to a block a draw.
+// again with the gather in 4 x as many shares, each walking less, down to a block a draw. A
+// renderer starts from the shares its last view took (the same scene's views need about as many),
+// its first on llvmpipe from kFirstSoftwareShares.
 Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
   const bool direct = direct_ && &atlasValues == &shown();  // other values (error maps) are shown as they are
   if (!direct) return draw(camera, width, height, supersample, atlasValues, 0);
   const unsigned most = gather_ ? std::max(gather_->blocks(), 1u) : 1;
-  for (unsigned parts = 1;; parts = std::min(most, parts * 4)) {
+  const unsigned first = lastShares_ ? lastShares_ : gl::softwareRenderer() ? kFirstSoftwareShares : 1;
+  for (unsigned parts = std::min(most, first);; parts = std::min(most, parts * 4)) {
     Image view = draw(camera, width, height, supersample, atlasValues, parts);
     lastShares_ = parts;
     if (parts == most) direct_->walks().requireWholeWalks("the camera image's per-pixel light");

@@ -69,7 +69,7 @@ class Renderer {
   CameraMesh mesh_;
   bool ambient_ = false;
   int samples_ = 1, lastSamples_ = 1;
-  unsigned lastShares_ = 1;
+  unsigned lastShares_ = 0;  // none yet
   std::unique_ptr<gl::Texture> shown_;
   std::unique_ptr<ShownRadiosity> stitcher_;  // stitchLive(), where what is shown differs from B
 };
