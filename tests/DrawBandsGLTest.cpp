@@ -50,7 +50,7 @@ TEST_CASE("Bands cover every pixel of the frame once, on 64-pixel tiles, however
 TEST_CASE(
     "A per-pixel direct render with the near gather is the same to the bit in one band or in bands of a tile, clears "
     "whole",
-    "[gl][camera][direct]") {
+    "[gl][camera][direct][heavy]") {
   test::backend();
   const test::CornellView v;
   const NearGather gather(v.scene, v.atlas, v.sent);

@@ -159,7 +159,7 @@ TEST_CASE(
 TEST_CASE(
     "The exact image plan is bit for bit the image of its four refinements given, a flag given beside it keeps its "
     "value, and on llvmpipe auto is the quick image",
-    "[cli][preset]") {
+    "[cli][preset][heavy]") {
   const std::string common = "--elements 300 --item-res 64 --width 16 --height 16 --converge 0.999 --out ";
   const std::string a = test::tempPath("exact_plan.exr"), b = test::tempPath("exact_given.exr"),
                     c = test::tempPath("exact_quick.exr");

@@ -54,7 +54,7 @@ TEST_CASE("Supersample grids split N into a framebuffer factor of at most 8 and 
 }
 
 TEST_CASE("Supersampled camera pixels average exactly the regular N x N grid, nearing their coverage as N grows",
-          "[gl][camera]") {
+          "[gl][camera][heavy]") {
   test::backend();
   Scene scene;
   REQUIRE(scene.addPolygon(kTriangle, test::material(scene, 0.5, 0.0), scene.addObject("triangle")));
