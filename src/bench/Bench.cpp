@@ -112,10 +112,11 @@ BenchRow benchOne(gl::RenderBackend& backend, const Scene& scene, const Atlas& a
                   const BenchOptions& o) {
   BenchRow row;
   row.elements = atlas.elements;
+  row.shootersPerPass = shootersPerPass;
+
   ProgressiveSettings settings = o.progressive;
   settings.shootersPerPass = shootersPerPass;
   settings.stop = {0, o.converge};
-  row.shootersPerPass = settings.shootersPerPass;
   settings.timings = gl::TimerMode::Off;  // the timed run pays for no queries
   // View-driven algorithms look from the scene's camera (SCENE.camera), square.
   const Camera camera = resolveCamera(scene, std::nullopt);

@@ -54,7 +54,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   if (settings.shootersPerPass < 1 || unsigned(settings.shootersPerPass) > kMaxPassShooters)
     throw InputError(
         fmt::format("--shooters-per-pass must be 1 to {}, not {}", kMaxPassShooters, settings.shootersPerPass));
-  const unsigned keep = unsigned(settings_.shootersPerPass);
+  const unsigned keep = unsigned(settings.shootersPerPass);
   const bool perspective = settings.algorithm == Algorithm::Perspective;
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
   plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution, settings.projection);
@@ -70,7 +70,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   if (visibility_ == Visibility::ItemBuffer)
     itemBuffer_ = std::make_unique<ItemBuffer>(state.scene, settings.itemSubdivision, plan_.itemResolution,
                                                state.farDistance, settings.projection,
-                                               settings_.shootersPerPass * (settings.importanceDriven() ? 2 : 1));
+                                               settings.shootersPerPass * (settings.importanceDriven() ? 2 : 1));
   if (settings.importanceDriven()) view_ = std::make_unique<ImportanceView>(state);
   gl::Defines gatherDefines = itemBufferDefines(settings.projection);
   gatherDefines.insert(gatherDefines.end(), defines.begin(), defines.end());
