@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "GitHash.h"  // HEMIRAD_GIT_HASH, written at build time (cmake/GitHash.cmake)
+
 namespace hemirad {
 
 namespace {
