@@ -12,6 +12,11 @@ namespace {
 // size. A Cornell box then needs 208 to 496 shots to 90 % at 10k to 1M elements
 // (docs/bench/h200-2026-12-02.md).
 constexpr double kShooterSide = 1.0 / 4, kEmitterSide = 1.0 / 16;
+// A curved chart's block shoots from one eye with its facets' mean normal, which its facets turn
+// away from: a concave bowl's blocks lost 2.7 % of its light against element-by-element shooting
+// (8 x 8 texels), real_20k's armchairs 1.3-2.1 % at 20k elements; from 2 x 2 texels the bowl is
+// within 0.1 % and every real_20k object within 0.7 % (docs/real-scenes.md#curved-shooters).
+constexpr int kCurvedLevel = 1;
 // Item-buffer pixels per element across the scene's extent: a receiver element at the far side
 // of the scene spans ~2 pixels of the item buffer (whose disc diameter covers pi radians at most).
 constexpr double kPixelsPerElement = 4.0;
@@ -41,9 +46,10 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
   ShootingPlan plan;
   for (const Chart& c : atlas.charts) {
     const bool emitter = scene.materials[scene.polygons()[std::size_t(c.polygon)].material].emissive();
-    plan.chartLevel.push_back(shootLevel != kAutoShootLevel
-                                  ? shootLevel
-                                  : levelFor(extent * (emitter ? kEmitterSide : kShooterSide), c.cellSize));
+    const int level = levelFor(extent * (emitter ? kEmitterSide : kShooterSide), c.cellSize);
+    plan.chartLevel.push_back(shootLevel != kAutoShootLevel ? shootLevel
+                              : c.planar                    ? level
+                                                            : std::min(level, kCurvedLevel));
   }
   // Refined leaves (src/scene/Leaves.h) see at their own cells' scale; but the hemicube resolves
   // occluders, which a leaf split does not make smaller: it is planned from the base cells
