@@ -142,7 +142,7 @@ TEST_CASE(
 TEST_CASE(
     "On curved charts the default plan shoots from 2 x 2 texels at most: a lit bowl's mean light is within 0.5 % of "
     "element-by-element shooting",
-    "[cli][preset]") {
+    "[heavy][cli][preset]") {
   std::string obj = "mtllib m.mtl\no bowl\nusemtl white\n";
   for (int j = 0; j <= 6; ++j)
     for (int i = 0; i < 24; ++i) {

@@ -1,8 +1,9 @@
 // How coarse the shooters are and how fine their item buffers. Fixed by the user, or (auto)
 // chosen from the scene so that the shots a solve needs stay about the same however finely the
-// receivers are cut: coarse shooters, fine receivers (on curved charts at most 2 x 2 texels). The exact polygon form factor makes a large
+// receivers are cut: coarse shooters, fine receivers. The exact polygon form factor makes a large
 // block's transfer exact; only its visibility is taken from one point, its centre. Emitters shoot
-// four times finer than the rest, so direct shadows keep their penumbrae.
+// four times finer than the rest, so direct shadows keep their penumbrae; curved charts from 2 x 2
+// texels at most, their facets turning away from a block's one normal.
 #pragma once
 #include <vector>
 
