@@ -13,8 +13,8 @@ namespace {
 // (docs/bench/h200-2026-12-02.md).
 constexpr double kShooterSide = 1.0 / 4, kEmitterSide = 1.0 / 16;
 // A curved chart's block shoots from one eye with its facets' mean normal, which its facets turn
-// away from: a concave bowl's blocks lost 2.7 % of its light against element-by-element shooting
-// (8 x 8 texels), real_20k's armchairs 1.3-2.1 % at 20k elements; from 2 x 2 texels the bowl is
+// away from: from the blocks above a concave bowl lost 2.7 % of its light against element-by-element
+// shooting, real_20k's armchairs 1.3-2.1 % at 20k elements; from 2 x 2 texels the bowl is
 // within 0.1 % and every real_20k object within 0.7 % (docs/real-scenes.md#curved-shooters).
 constexpr int kCurvedLevel = 1;
 // Item-buffer pixels per element across the scene's extent: a receiver element at the far side
