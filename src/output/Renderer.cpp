@@ -138,8 +138,8 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   for (unsigned parts = std::min(most, first);; parts = std::min(most, parts * 4)) {
     Image view = draw(camera, width, height, supersample, atlasValues, parts);
     lastShares_ = parts;
-    if (parts == most) direct_->walks().requireWholeWalks("the camera image's per-pixel light");
     if (!direct_->walks().walksCut()) return view;
+    if (parts == most) direct_->walks().requireWholeWalks("the camera image's per-pixel light");  // throws
     direct_->walks().clearWalksCut();
   }
 }
