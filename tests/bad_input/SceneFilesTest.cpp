@@ -240,7 +240,7 @@ TEST_CASE(
   CHECK(scene.materials.back().reflectance == glm::dvec3(1.0));
   Outputs out("rho-one");
   const std::string report = out.dir + "/r.json";
-  test::Run run = test::hemirad("solve " + obj + " --converge 0.99 --quiet --report " + report);
+  test::Run run = test::hemirad("solve " + obj + " --elements 500 --converge 0.99 --quiet --report " + report);
   INFO(run.output);
   CHECK(run.exitCode == 0);
   CHECK(count(run.output, "hemirad: warning:") == 1);
