@@ -85,7 +85,7 @@ TEST_CASE(
 // solve stops at kRefineFrom or more, unrefined below, where the unshot light outweighs what
 // refinement corrects; the report gives the value the solve ran with.
 TEST_CASE("The default refines near its shooters where the solve stops at 0.99 or more, as the refined preset does",
-          "[cli][preset]") {
+          "[cli][preset][heavy]") {  // bits of repeated solves: 16 s under ASan
   const std::string common = "--elements 600 --item-res 64";
   const nlohmann::json below = presetSolve(common + " --converge 0.98"),
                        unrefined = presetSolve(common + " --converge 0.98 --refine-near 0"),
@@ -104,7 +104,7 @@ TEST_CASE("The default refines near its shooters where the solve stops at 0.99 o
 // Under --final-gather near the camera regathers each pixel's near field from the elements, so auto
 // refines within kGatherRefineNear block sides: the same solve as that value given, bit for bit.
 TEST_CASE("Under the near gather the default refines within 16 block sides where the solve stops at 0.99 or more",
-          "[cli][preset]") {
+          "[cli][preset][heavy]") {  // bits of repeated solves: 15 s under ASan
   const std::string common = "--elements 600 --item-res 64 --width 16 --height 16 --out " +
                              test::tempPath("gather_plan.exr"),
                     gather = " --direct per-pixel --final-gather near";

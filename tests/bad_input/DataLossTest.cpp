@@ -92,7 +92,7 @@ TEST_CASE("Bad input: two outputs on one file or stream, after symlinks, are one
 }
 
 TEST_CASE("A full device fails the run with the flag, the path and no space left, and exits non-zero",
-          "[cli][bad-input]") {
+          "[cli][bad-input][heavy]") {  // paths, not memory: six runs, 26 s under ASan
   const std::string obj = writeScene("dev-full", kQuad + "f 1 2 3 4\n");
   for (const std::string flag : {"--out", "--image", "--report", "--ply", "--gltf", "--atlas"}) {
     test::Run run = test::hemirad(solve(obj) + " " + flag + " /dev/full");
