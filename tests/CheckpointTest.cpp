@@ -77,7 +77,8 @@ TEST_CASE("A finished solve's checkpoint resumes to the same result with no more
   CHECK(resumed["shots"] == uninterrupted()["shots"]);
 }
 
-TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint is refused", "[heavy][cli][checkpoint]") {
+TEST_CASE("Resuming with another scene, other parameters or a damaged checkpoint is refused",
+          "[heavy][cli][checkpoint]") {
   std::string ck = test::tempPath("refuse.ckpt");
   REQUIRE(test::hemirad(solveArgs() + " --shots 32 --checkpoint " + ck).exitCode == 0);
   auto refused = [](const test::Run& r, const std::string& why) {
@@ -170,7 +171,8 @@ TEST_CASE("A checkpoint made with another atlas layout (or before layouts were h
 // run's own target above it, so a finished run resumed with a higher --converge reaches the same
 // layout and takes the solve further: the bits of a run made to that target at once. (Both
 // targets below kRefineFrom: from there the default refines, which the next test refuses.)
-TEST_CASE("An adaptive solve resumed with a higher --converge gives the bits of one run to it", "[cli][checkpoint]") {
+TEST_CASE("An adaptive solve resumed with a higher --converge gives the bits of one run to it",
+          "[heavy][cli][checkpoint]") {  // bits of repeated solves: 17 s under ASan
   const std::string args = "solve " + test::sourcePath("scenes/cornell/cornell.obj") +
                            " --subdivide adaptive --elements 1500 --item-res 64 --quiet";
   const std::string ck = test::tempPath("adaptive.ckpt"), a = test::tempPath("adaptive_a.json"),
@@ -198,6 +200,7 @@ TEST_CASE("A solve resumed across the default's refinement threshold is refused,
   REQUIRE(test::hemirad(args + " --converge 0.9 --checkpoint " + ck).exitCode == 0);
   test::Run refused = test::hemirad(args + " --converge 0.999 --resume " + ck);
   CHECK(refused.exitCode != 0);
-  CHECK_THAT(refused.output, Contains("refine_near = 0.0, this run has 4.0") && Contains("give --refine-near 0 to go on"));
+  CHECK_THAT(refused.output,
+             Contains("refine_near = 0.0, this run has 4.0") && Contains("give --refine-near 0 to go on"));
   CHECK(test::hemirad(args + " --converge 0.999 --refine-near 0 --resume " + ck).exitCode == 0);
 }

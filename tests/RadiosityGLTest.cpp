@@ -180,7 +180,8 @@ TEST_CASE("Batched passes converge to the one-shooter solution", "[gl]") {
   CHECK(b.status.shots <= a.status.shots + 16 * 4);
 }
 
-TEST_CASE("Running ahead of the status readback gives advance()'s radiosity bits and final status", "[gl]") {
+TEST_CASE("Running ahead of the status readback gives advance()'s radiosity bits and final status",
+          "[gl][heavy]") {  // bits of repeated solves: 8 s under ASan
   // advanceAhead() returns the status a batch late; the passes enqueued after the stop rule fired
   // are empty, so settle() ends where advance() does, whatever the batch sizes.
   Scene s = loadScene(test::sourcePath("scenes/cornell/cornell.obj"));

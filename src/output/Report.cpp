@@ -67,6 +67,7 @@ nlohmann::json reportJson(const RunInfo& r) {
   if (!r.direct.empty()) report["direct"] = r.direct;
   if (!r.discontinuities.empty()) report["discontinuities"] = r.discontinuities;
   if (!r.visibility.empty()) report["visibility"] = r.visibility;
+  if (r.shooterBlocks > 0) report["shooter_blocks"] = r.shooterBlocks;
   if (r.direct == "per-pixel") report["final_gather"] = r.finalGather;
   if (r.supersample) report["camera_image"] = {{"supersample", r.supersample}, {"msaa", r.msaa}};
   if (r.gatherShares) report["camera_image"]["gather_shares"] = r.gatherShares;

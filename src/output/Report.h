@@ -32,10 +32,11 @@ struct RunInfo {
   unsigned deliveryShots = 0;     // perspective-driven solves: item buffers that delivered stored entries
   unsigned fovDecayShots = 0;     // ... and their decay interval
   std::size_t elements = 0, itemTriangles = 0;
-  std::string discontinuities;  // "contact" or "off" (--discontinuities)
-  std::size_t charts = 0;       // src/scene/Charts.h
-  std::size_t clusters = 0;     // of them, clusters of small charts (src/scene/Clusters.h)
-  std::size_t discShapes = 0;   // shooter-tree nodes past the shape budget, shot with the disc form factor
+  std::string discontinuities;    // "contact" or "off" (--discontinuities)
+  std::size_t charts = 0;         // src/scene/Charts.h
+  std::size_t clusters = 0;       // of them, clusters of small charts (src/scene/Clusters.h)
+  std::size_t discShapes = 0;     // shooter-tree nodes past the shape budget, shot with the disc form factor
+  std::size_t shooterBlocks = 0;  // progressive: the planned shooter blocks (ShootingPlan::blocks)
   int atlasWidth = 0, atlasHeight = 0;
   SolveStatus status;
   PassTimings timings;

@@ -17,6 +17,17 @@ constexpr double kShooterSide = 1.0 / 4, kEmitterSide = 1.0 / 16;
 // shooting, real_20k's armchairs 1.3-2.1 % at 20k elements; from 2 x 2 texels the bowl is
 // within 0.1 % and every real_20k object within 0.7 % (docs/real-scenes.md#curved-shooters).
 constexpr int kCurvedLevel = 1;
+// Refined blocks pay where they hold many elements: a block's shot stands for its elements'
+// shots, but near it (--refine-near) it is shot part by part, a shot several times an element's
+// (10 x on llvmpipe). Where the planned blocks would hold fewer elements than this on average
+// (few elements, or a scene of many small charts, whose blocks are the charts), a refined solve
+// shoots every element; an unrefined one (below --converge 0.99) keeps its cheap blocks.
+// real_20k at 10k elements, 4.9 a block: element by element 125 s against 202 s on llvmpipe,
+// interiors 0.70 against 0.92 % from the path tracer, objects 0.1-0.7 % apart; at 2,500 (2.0 a
+// block) 8.8 against 29.5 s and 1.7 against 2.3 %. Only some charts one by one (the curved ones)
+// was worse than either plan (real_20k's room +1.4 % at 10k). Cornell box: 3.6 a block at 1,000
+// elements, 13 at 2,500 (docs/design.md#elements-per-block).
+constexpr double kMinElementsPerBlock = 6;
 // Item-buffer pixels per element across the scene's extent: a receiver element at the far side
 // of the scene spans ~2 pixels of the item buffer (whose disc diameter covers pi radians at most).
 constexpr double kPixelsPerElement = 4.0;
@@ -40,7 +51,7 @@ int powerOfTwoAtLeast(double x) {
 }  // namespace
 
 ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel, int itemResolution,
-                          Projection projection) {
+                          Projection projection, bool refinedNear) {
   const glm::dvec3 size = scene.boundsMax() - scene.boundsMin();
   const double extent = std::max({size.x, size.y, size.z});
   ShootingPlan plan;
@@ -50,6 +61,12 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
     plan.chartLevel.push_back(shootLevel != kAutoShootLevel ? shootLevel
                               : c.planar                    ? level
                                                             : std::min(level, kCurvedLevel));
+  }
+  plan.blocks = atlas.shooterBlocks(plan.chartLevel).size();
+  if (shootLevel == kAutoShootLevel && refinedNear &&
+      double(atlas.elements) < kMinElementsPerBlock * double(plan.blocks)) {
+    std::fill(plan.chartLevel.begin(), plan.chartLevel.end(), 0);
+    plan.blocks = atlas.shooterBlocks(plan.chartLevel).size();
   }
   // Refined leaves (src/scene/Leaves.h) see at their own cells' scale; but the hemicube resolves
   // occluders, which a leaf split does not make smaller: it is planned from the base cells

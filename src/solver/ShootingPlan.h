@@ -3,7 +3,8 @@
 // receivers are cut: coarse shooters, fine receivers. The exact polygon form factor makes a large
 // block's transfer exact; only its visibility is taken from one point, its centre. Emitters shoot
 // four times finer than the rest, so direct shadows keep their penumbrae; curved charts from 2 x 2
-// texels at most, their facets turning away from a block's one normal.
+// texels at most, their facets turning away from a block's one normal. In a solve refined near its
+// shooters, where blocks would hold few elements each, every element shoots (kMinElementsPerBlock).
 #pragma once
 #include <vector>
 
@@ -18,11 +19,13 @@ inline constexpr int kAutoItemResolution = 0;  // ProgressiveSettings::itemResol
 
 struct ShootingPlan {
   std::vector<int> chartLevel;  // per chart: it shoots from 2^level x 2^level texel blocks
+  std::size_t blocks = 0;       // the shooter blocks those levels cut the atlas into
   int itemResolution = 512;     // item buffer pixels a side
 };
 
 // shootLevel >= 0 and itemResolution > 0 are taken as given; the auto values are planned.
+// `refinedNear`: the solve refines near its shooters (--refine-near), which auto's level weighs.
 ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel, int itemResolution,
-                          Projection projection = Projection::Orthographic);
+                          Projection projection = Projection::Orthographic, bool refinedNear = false);
 
 }  // namespace hemirad
