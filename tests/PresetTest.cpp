@@ -104,23 +104,25 @@ TEST_CASE("The default refines near its shooters where the solve stops at 0.99 o
 }
 
 // Auto's refined blocks pay where each holds many elements (kMinElementsPerBlock, ShootingPlan.cpp):
-// the Cornell box at 600 elements would hold about 3 a block, so a refined solve shoots every
-// element, and refinement, which has no parts to visit, changes nothing; at 2,500 its blocks hold
-// 13 and stay, and an unrefined solve keeps them at 600.
+// the Cornell box at 600 elements would hold about 3 a block, so a solve refined within 4 sides
+// shoots every element, and refinement, which has no parts to visit, changes nothing; at 2,500 its
+// blocks hold 13 and stay, and at 600 an unrefined solve or one refined within 16 sides keeps them.
 TEST_CASE(
-    "Auto's shooter blocks stay where they hold 6 elements or more each or the solve is not refined, and else "
-    "every element shoots",
+    "Auto's shooter blocks stay where they hold 6 elements or more each or the solve refines none or 8 sides or "
+    "more, and else every element shoots",
     "[cli][preset]") {
   const std::string few = "--elements 600 --item-res 64 --converge 0.99";  // refined from 0.99 (auto)
   const nlohmann::json planned = presetSolve(few), single = presetSolve(few + " --shoot-level 0 --refine-near 0"),
                        many = presetSolve("--elements 2500 --converge 0.99 --shots 1"),
-                       unrefined = presetSolve("--elements 600 --item-res 64 --shots 1");  // to 0.9: not refined
+                       wide = presetSolve(few + " --refine-near 16 --shots 1"),
+                       unrefined = presetSolve("--elements 600 --item-res 64 --shots 1");  // to 0.9
   CHECK(planned["shooter_blocks"] == planned["elements"]);
   CHECK(planned["refine_near"] == kRefinedPlan.refineNear);  // with nothing to refine
   CHECK(planned["radiosity_hash"] == single["radiosity_hash"]);
   CHECK(many["shooter_blocks"].get<double>() * 6 <= many["elements"].get<double>());
   CHECK(unrefined["refine_near"] == 0.0);
   CHECK(unrefined["shooter_blocks"].get<double>() * 2 < unrefined["elements"].get<double>());  // cheap blocks
+  CHECK(wide["shooter_blocks"] == unrefined["shooter_blocks"]);  // within 16 sides small blocks shoot as elements
   CHECK(many["shooter_blocks"].get<double>() > 1);
 }
 
@@ -128,7 +130,7 @@ TEST_CASE(
 // refines within kGatherRefineNear block sides: the same solve as that value given, bit for bit.
 TEST_CASE("Under the near gather the default refines within 16 block sides where the solve stops at 0.99 or more",
           "[cli][preset][heavy]") {  // bits of repeated solves: 15 s under ASan
-  const std::string common = "--elements 600 --item-res 64 --shoot-level 2 --width 16 --height 16 --out " +
+  const std::string common = "--elements 600 --item-res 64 --width 16 --height 16 --out " +
                              test::tempPath("gather_plan.exr"),
                     gather = " --direct per-pixel --final-gather near";
   const nlohmann::json at = presetSolve(common + " --converge 0.99" + gather),
@@ -136,7 +138,7 @@ TEST_CASE("Under the near gather the default refines within 16 block sides where
                        below = presetSolve(common + " --converge 0.98" + gather);
   CHECK(at["refine_near"] == kGatherRefineNear);
   CHECK(at["shooters_per_pass"] == 16);
-  CHECK(at["preset"] == "fast with --item-res 64 --shoot-level 2");
+  CHECK(at["preset"] == "fast with --item-res 64");
   CHECK(at["radiosity_hash"] == given["radiosity_hash"]);
   CHECK(below["refine_near"] == 0.0);
 }

@@ -204,7 +204,7 @@ std::vector<Flag> sceneAndSolverFlags() {
       {"--shoot-level", "K|auto",
        "Substructuring: shoot from 2^K x 2^K texel blocks, or auto: blocks about 1/4 of the "
        "scene wide (emitters 1/16; curved charts at most 2 x 2 texels), or single elements where such blocks would "
-       "hold fewer than 6 each (few elements, or many small charts)",
+       "hold fewer than 6 each (few elements, or many small charts) in a solve refined within fewer than 8 sides",
        autoOr(kAutoShootLevel, 0, 8)},
       {"--refine-near", "K|auto",
        fmt::format(

@@ -58,7 +58,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   const bool perspective = settings.algorithm == Algorithm::Perspective;
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
   plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution, settings.projection,
-                       settings.nearRefinement() > 0);
+                       settings.nearRefinement());
   setUpTree(state.atlas.shooterBlocks(plan_.chartLevel), defines);
   setUpReduction(keep, defines);
 

@@ -20,14 +20,16 @@ constexpr int kCurvedLevel = 1;
 // Refined blocks pay where they hold many elements: a block's shot stands for its elements'
 // shots, but near it (--refine-near) it is shot part by part, a shot several times an element's
 // (10 x on llvmpipe). Where the planned blocks would hold fewer elements than this on average
-// (few elements, or a scene of many small charts, whose blocks are the charts), a refined solve
-// shoots every element; an unrefined one (below --converge 0.99) keeps its cheap blocks.
-// real_20k at 10k elements, 4.9 a block: element by element 125 s against 202 s on llvmpipe,
-// interiors 0.70 against 0.92 % from the path tracer, objects 0.1-0.7 % apart; at 2,500 (2.0 a
-// block) 8.8 against 29.5 s and 1.7 against 2.3 %. Only some charts one by one (the curved ones)
-// was worse than either plan (real_20k's room +1.4 % at 10k). Cornell box: 3.6 a block at 1,000
-// elements, 13 at 2,500 (docs/design.md#elements-per-block).
-constexpr double kMinElementsPerBlock = 6;
+// (few elements, or a scene of many small charts, whose blocks are the charts) and the solve
+// refines within fewer than kWideReach sides, every element shoots; refined within kWideReach or
+// more, nearly every receiver is near such small blocks and they shoot as elements do, and an
+// unrefined solve (below --converge 0.99) keeps its cheap blocks. real_20k at 10k elements (4.9 a
+// block), quick images against the path tracer, interiors: element by element 1.38 against 1.57 %
+// (H100, 5.8 against 5.2 s) and 0.70 against 0.92 % (llvmpipe, 125 against 202 s); at 2,500 (2.0
+// a block) 2.63 against 3.10 % (1.7 against 2.3 s). Only some charts one by one (the curved ones)
+// was worse than either plan. Cornell box: 3.6 a block at 1,000 elements, 13 at 2,500
+// (docs/design.md#elements-per-block).
+constexpr double kMinElementsPerBlock = 6, kWideReach = 8;
 // Item-buffer pixels per element across the scene's extent: a receiver element at the far side
 // of the scene spans ~2 pixels of the item buffer (whose disc diameter covers pi radians at most).
 constexpr double kPixelsPerElement = 4.0;
@@ -51,7 +53,7 @@ int powerOfTwoAtLeast(double x) {
 }  // namespace
 
 ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel, int itemResolution,
-                          Projection projection, bool refinedNear) {
+                          Projection projection, double refineNear) {
   const glm::dvec3 size = scene.boundsMax() - scene.boundsMin();
   const double extent = std::max({size.x, size.y, size.z});
   ShootingPlan plan;
@@ -63,7 +65,8 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
                                                             : std::min(level, kCurvedLevel));
   }
   plan.blocks = atlas.shooterBlocks(plan.chartLevel).size();
-  if (shootLevel == kAutoShootLevel && refinedNear &&
+  const bool fewSidesNear = refineNear > 0 && refineNear < kWideReach;
+  if (shootLevel == kAutoShootLevel && fewSidesNear &&
       double(atlas.elements) < kMinElementsPerBlock * double(plan.blocks)) {
     std::fill(plan.chartLevel.begin(), plan.chartLevel.end(), 0);
     plan.blocks = atlas.shooterBlocks(plan.chartLevel).size();

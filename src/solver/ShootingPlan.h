@@ -3,8 +3,9 @@
 // receivers are cut: coarse shooters, fine receivers. The exact polygon form factor makes a large
 // block's transfer exact; only its visibility is taken from one point, its centre. Emitters shoot
 // four times finer than the rest, so direct shadows keep their penumbrae; curved charts from 2 x 2
-// texels at most, their facets turning away from a block's one normal. In a solve refined near its
-// shooters, where blocks would hold few elements each, every element shoots (kMinElementsPerBlock).
+// texels at most, their facets turning away from a block's one normal. In a solve refined a few
+// sides near its shooters, where blocks would hold few elements each, every element shoots
+// (kMinElementsPerBlock).
 #pragma once
 #include <vector>
 
@@ -24,8 +25,9 @@ struct ShootingPlan {
 };
 
 // shootLevel >= 0 and itemResolution > 0 are taken as given; the auto values are planned.
-// `refinedNear`: the solve refines near its shooters (--refine-near), which auto's level weighs.
+// `refineNear`: how near its shooters the solve refines (--refine-near, as it runs; 0 none), which
+// auto's level weighs.
 ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel, int itemResolution,
-                          Projection projection = Projection::Orthographic, bool refinedNear = false);
+                          Projection projection = Projection::Orthographic, double refineNear = 0);
 
 }  // namespace hemirad
