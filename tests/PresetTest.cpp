@@ -110,7 +110,7 @@ TEST_CASE("The default refines near its shooters where the solve stops at 0.99 o
 TEST_CASE(
     "Auto's shooter blocks stay where they hold 6 elements or more each or the solve refines none or 8 sides or "
     "more, and else every element shoots",
-    "[cli][preset]") {
+    "[cli][preset][heavy]") {                                              // bits of repeated solves: 17 s under ASan
   const std::string few = "--elements 600 --item-res 64 --converge 0.99";  // refined from 0.99 (auto)
   const nlohmann::json planned = presetSolve(few), single = presetSolve(few + " --shoot-level 0 --refine-near 0"),
                        many = presetSolve("--elements 2500 --converge 0.99 --shots 1"),

@@ -64,12 +64,12 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
                               : c.planar                    ? level
                                                             : std::min(level, kCurvedLevel));
   }
-  plan.blocks = atlas.shooterBlocks(plan.chartLevel).size();
+  plan.blocks = atlas.shooterBlocks(plan.chartLevel);
   const bool fewSidesNear = refineNear > 0 && refineNear < kWideReach;
   if (shootLevel == kAutoShootLevel && fewSidesNear &&
-      double(atlas.elements) < kMinElementsPerBlock * double(plan.blocks)) {
+      double(atlas.elements) < kMinElementsPerBlock * double(plan.blocks.size())) {
     std::fill(plan.chartLevel.begin(), plan.chartLevel.end(), 0);
-    plan.blocks = atlas.shooterBlocks(plan.chartLevel).size();
+    plan.blocks = atlas.shooterBlocks(plan.chartLevel);
   }
   // Refined leaves (src/scene/Leaves.h) see at their own cells' scale; but the hemicube resolves
   // occluders, which a leaf split does not make smaller: it is planned from the base cells
