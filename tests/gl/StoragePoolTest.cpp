@@ -112,7 +112,8 @@ TEST_CASE("The storage pool keeps at most 256 idle objects, the most recent", "[
   CHECK_FALSE(gl::dropIdleStorage());
 }
 
-TEST_CASE("A solve on storage another solve handed back gives the bits of one on fresh storage", "[gl]") {
+TEST_CASE("A solve on storage another solve handed back gives the bits of one on fresh storage",
+          "[gl][heavy]") {  // bits of repeated solves: 7 s under ASan
   const Scene scene = test::cube(0.6, 1.0, 0);
   ProgressiveSettings settings;
   settings.stop = {0, 0.99};
