@@ -166,8 +166,8 @@ TEST_CASE(
   const Scene box = litBox();
   ProgressiveSettings plain, refined;
   plain.stop.targetConvergence = refined.stop.targetConvergence = 0.95;
-  refined.refineNear = 1;  // receivers near and far: the near ones' deficit must go far
-  plain.shootLevel = refined.shootLevel = 1;  // 2 x 2 blocks both (auto would refine none: too few a block)
+  refined.refineNear = 1;                     // receivers near and far: the near ones' deficit must go far
+  plain.shootLevel = refined.shootLevel = 1;  // 2 x 2 blocks both (refined, auto would shoot single elements)
   const double texel = texelSizeForElements(box, 800);
   const test::Solved a = test::solve(box, texel, plain), b = test::solve(box, texel, refined);
   INFO("light lost: plain " << lostLight(box, a) << ", refined " << lostLight(box, b));
