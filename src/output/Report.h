@@ -36,7 +36,7 @@ struct RunInfo {
   std::size_t charts = 0;         // src/scene/Charts.h
   std::size_t clusters = 0;       // of them, clusters of small charts (src/scene/Clusters.h)
   std::size_t discShapes = 0;     // shooter-tree nodes past the shape budget, shot with the disc form factor
-  std::size_t shooterBlocks = 0;  // progressive: how many shooter blocks were planned (ShootingPlan)
+  std::size_t shooterBlocks = 0;  // progressive: the shooter blocks (ProgressiveSolver::shooterBlocks)
   int atlasWidth = 0, atlasHeight = 0;
   SolveStatus status;
   PassTimings timings;

@@ -59,7 +59,7 @@ ProgressiveSolver::ProgressiveSolver(SolverState& state, const ProgressiveSettin
   const gl::Defines defines = perspective ? gl::Defines{{"PERSPECTIVE", "1"}} : gl::Defines{};
   plan_ = planShooting(state.scene, state.atlas, settings.shootLevel, settings.itemResolution, settings.projection,
                        settings.nearRefinement());
-  setUpTree(plan_.blocks, defines);
+  setUpTree(state.atlas.shooterBlocks(plan_.chartLevel), defines);
   setUpReduction(keep, defines);
 
   // Item-buffer layers: K radiosity shooters, and K importance shooters after them.

@@ -64,13 +64,10 @@ ShootingPlan planShooting(const Scene& scene, const Atlas& atlas, int shootLevel
                               : c.planar                    ? level
                                                             : std::min(level, kCurvedLevel));
   }
-  plan.blocks = atlas.shooterBlocks(plan.chartLevel);
   const bool fewSidesNear = refineNear > 0 && refineNear < kWideReach;
   if (shootLevel == kAutoShootLevel && fewSidesNear &&
-      double(atlas.elements) < kMinElementsPerBlock * double(plan.blocks.size())) {
+      double(atlas.elements) < kMinElementsPerBlock * double(atlas.shooterBlocks(plan.chartLevel).size()))
     std::fill(plan.chartLevel.begin(), plan.chartLevel.end(), 0);
-    plan.blocks = atlas.shooterBlocks(plan.chartLevel);
-  }
   // Refined leaves (src/scene/Leaves.h) see at their own cells' scale; but the hemicube resolves
   // occluders, which a leaf split does not make smaller: it is planned from the base cells
   // (adaptive Cornell at 100k elements: 128^2, not 256^2, as uniform subdivision at 100k).

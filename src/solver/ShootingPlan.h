@@ -19,9 +19,8 @@ inline constexpr int kAutoShootLevel = -1;     // ProgressiveSettings::shootLeve
 inline constexpr int kAutoItemResolution = 0;  // ProgressiveSettings::itemResolution
 
 struct ShootingPlan {
-  std::vector<int> chartLevel;       // per chart: it shoots from 2^level x 2^level texel blocks
-  std::vector<ShooterBlock> blocks;  // the shooter blocks those levels cut the atlas into
-  int itemResolution = 512;          // item buffer pixels a side
+  std::vector<int> chartLevel;  // per chart: it shoots from 2^level x 2^level texel blocks
+  int itemResolution = 512;     // item buffer pixels a side
 };
 
 // shootLevel >= 0 and itemResolution > 0 are taken as given; the auto values are planned.

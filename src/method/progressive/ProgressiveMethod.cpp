@@ -37,7 +37,7 @@ class ProgressiveRun final : public AtlasRun {
     run.itemSubdivision = settings_.itemSubdivision;
     run.itemResolution = solver_.plan().itemResolution;
     run.shootLevel = settings_.shootLevel;
-    run.shooterBlocks = solver_.plan().blocks.size();
+    run.shooterBlocks = solver_.shooterBlocks();
     run.refineNear = settings_.nearRefinement();
     run.visibility = visibilityName(solver_.visibility());
     run.shootersPerPass = settings_.shootersPerPass;
