@@ -71,7 +71,7 @@ SolvedRound solveAndCount(const Scene& scene, const Atlas& atlas, const LeafTree
 
 }  // namespace
 
-TEST_CASE("Adaptive refinement splits the leaves a shadow edge crosses, not the smooth ones", "[gl][adaptive]") {
+TEST_CASE("Adaptive refinement splits the leaves a shadow edge crosses, not the smooth ones", "[gl][adaptive][slow]") {
   const Scene scene = shadowScene();
   const Atlas base = buildAtlas(scene, kTexel);
   LeafTree tree(base, 2);
@@ -344,7 +344,7 @@ TEST_CASE(
 }
 
 TEST_CASE("A refined layout's item buffers draw each cut polygon whole, and see what its parts would show",
-          "[gl][adaptive]") {
+          "[gl][adaptive][slow]") {
   const Scene scene = shadowScene();
   const Atlas base = buildAtlas(scene, kTexel);
   LeafTree tree(base, 2);

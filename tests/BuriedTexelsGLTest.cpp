@@ -31,7 +31,7 @@ Scene furnaceWithBlock(glm::dvec2& lo, double& w) {
 TEST_CASE(
     "In a furnace the floor beside a block shows E / (1 - rho): its buried texels take their unburied neighbours' "
     "light, and every other texel keeps its own",
-    "[gl]") {
+    "[gl][slow]") {
   glm::dvec2 lo;
   double w = 0;
   const Scene s = furnaceWithBlock(lo, w);

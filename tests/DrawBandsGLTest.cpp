@@ -58,12 +58,12 @@ TEST_CASE(
   Renderer renderer(v.state);
   renderer.show(v.sent);
   renderer.usePerPixelDirect(v.light, &gather);
-  renderer.setBandPlan({.firstTiles = 100, .maxTiles = 100});  // 160^2 pixels: 9 tiles in one band
-  const Image whole = renderer.render(camera, 40, 40, 4);
-  renderer.setBandPlan({.seconds = 1e-9, .firstTiles = 1, .maxTiles = 1});  // 9 bands
-  const Image tiles = renderer.render(camera, 40, 40, 4);
+  renderer.setBandPlan({.firstTiles = 100, .maxTiles = 100});  // 96^2 pixels: 4 tiles in one band
+  const Image whole = renderer.render(camera, 24, 24, 4);
+  renderer.setBandPlan({.seconds = 1e-9, .firstTiles = 1, .maxTiles = 1});  // 4 bands
+  const Image tiles = renderer.render(camera, 24, 24, 4);
   renderer.setBandPlan({.firstTiles = 100, .maxTiles = 100});  // its clears are whole, not the last band's
-  const Image after = renderer.render(camera, 40, 40, 4);
+  const Image after = renderer.render(camera, 24, 24, 4);
   double sum = 0;
   for (float v : whole.rgb) sum += v;
   REQUIRE(sum > 0);
