@@ -33,10 +33,11 @@ vec3 nodeOrigin(uint n) {
   return ontoPlane(c.w > 0.0 ? c.xyz / c.w : nodes[n].centreArea.xyz, nodes[n].polygon);
 }
 
-// A single element's light is linear across it where NearGather gave it slopes (the sources'
-// last two vec4s: half-axes u and v, u x v along its normal, and the relative change of its light
-// per element step along each): its quadrants send S (1 + slope . their offset), and p receives
-// S F times the mean of that over the quadrants, weighted by the share of F each subtends from p.
+// A single element's light is linear across its piece where GatherSources gave it a profile (the
+// sources' last two vec4s: the piece's half-axes u and v, u x v along its normal, and the relative
+// change of its light across each): its quadrants send S (1 + change . their offset), and p
+// receives S F times the mean of that over the quadrants, weighted by the share of F each
+// subtends from p.
 // Beside a crease the nearest element of the other wall fills much of p's hemisphere, and its
 // light falls toward the crease (the wall's top is lit at grazing angles): a constant S would
 // overstate it by ~20 % at a fifth of an element from the crease.
