@@ -35,23 +35,30 @@ vec3 nodeOrigin(uint n) {
 
 // A single element's light is linear across its piece where GatherSources gave it a profile (the
 // sources' last two vec4s: the piece's half-axes u and v, u x v along its normal, and the relative
-// change of its light across each): its quadrants send S (1 + change . their offset), and p
-// receives S F times the mean of that over the quadrants, weighted by the share of F each
-// subtends from p.
-// Beside a crease the nearest element of the other wall fills much of p's hemisphere, and its
-// light falls toward the crease (the wall's top is lit at grazing angles): a constant S would
-// overstate it by ~20 % at a fifth of an element from the crease.
+// change of its light across each): p receives S F times the mean of S (1 + the change at each
+// sub-cell's centre) over k x k sub-cells of the piece, weighted by the share of F each subtends
+// from p. Beside a crease the nearest element of the other wall fills much of p's hemisphere, and
+// its light falls toward the crease (the wall's top is lit at grazing angles): a constant S would
+// overstate it by ~20 % at a fifth of an element from the crease. From within a piece's side of its
+// centre, what p sees most is a strip narrower than a quadrant: 8 x 8 sub-cells there, 2 x 2
+// elsewhere (the Cornell box on the H200, 256^2, 10k elements: the 1-px corner band +0.680 ->
+// +0.572 %, the process 4.12 -> 4.14 s; docs/design.md#final-gather).
+const int kProfileCellsNear = 8;
+
 float leafProfile(uint n, vec3 p, vec3 np) {
   vec4 hu = stats[n].viewCentre, hv = stats[n].range;
   if (hu.xyz == vec3(0.0)) return 1.0;
-  vec3 c = nodes[n].centreArea.xyz, ns = nodes[n].normal.xyz, u = 0.5 * hu.xyz, v = 0.5 * hv.xyz;
+  vec3 c = nodes[n].centreArea.xyz, ns = nodes[n].normal.xyz, d = p - c;
+  int k = dot(d, d) < 4.0 * dot(hu.xyz, hu.xyz) ? kProfileCellsNear : 2;
+  vec3 u = hu.xyz / float(k), v = hv.xyz / float(k);  // a sub-cell's half-axes
   float sum = 0.0, weights = 0.0;
-  for (int q = 0; q < 4; ++q) {
-    float su = (q & 1) == 0 ? -1.0 : 1.0, sv = q < 2 ? -1.0 : 1.0;
-    vec3 qc = c + su * u + sv * v;  // the quadrant's centre; its corners qc -+ u -+ v
-    float F = pointToQuad(p, np, qc - u - v, qc + u - v, qc + u + v, qc - u + v, ns);
-    sum += F * max(0.0, 1.0 + 0.25 * (su * hu.w + sv * hv.w)), weights += F;
-  }
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i < k; ++i) {
+      float a = (float(i) + 0.5) / float(k) - 0.5, b = (float(j) + 0.5) / float(k) - 0.5;  // in piece extents
+      vec3 qc = c + 2.0 * a * hu.xyz + 2.0 * b * hv.xyz;
+      float F = pointToQuad(p, np, qc - u - v, qc + u - v, qc + u + v, qc - u + v, ns);
+      sum += F * max(0.0, 1.0 + a * hu.w + b * hv.w), weights += F;
+    }
   return weights > 0.0 ? sum / weights : 1.0;
 }
 

@@ -344,7 +344,7 @@ TEST_CASE(
 }
 
 TEST_CASE("A refined layout's item buffers draw each cut polygon whole, and see what its parts would show",
-          "[gl][adaptive][slow]") {
+          "[gl][adaptive][heavy]") {  // the refined layout runs under ASan in its closed box (14 s there)
   const Scene scene = shadowScene();
   const Atlas base = buildAtlas(scene, kTexel);
   LeafTree tree(base, 2);

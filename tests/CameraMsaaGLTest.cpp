@@ -31,7 +31,7 @@ double pixelLuminance(const Image& img, std::size_t p) {
 TEST_CASE(
     "MSAA finds a per-pixel render's edges closer to a 16 x 16 grid's than the plain 2 x 2 grid, and leaves pixels "
     "that one triangle covers as they were",
-    "[gl][camera][direct]") {
+    "[gl][camera][direct][heavy]") {  // repeated renders: MSAA runs under ASan in the refusal test (8 s there)
   test::backend();
   const test::CornellView v;
   const Camera& camera = v.camera;
