@@ -77,7 +77,8 @@ TEST_CASE("The ambient term brings early images closer to the converged one, fad
   CHECK(rmsDifference(converged, convergedPlain) < 0.01 * errPlain);
 }
 
-TEST_CASE("A solve's own camera images carry no ambient term unless --ambient on asks for it", "[heavy][cli][ambient]") {
+TEST_CASE("A solve's own camera images carry no ambient term unless --ambient on asks for it",
+          "[heavy][cli][ambient]") {
   // The ambient term is a preview's estimate of the light not yet shot, uniform and tinted by the
   // mean reflectance: on a converged image it is an ad hoc term (issue 31: +1.7 % on a block's dark
   // face at 0.999). So a solve's --out is B alone unless asked; view and walkthrough frames keep it.

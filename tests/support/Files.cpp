@@ -1,12 +1,38 @@
 #include "tests/support/Files.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "tests/support/Support.h"
 
 namespace hemirad::test {
+
+std::string uvSphereObj(glm::dvec3 centre, double radius, int slices, int stacks, int firstStack, int firstVertex,
+                        bool inward) {
+  std::string obj;
+  for (int j = firstStack; j <= stacks; ++j)
+    for (int i = 0; i < slices; ++i) {
+      const double theta = M_PI * j / stacks, phi = 2 * M_PI * i / slices;
+      const double r = j == 0 || j == stacks ? 0.0 : std::sin(theta);  // the poles' vertices coincide
+      const glm::dvec3 v = centre + radius * glm::dvec3(r * std::cos(phi), std::cos(theta), r * std::sin(phi));
+      obj += fmt::format("v {} {} {}\n", v.x, v.y, v.z);
+    }
+  auto at = [&](int i, int j) { return firstVertex + (j - firstStack) * slices + i % slices; };
+  for (int j = firstStack; j < stacks; ++j)
+    for (int i = 0; i < slices; ++i) {
+      std::vector<int> f = j == 0            ? std::vector<int>{at(i, j), at(i + 1, j + 1), at(i, j + 1)}
+                           : j == stacks - 1 ? std::vector<int>{at(i, j), at(i + 1, j), at(i + 1, j + 1)}
+                                             : std::vector<int>{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+      if (inward) std::reverse(f.begin(), f.end());
+      obj += fmt::format("f {}\n", fmt::join(f, " "));
+    }
+  return obj;
+}
 
 std::string writeScene(const std::string& folder, const std::string& obj, const std::string& mtl,
                        const std::string& objFile, const std::string& mtlFile) {

@@ -1,6 +1,7 @@
 // Shared helpers for the tests that go through files and the command line: scene files written
 // into the test temp folder, reports read back, and what a run printed.
 #pragma once
+#include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -12,6 +13,11 @@ namespace hemirad::test {
 // `folder`; returns the OBJ's path.
 std::string writeScene(const std::string& folder, const std::string& obj, const std::string& mtl,
                        const std::string& objFile = "s.obj", const std::string& mtlFile = "m.mtl");
+// OBJ lines (v, then f) of a UV sphere's stacks from `firstStack` to the south pole, of `slices` x
+// `stacks` (theta = pi j / stacks from the north pole, so 0: the whole sphere, stacks / 2: the lower
+// hemisphere), facing out or in, its first vertex numbered `firstVertex`; triangles at the poles.
+std::string uvSphereObj(glm::dvec3 centre, double radius, int slices, int stacks, int firstStack = 0,
+                        int firstVertex = 1, bool inward = false);
 // Writes `text` to the fresh temp path `name`; returns the path.
 std::string writeTempFile(const std::string& name, const std::string& text);
 nlohmann::json readJson(const std::string& path);  // a report, a bench or validation JSON
