@@ -19,10 +19,10 @@ namespace {
 
 const std::string kPresetScene = test::sourcePath("scenes/cornell/cornell.obj");
 
-// `hemirad solve` of the Cornell box with `flags`; its report.
-nlohmann::json presetSolve(const std::string& flags) {
+// `hemirad solve` of the Cornell box (or `scene`) with `flags`; its report.
+nlohmann::json presetSolve(const std::string& flags, const std::string& scene = kPresetScene) {
   const std::string report = test::tempPath("preset" + std::to_string(std::hash<std::string>{}(flags)) + ".json");
-  test::Run run = test::hemirad("solve " + kPresetScene + " --quiet " + flags + " --report " + report);
+  test::Run run = test::hemirad("solve " + scene + " --quiet " + flags + " --report " + report);
   INFO("solve " << flags << "\n" << run.output);
   REQUIRE(run.exitCode == 0);
   return test::readJson(report);
@@ -175,18 +175,13 @@ TEST_CASE(
   obj += "o light\nusemtl light\nv -0.6 6 -0.6\nv 0.6 6 -0.6\nv 0.6 6 0.6\nv -0.6 6 0.6\nf 169 170 171 172\n";
   const std::string scene =
       test::writeScene("bowl", obj, "newmtl white\nKd 0.8 0.8 0.8\nnewmtl light\nKd 0 0 0\nKe 10 10 10\n");
-  const std::string report = test::tempPath("bowl.json");
   auto solve = [&](const std::string& plan) {  // the bowl's mean B (red), the report's shooter blocks
-    const test::Run run = test::hemirad("solve " + scene + " --elements 1000 --converge 0.999 --ambient off " +
-                                        "--refine-near 0 --quiet --report " + report + plan);
-    INFO(run.output);
-    REQUIRE(run.exitCode == 0);
-    const nlohmann::json json = test::readJson(report);
-    for (const auto& o : json["objects"])
-      if (o["name"] == "bowl")
-        return std::pair(o["mean_radiosity"][0].get<double>(), json["shooter_blocks"].get<int>());
-    FAIL("no bowl in the report");
-    return std::pair(0.0, 0);
+    const nlohmann::json json =
+        presetSolve("--elements 1000 --converge 0.999 --ambient off --refine-near 0" + plan, scene);
+    const auto& objects = json["objects"];
+    const auto bowl = std::find_if(objects.begin(), objects.end(), [](const auto& o) { return o["name"] == "bowl"; });
+    REQUIRE(bowl != objects.end());
+    return std::pair((*bowl)["mean_radiosity"][0].get<double>(), json["shooter_blocks"].get<int>());
   };
   const auto [planned, blocks] = solve("");
   const auto [exact, elements] = solve(" --shoot-level 0");

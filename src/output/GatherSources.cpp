@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "src/scene/Scene.h"
+#include "src/solver/Subdivide.h"
 
 namespace hemirad {
 
@@ -63,7 +64,7 @@ AxisChange axisChange(const Atlas& atlas, const std::vector<glm::vec4>& sent, gl
   const std::optional<double> up = toward(t + step), down = toward(t - step);
   AxisChange a{std::clamp(1 - 2 * std::abs(offset), kMinCentroidStep, 1.0), 0.0};
   if (up && down)
-    a.perCell = *up * -*down <= 0 ? 0.0 : (std::abs(*up) < std::abs(*down) ? *up : -*down);
+    a.perCell = limitedSlope(*up, -*down);
   else if (up || down)
     a.perCell = up ? *up : -*down;
   return a;

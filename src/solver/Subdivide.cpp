@@ -32,7 +32,7 @@ glm::vec2 luminanceSlope(const Atlas& atlas, const std::vector<glm::vec4>& B, gl
       if (rule == SlopeRule::Central)
         slope[axis] = 0.5f * (hi - lo);
       else  // minmod
-        slope[axis] = up * down <= 0 ? 0.0f : (std::abs(up) < std::abs(down) ? up : down);
+        slope[axis] = float(limitedSlope(up, down));
     } else if (hi >= 0) {
       slope[axis] = hi - here;
     } else if (lo >= 0) {

@@ -5,6 +5,7 @@
 // too and stops splitting, while a shadow edge or a contact keeps its jump and splits to the
 // maximum depth.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -73,6 +74,12 @@ class GradientPass {
 // overshoots at a kink (an element in a contact shadow's umbra beside its penumbra: the
 // penumbra's slope, extrapolated into the umbra) and at an extremum; a limited one does not.
 enum class SlopeRule { Central, Limited };
+// Minmod of two one-sided changes (each toward its neighbour, per step, signed along the axis): the
+// smaller where they agree in sign, else 0. SlopeRule::Limited's, and the near gather's profiles'
+// (src/output/GatherSources.cpp).
+inline double limitedSlope(double up, double down) {
+  return up * down <= 0 ? 0.0 : (std::abs(up) < std::abs(down) ? up : down);
+}
 
 // The change of B's luminance per texel step at texel t along the atlas's x and y, within t's
 // chart: by `rule` inside it, one-sided at the chart's edge, 0 without a neighbour.
