@@ -254,9 +254,9 @@ TEST_CASE("Lookups across leaves of different density show no step once seams ar
 
 TEST_CASE("A limited slope follows a ramp as the central difference does, and stays flat beside a kink and at a peak",
           "[cpu][adaptive]") {
-  // The near gather's linear profiles take limitedSlope (src/output/GatherSources.cpp): a central
-  // difference beside a kink (an umbra beside its penumbra) would carry the ramp's slope into the
-  // flat side.
+  // A central difference beside a kink (an umbra beside its penumbra) would carry the ramp's slope
+  // into the flat side. The near gather's profiles limit the central difference instead
+  // (centralLimitedSlope, tests/GatherSourcesTest.cpp), which keeps the kink and the peak flat too.
   const Scene scene = shadowScene();
   const Atlas atlas = buildAtlas(scene, kTexel);
   const std::uint32_t floor = atlas.chartOf[0];

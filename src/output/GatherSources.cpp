@@ -41,8 +41,9 @@ void nodeLight(const Atlas& atlas, const std::vector<ShooterNode>& nodes, const 
 // cell's centre along the axis, in cells): its piece's extent in cells and the change of its
 // luminance per cell. The grid is centred on its chart, so the outer cells are cut by the
 // polygon's edge: a border piece's centroid lies off its cell's centre, nearer the next one. So the
-// change toward each neighbour is over the true distance between their centroids (one cell only
-// inside), then minmod of the two, or the one side at the chart's edge.
+// changes are over the true distances between centroids (one cell only inside), then the
+// parabola's slope through the neighbours, limited (centralLimitedSlope), or at the chart's edge
+// through the next two (edgeSlope).
 struct AxisChange {
   double extent = 1, perCell = 0;
 };
@@ -52,21 +53,33 @@ AxisChange axisChange(const Atlas& atlas, const std::vector<glm::vec4>& sent, gl
   const std::size_t i = std::size_t(t.y) * std::size_t(atlas.width) + std::size_t(t.x);
   const std::uint32_t chart = atlas.chartAt(i);
   const glm::dvec3 p(atlas.positionArea[i]);
-  const double own = luminance(glm::dvec3(glm::vec3(sent[i])));
-  auto toward = [&](glm::ivec2 q) -> std::optional<double> {  // per cell, from t toward q
+  struct Sample {
+    double light, cells;  // luminance, and distance from t along the axis
+  };
+  auto sample = [&](glm::ivec2 q) -> std::optional<Sample> {
     if (q.x < 0 || q.y < 0 || q.x >= atlas.width || q.y >= atlas.height) return std::nullopt;
     const std::size_t k = std::size_t(q.y) * std::size_t(atlas.width) + std::size_t(q.x);
     if (atlas.chartAt(k) != chart || !(atlas.positionArea[k].w > 0)) return std::nullopt;
     const double d = std::abs(glm::dot(glm::dvec3(atlas.positionArea[k]) - p, axis)) / h;
     if (d < kMinCentroidStep) return std::nullopt;
-    return (luminance(glm::dvec3(glm::vec3(sent[k]))) - own) / d;
+    return Sample{luminance(glm::dvec3(glm::vec3(sent[k]))), d};
   };
-  const std::optional<double> up = toward(t + step), down = toward(t - step);
+  const double own = luminance(glm::dvec3(glm::vec3(sent[i])));
+  const std::optional<Sample> up = sample(t + step), down = sample(t - step);
   AxisChange a{std::clamp(1 - 2 * std::abs(offset), kMinCentroidStep, 1.0), 0.0};
   if (up && down)
-    a.perCell = limitedSlope(*up, -*down);
-  else if (up || down)
-    a.perCell = up ? *up : -*down;
+    a.perCell =
+        centralLimitedSlope((up->light - own) / up->cells, (own - down->light) / down->cells, up->cells, down->cells);
+  else if (up || down) {
+    const int sign = up ? 1 : -1;  // toward the chart's inside
+    const Sample next = up ? *up : *down;
+    const std::optional<Sample> after = sample(t + 2 * sign * step);
+    a.perCell = sign * (next.light - own) / next.cells;
+    if (after && after->cells > next.cells + kMinCentroidStep) {
+      const double farStep = after->cells - next.cells;
+      a.perCell = edgeSlope(a.perCell, sign * (after->light - next.light) / farStep, next.cells, farStep);
+    }
+  }
   return a;
 }
 

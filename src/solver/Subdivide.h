@@ -5,6 +5,7 @@
 // too and stops splitting, while a shadow edge or a contact keeps its jump and splits to the
 // maximum depth.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -75,10 +76,31 @@ class GradientPass {
 // penumbra's slope, extrapolated into the umbra) and at an extremum; a limited one does not.
 enum class SlopeRule { Central, Limited };
 // Minmod of two one-sided changes (each toward its neighbour, per step, signed along the axis): the
-// smaller where they agree in sign, else 0. SlopeRule::Limited's, and the near gather's profiles'
-// (src/output/GatherSources.cpp).
+// smaller where they agree in sign, else 0. SlopeRule::Limited's.
 inline double limitedSlope(double up, double down) {
   return up * down <= 0 ? 0.0 : (std::abs(up) < std::abs(down) ? up : down);
+}
+// The monotonized central limiter (van Leer 1977) of a texel's one-sided changes (signed along the
+// axis, per cell; `upStep` and `downStep` the distances to the neighbours, in cells): where they
+// agree in sign, the slope at the texel of the parabola through the three means (their
+// distance-weighted mean: the central difference for even steps), at most twice the smaller;
+// else 0. Inside smooth light it is second order, where minmod takes the flatter side: beside a
+// crease or a contact the light steepens toward the edge, and the flatter side leaves the piece
+// too bright there. A kink (an umbra beside its penumbra) and a peak stay flat, and no profile
+// passes its neighbours' light. The near gather's profiles' (src/output/GatherSources.cpp).
+inline double centralLimitedSlope(double up, double down, double upStep = 1, double downStep = 1) {
+  if (up * down <= 0) return 0.0;
+  const double central = (downStep * up + upStep * down) / (upStep + downStep);
+  return std::copysign(std::min(2 * std::min(std::abs(up), std::abs(down)), std::abs(central)), up);
+}
+// At a chart's edge, the slope at the outer texel of the parabola through it and its next two
+// (`near` and `far`: the one-sided changes to the next and from the next to the one after, `step`
+// and `farStep` apart), within 0 and twice `near` where both agree in sign, else `near`: the light
+// steepening toward a crease is followed as inside.
+inline double edgeSlope(double near, double far, double step, double farStep) {
+  if (near * far <= 0) return near;
+  const double parabola = near - step * (far - near) / (step + farStep);
+  return near * std::clamp(parabola / near, 0.0, 2.0);
 }
 
 // The change of B's luminance per texel step at texel t along the atlas's x and y, within t's
