@@ -11,6 +11,31 @@
 
 using namespace hemirad;
 
+namespace {
+
+// A unit square in the y = 0 plane at texel size `texel`, sending light(x) from each element: what
+// gatherSources makes of it, per node of its shooter tree.
+struct SquareSources {
+  Atlas atlas;
+  ShooterTree tree;
+  std::vector<glm::vec4> sources;
+};
+
+template <class Light>
+SquareSources squareSources(const std::string& name, double texel, Light light) {
+  const std::string path = test::writeScene(
+      name, "mtllib m.mtl\nusemtl w\nv 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n", "newmtl w\nKd 0.5 0.5 0.5\n");
+  SquareSources s{buildAtlas(loadScene(path), texel), {}, {}};
+  s.tree = buildShooterTree(s.atlas, s.atlas.shooterBlocks(4), 4);
+  std::vector<glm::vec4> sent(s.atlas.positionArea.size(), glm::vec4(0.0f));
+  for (std::size_t t = 0; t < sent.size(); ++t)
+    if (s.atlas.positionArea[t].w > 0) sent[t] = glm::vec4(glm::vec3(float(light(s.atlas.positionArea[t].x))), 0.0f);
+  s.sources = gatherSources(s.atlas, s.tree.nodes, sent);
+  return s;
+}
+
+}  // namespace
+
 TEST_CASE(
     "The near gather's element profiles follow a linear light across every piece: border cells cut by the "
     "polygon's edge included",
@@ -20,17 +45,8 @@ TEST_CASE(
   // along x, so each element's change across its piece is exact: 2 b hu.x over its own light.
   // Before, a border element's change was taken per cell step from a centroid 0.25 away (17 %
   // short) and spread over the whole cell.
-  const std::string path =
-      test::writeScene("linear_light", "mtllib m.mtl\nusemtl w\nv 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n",
-                       "newmtl w\nKd 0.5 0.5 0.5\n");
-  const Scene scene = loadScene(path);
-  const Atlas atlas = buildAtlas(scene, 0.3);
-  const ShooterTree tree = buildShooterTree(atlas, atlas.shooterBlocks(4), 4);
   const double a = 1, b = 2;
-  std::vector<glm::vec4> sent(atlas.positionArea.size(), glm::vec4(0.0f));
-  for (std::size_t t = 0; t < sent.size(); ++t)
-    if (atlas.positionArea[t].w > 0) sent[t] = glm::vec4(glm::vec3(float(a + b * atlas.positionArea[t].x)), 0.0f);
-  const std::vector<glm::vec4> sources = gatherSources(atlas, tree.nodes, sent);
+  const auto [atlas, tree, sources] = squareSources("linear_light", 0.3, [&](double x) { return a + b * x; });
   int elements = 0, border = 0;
   for (std::size_t n = 0; n < tree.nodes.size(); ++n) {
     const glm::ivec4 r = tree.nodes[n].rect;
@@ -60,18 +76,9 @@ TEST_CASE(
   // change (centralLimitedSlope) is the parabola's through the three means, and never passes the
   // neighbour's own light. At the chart's edge the one-sided change to the next is the flatter
   // too; the parabola through the next two (edgeSlope) is steeper.
-  const std::string path =
-      test::writeScene("steepening_light", "mtllib m.mtl\nusemtl w\nv 0 0 0\nv 0 0 1\nv 1 0 1\nv 1 0 0\nf 1 2 3 4\n",
-                       "newmtl w\nKd 0.5 0.5 0.5\n");
-  const Scene scene = loadScene(path);
   const double h = 0.1;
-  const Atlas atlas = buildAtlas(scene, h);
-  const ShooterTree tree = buildShooterTree(atlas, atlas.shooterBlocks(4), 4);
   auto light = [](double x) { return std::sqrt(x); };
-  std::vector<glm::vec4> sent(atlas.positionArea.size(), glm::vec4(0.0f));
-  for (std::size_t t = 0; t < sent.size(); ++t)
-    if (atlas.positionArea[t].w > 0) sent[t] = glm::vec4(glm::vec3(float(light(atlas.positionArea[t].x))), 0.0f);
-  const std::vector<glm::vec4> sources = gatherSources(atlas, tree.nodes, sent);
+  const auto [atlas, tree, sources] = squareSources("steepening_light", h, light);
   int inner = 0, edge = 0;
   double worst = 0, worstMinmod = 0;
   for (std::size_t n = 0; n < tree.nodes.size(); ++n) {
