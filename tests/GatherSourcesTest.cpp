@@ -1,5 +1,6 @@
 // What the near final gather knows of each element (src/output/GatherSources.h): a border element of
-// a chart is a cut cell, so its profile must follow its piece, not its cell.
+// a chart is a cut cell, so its profile must follow its piece, not its cell; and its slope must
+// follow light that steepens toward a crease or a contact without passing its neighbours.
 #include <catch2/catch.hpp>
 
 #include <cmath>
