@@ -178,10 +178,7 @@ TEST_CASE(
   auto solve = [&](const std::string& plan) {  // the bowl's mean B (red), the report's shooter blocks
     const nlohmann::json json =
         presetSolve("--elements 1000 --converge 0.999 --ambient off --refine-near 0" + plan, scene);
-    const auto& objects = json["objects"];
-    const auto bowl = std::find_if(objects.begin(), objects.end(), [](const auto& o) { return o["name"] == "bowl"; });
-    REQUIRE(bowl != objects.end());
-    return std::pair((*bowl)["mean_radiosity"][0].get<double>(), json["shooter_blocks"].get<int>());
+    return std::pair(test::reportObjectB(json, "bowl"), json["shooter_blocks"].get<int>());
   };
   const auto [planned, blocks] = solve("");
   const auto [exact, elements] = solve(" --shoot-level 0");

@@ -57,8 +57,11 @@ double solvedObjectB(const std::string& args, const std::string& object) {
   const Run run = hemirad("solve " + args + " --quiet --report " + report);
   INFO("solve " << args << "\n" << run.output);
   REQUIRE(run.exitCode == 0);
-  const nlohmann::json json = readJson(report);  // kept: a temporary's ["objects"] would dangle
-  for (const auto& o : json["objects"])
+  return reportObjectB(readJson(report), object);
+}
+
+double reportObjectB(const nlohmann::json& report, const std::string& object) {
+  for (const auto& o : report["objects"])
     if (o["name"] == object) return o["mean_radiosity"][0].get<double>();
   FAIL("no object " << object << " in the report");
   return 0;

@@ -24,6 +24,7 @@ nlohmann::json readJson(const std::string& path);  // a report, a bench or valid
 std::string readText(const std::string& path);     // a whole file ("" if missing)
 // `hemirad solve ARGS --quiet --report TEMP`, required to succeed: the report's mean B (red) of `object`.
 double solvedObjectB(const std::string& args, const std::string& object);
+double reportObjectB(const nlohmann::json& report, const std::string& object);  // a solve report's, as above
 
 int count(const std::string& text, const std::string& what);  // non-overlapping occurrences
 // The `hemirad: error:` lines in a run's output: bad input must give exactly one.
