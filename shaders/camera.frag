@@ -18,7 +18,6 @@
 #endif
 centroid in vec3 vPosition, vNormal;
 uniform bool directPass;
-uniform bool addDirect;  // this direct pass adds the direct light (a share of the near gather may follow alone)
 #endif
 
 layout(binding = SAMPLER_ATLAS_VALUES) uniform sampler2D radiosity;
@@ -83,7 +82,7 @@ void main() {
     // A curved chart's receivers take the smooth normal, as its elements do (Atlas::normalOf).
     vec3 n = vNormal == vec3(0.0) ? polygons[vPolygon].normal.xyz : normalize(vNormal);
     vec3 x = insidePolygon(vPosition, vPolygon);
-    vec3 add = addDirect ? directLight(x, n, vPolygon) : vec3(0.0);
+    vec3 add = directLight(x, n, vPolygon);  // this draw's share of the emitter pieces
 #ifdef NEAR_GATHER
     for (int k = 0; k < count; ++k) weight[k] /= total;
     add += polygons[vPolygon].reflectance.rgb *

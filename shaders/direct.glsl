@@ -4,10 +4,15 @@
 // hemisphere.glsl, scene.glsl, formfactor.glsl, segment.glsl, bvh.glsl and bvh_segment.glsl.
 // The pieces (src/output/DirectLight.h) sit in SSBO_SHOOTER_SHAPES, a slot each: the emitters'
 // polygons cut into fans of 3 or 4 vertices, each header's w its polygon id (uint bits).
-uniform uint emitterPieces;
 uniform uint emitterBase;   // the first piece's slot (after the final gather's nodes, NearGather.h)
+// The strips this draw adds, [stripFirst, stripEnd), strip piece * G + row: all of them, or a share
+// where llvmpipe's loop limit cut a pixel's walks to all (src/output/DirectShares.h).
+uniform uint stripFirst, stripEnd;
 uniform int directGrid;     // G: visibility is sampled at G x G points a piece
 uniform float segmentEps;   // blocksSegment's plane tolerance, as the gather's (SEGMENT_TOLERANCE x far distance)
+// pieceMayBeBlocked's loop turns before it answers "may be": a cap on llvmpipe, where its walk over a
+// furnished room's clutter alone can pass the loop limit (src/output/DirectLight.h); none on GPUs.
+uniform uint pyramidTurns;
 
 // The point (u, v) of a piece as the bilinear patch p0 p1 p2 p3 (a triangle: p3 = p2) and the
 // patch's area element |dp/du x dp/dv| there: a triangle's cells near p2 are small, and weigh less.
@@ -20,10 +25,11 @@ vec3 piecePoint(uint base, vec2 uv, out float areaElement) {
   return mix(mix(p0, p1, uv.x), mix(p3, p2, uv.x), uv.y);
 }
 
-// The share of the piece's light that x sees: its G x G cell centres, each weighted by the
-// point-to-point kernel cos_x cos_y / r^2 dA, each tested exactly (the BVH nominates occluders,
-// blocksSegment decides). 1 when x sees every centre: unoccluded light is the contour integral's.
-float visibleShare(vec3 x, vec3 n, uint base, vec3 nl) {
+// The share of the piece's light that x sees through rows [rows.x, rows.y) of its G x G cell
+// centres, each weighted by the point-to-point kernel cos_x cos_y / r^2 dA, each tested exactly
+// (the BVH nominates occluders, blocksSegment decides) where `test`, else seen. All rows
+// untested: 1, unoccluded light is the contour integral's.
+float visibleShare(vec3 x, vec3 n, uint base, vec3 nl, ivec2 rows, bool test) {
   float seen = 0.0, all = 0.0, cell = 1.0 / float(directGrid);
   for (int j = 0; j < directGrid; ++j)
     for (int i = 0; i < directGrid; ++i) {
@@ -32,16 +38,17 @@ float visibleShare(vec3 x, vec3 n, uint base, vec3 nl) {
       float r2 = dot(d, d), w = dA * max(dot(n, d), 0.0) * max(-dot(nl, d), 0.0) / (r2 * r2);
       if (w <= 0.0) continue;
       all += w;
-      if (!segmentBlocked(x, y, NO_POLYGON, NO_POLYGON, segmentEps)) seen += w;
+      if (j >= rows.x && j < rows.y && (!test || !segmentBlocked(x, y, NO_POLYGON, NO_POLYGON, segmentEps))) seen += w;
     }
-  return all > 0.0 ? seen / all : 1.0;  // every centre at the horizon: F is ~0 anyway
+  return all > 0.0 ? seen / all : float(rows.y - rows.x) / float(directGrid);  // at the horizon F is ~0 anyway
 }
 
 // Whether any triangle of the scene may cross the pyramid from x to the piece (apex x; x in
 // front of the piece): the BVH nominates triangles whose boxes meet the pyramid's box, and one is
 // dropped when a plane of the pyramid has all its vertices outside (a side face, the piece's
 // plane, or x's own plane when the whole piece lies above x's horizon). false: every segment from
-// x to the piece is unblocked, and the grid's segment tests would all find so.
+// x to the piece is unblocked, and the grid's segment tests would all find so. Past pyramidTurns
+// it answers true: the exact tests that follow decide.
 bool pieceMayBeBlocked(vec3 x, vec3 n, uint base) {
   int count = int(shooterShape[base].x);
   vec3 p[4], lo = x, hi = x, centre = vec3(0.0);
@@ -61,10 +68,12 @@ bool pieceMayBeBlocked(vec3 x, vec3 n, uint base) {
   bool aboveHorizon = true;
   for (int i = 0; i < count; ++i) aboveHorizon = aboveHorizon && dot(n, p[i] - x) > 0.0;
   bool hit;
-  uint k = 0u, end = bvhNext(0u, false);
+  uint k = 0u, end = bvhNext(0u, false), turns = 0u;
   for (; k < end; k = bvhNext(k, hit)) {
     hit = all(lessThanEqual(bvhNode[k].lo.xyz, hi)) && all(greaterThanEqual(bvhNode[k].hi.xyz, lo));
     uint first = floatBitsToUint(bvhNode[k].lo.w), tris = hit ? floatBitsToUint(bvhNode[k].hi.w) : 0u;
+    turns += 1u + tris * uint(count + 1);
+    if (turns > pyramidTurns) return true;
     for (uint t = first; t < first + tris; ++t) {
       vec3 a = bvhTriangle[t].v0.xyz, b = a + bvhTriangle[t].e1.xyz, c = a + bvhTriangle[t].e2.xyz;
       bool outside = max(max(dot(nl, a - p[0]), dot(nl, b - p[0])), dot(nl, c - p[0])) <= touch ||
@@ -101,20 +110,25 @@ bool pieceHidden(vec3 x, uint base) {
   return false;
 }
 
-// rho times the irradiance / pi from every emitter at point x of `polygon`, normal n (its plane's,
-// or a curved chart's smooth normal): the direct part of B there. One-sided emitters: a piece
-// lights only points in front of it.
+// rho times the irradiance / pi from this draw's strips of the emitter pieces at point x of
+// `polygon`, normal n (its plane's, or a curved chart's smooth normal): the direct part of B there.
+// One-sided emitters: a piece lights only points in front of it.
 vec3 directLight(vec3 x, vec3 n, uint polygon) {
   x = ontoPlane(x, polygon);  // interpolation leaves ~1e-7
   vec3 sum = vec3(0.0);
-  for (uint e = 0u; e < emitterPieces; ++e) {
+  uint grid = uint(directGrid);
+  for (uint e = stripFirst / grid; e * grid < stripEnd; ++e) {
     uint base = (emitterBase + e) * uint(SHAPE_STRIDE), lamp = floatBitsToUint(shooterShape[base].w);
     if (lamp == polygon) continue;
     vec3 nl = polygons[lamp].normal.xyz;
     float F = pointToPiece(x, n, base, nl);
     if (F <= 0.0) continue;
+    ivec2 rows = ivec2(max(stripFirst, e * grid) - e * grid, min(stripEnd, (e + 1u) * grid) - e * grid);
+    bool whole = rows == ivec2(0, directGrid);
     // Most points see a piece whole or not at all: two exact tests spare them the grid's segments.
-    float V = !pieceMayBeBlocked(x, n, base) ? 1.0 : pieceHidden(x, base) ? 0.0 : visibleShare(x, n, base, nl);
+    float V = !pieceMayBeBlocked(x, n, base) ? (whole ? 1.0 : visibleShare(x, n, base, nl, rows, false))
+              : pieceHidden(x, base)          ? 0.0
+                                              : visibleShare(x, n, base, nl, rows, true);
     sum += polygons[lamp].emission.rgb * (F * V);
   }
   return polygons[polygon].reflectance.rgb * sum;

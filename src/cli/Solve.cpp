@@ -173,7 +173,8 @@ Image cameraView(const SolveOptions& o, const Scene& scene, const Atlas& atlas, 
   Image view = renderer.render(camera, o.width, o.height, o.supersample);
   run.directPixelsMs = msSince(t0);
   run.msaa = renderer.lastSamples();
-  run.gatherShares = gather ? renderer.lastShares() : 0;
+  run.gatherShares = gather ? renderer.lastShares().gather : 0;
+  run.directShares = renderer.lastShares().direct;
   return view;
 }
 

@@ -2,6 +2,8 @@
 
 #include <span>
 
+#include "gl/Backend.h"
+
 #include "src/solver/Bvh.h"
 #include "src/solver/ShaderContract.h"
 
@@ -35,10 +37,16 @@ DirectLight::DirectLight(const Scene& scene, double farDistance, int grid)
 void DirectLight::bind(const gl::Program& program) const {
   if (pieceCount_) pieces_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_SHOOTER_SHAPES);
   bvh_.bind();
-  program.set("emitterPieces", pieceCount_);
   program.set("emitterBase", 0u);
   program.set("directGrid", grid_);
   program.set("segmentEps", segmentEps_);
+  program.set("pyramidTurns", gl::softwareRenderer() ? kSoftwarePyramidTurns : ~0u);
+  bindStrips(program, 0, pieceCount_ * unsigned(grid_));
+}
+
+void DirectLight::bindStrips(const gl::Program& program, unsigned first, unsigned end) const {
+  program.set("stripFirst", first);
+  program.set("stripEnd", end);
 }
 
 }  // namespace hemirad

@@ -19,6 +19,12 @@ namespace hemirad {
 // umbra pixels are exact whatever G (tests/DirectLightGLTest.cpp).
 inline constexpr int kDirectGrid = 8;
 
+// On llvmpipe, the loop turns direct.glsl's pyramid test may take before it leaves a piece to the
+// exact tests: its walk over the BVH nodes the pyramid's box meets is the one part of a strip's
+// work a share cannot split (src/output/DirectShares.h), and in a furnished room it alone passed
+// llvmpipe's 65,535. A GPU walks it whole (the exact tests cost more there than the walk).
+inline constexpr unsigned kSoftwarePyramidTurns = 8192;
+
 // The emitting polygons as fan pieces of 3 or 4 vertices (v0 v1 v2 v3, v0 v3 v4 v5, ...), each a
 // SHAPE_STRIDE slot of formfactor.glsl's layout: the count, one piece (y bits), the polygon id
 // (w bits), then the vertices.
@@ -30,6 +36,10 @@ class DirectLight {
   static gl::Defines defines() { return {{"PER_PIXEL_DIRECT", "1"}}; }
   // Binds the pieces and the BVH and sets direct.glsl's uniforms on `program`.
   void bind(const gl::Program& program) const;
+  // From now on `program` adds the light of strips [first, end) only (src/output/DirectShares.h).
+  void bindStrips(const gl::Program& program, unsigned first, unsigned end) const;
+  unsigned pieces() const { return pieceCount_; }
+  unsigned grid() const { return unsigned(grid_); }  // strips a piece
   // Where llvmpipe's loop limit cut a walk of the images drawn with it (BvhBuffers.h).
   const BvhBuffers& walks() const { return bvh_; }
 

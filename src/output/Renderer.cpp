@@ -9,17 +9,11 @@
 #include "gl/Limits.h"
 #include "gl/State.h"
 #include "src/output/CameraTarget.h"
+#include "src/output/DirectShares.h"
 #include "src/output/Supersample.h"
 #include "src/solver/ShaderContract.h"
 
 namespace hemirad {
-
-namespace {
-// llvmpipe's first try at a near-gathered view: the Cornell box's gather took 16 shares at 1,000
-// elements (64^2); a draw more than needed costs a raster pass, a cut try the whole view (there
-// 9.5 s for the per-pixel pass from 1 share, 4.2 s from 16, the same bytes).
-constexpr unsigned kFirstSoftwareShares = 16;
-}  // namespace
 
 void requireDrawn(const std::vector<float>& rgba) {
   for (std::size_t i = 3; i < rgba.size(); i += 4)
@@ -97,56 +91,67 @@ void Renderer::usePerPixelDirect(const DirectLight& direct, const NearGather* ga
 
 // The second pass of a per-pixel-direct view: each visible fragment (the depths the first pass
 // left, GL_EQUAL: the same program and vertices give the same depths) adds its direct light and
-// near gather. It can cost seconds, so it is drawn in bands (src/output/DrawBands.h). In `parts`
-// > 1 the direct light is drawn alone, then the gather's blocks in `parts` shares, one a draw.
-void Renderer::drawDirect(const glm::mat4& vp, int width, int height, unsigned parts) {
+// near gather, in the draws of shares_ (src/output/DirectShares.h). A draw can cost seconds, so
+// each is drawn in bands (src/output/DrawBands.h). Stops at the first part whose walks were cut.
+Renderer::Cut Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
   gl::RasterState add = gl::cameraView(width, height);
   add.depthFunc = gl::DepthFunc::Equal, add.depthWrite = false, add.additiveBlend = true;
   direct_->bind(directProgram_);
   if (gather_) gather_->bind(directProgram_);
   directProgram_.set("directPass", 1);
   directProgram_.set("viewProjection", &vp[0][0]);
-  const unsigned blocks = gather_ ? gather_->blocks() : 0, draws = parts == 1 ? 1 : parts + 1;
-  const bool cutBefore = parts > 1 && direct_->walks().walksCut();  // by an earlier grid draw's shares
-  for (unsigned d = 0; d < draws; ++d) {
-    directProgram_.set("addDirect", int(d == 0));
-    if (gather_ && parts > 1)
-      gather_->bindBlocks(directProgram_, d ? blocks * (d - 1) / parts : 0, d ? blocks * d / parts : 0);
+  const std::vector<DirectShare> shares =
+      directShares(*shares_, direct_->pieces(), direct_->grid(), gather_ ? gather_->blocks() : 0);
+  const auto lights = [](const DirectShare& s) { return s.stripsEnd > s.stripsFirst; };
+  for (std::size_t k = 0; k < shares.size(); ++k) {
+    direct_->bindStrips(directProgram_, shares[k].stripsFirst, shares[k].stripsEnd);
+    if (gather_) gather_->bindBlocks(directProgram_, shares[k].blocksFirst, shares[k].blocksEnd);
     directProgram_.use();
     drawInBands(bands_, width, height, [&](const gl::Rect& band) {
       add.scissor = band;
       add.apply();
       mesh_.draw();
     });
-    // Drawn alone, the direct light's walks were cut: no share of the gather helps (render()).
-    if (parts > 1 && d == 0 && !cutBefore)
-      direct_->walks().requireWholeWalks("the camera image's per-pixel direct light");
+    const bool partDone = k + 1 == shares.size() || lights(shares[k]) != lights(shares[k + 1]);
+    if (partDone && direct_->walks().walksCut())
+      return shares.size() == 1 ? Cut::Both : lights(shares[k]) ? Cut::Direct : Cut::Gather;
   }
   gl::checkErrors("per-pixel direct light");
+  return Cut::None;
 }
 
 // llvmpipe ends all of a shader invocation's loops after 65,535 turns in all (shaders/bvh.glsl),
-// which a pixel's near gather beside a crease can pass: where a walk was cut, the view is drawn
-// again with the gather in 4 x as many shares, each walking less, down to a block a draw. A
-// renderer starts from the shares its last view took (the same scene's views need about as many),
-// its first on llvmpipe from kFirstSoftwareShares.
+// which a pixel's walks to the emitters or its near gather beside a crease can pass: where a
+// part's walks were cut, the view is drawn again with that part in 4 x as many shares, each
+// walking less, down to a strip or a block a draw. A renderer starts from the shares its last view
+// took (the same scene's views need about as many), its first on llvmpipe from the gather's
+// firstSoftwareShares_.
 Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
   const bool direct = direct_ && &atlasValues == &shown();  // other values (error maps) are shown as they are
-  if (!direct) return draw(camera, width, height, supersample, atlasValues, 0);
-  const unsigned most = gather_ ? std::max(gather_->blocks(), 1u) : 1;
-  const unsigned first = lastShares_ ? lastShares_ : gl::softwareRenderer() ? kFirstSoftwareShares : 1;
-  for (unsigned parts = std::min(most, first);; parts = std::min(most, parts * 4)) {
-    Image view = draw(camera, width, height, supersample, atlasValues, parts);
-    lastShares_ = parts;
-    if (!direct_->walks().walksCut()) return view;
-    if (parts == most) direct_->walks().requireWholeWalks("the camera image's per-pixel light");  // throws
+  Cut cut = Cut::None;
+  if (!direct) return draw(camera, width, height, supersample, atlasValues, false, cut);
+  if (!shares_) shares_ = gl::softwareRenderer() ? SharePlan{1, firstSoftwareShares_} : SharePlan{};
+  const SharePlan most{std::max(direct_->pieces() * direct_->grid(), 1u),
+                       std::max(gather_ ? gather_->blocks() : 0u, 1u)};
+  for (;;) {
+    Image view = draw(camera, width, height, supersample, atlasValues, true, cut);
+    if (cut == Cut::None) return view;
+    const bool moreDirect = cut != Cut::Gather && shares_->direct < most.direct;
+    const bool moreGather = cut != Cut::Direct && shares_->gather < most.gather;
+    if (!moreDirect && !moreGather)  // throws
+      direct_->walks().requireWholeWalks(
+          cut == Cut::Gather ? "the camera image's near gather, a block a draw (--final-gather off leaves it out)"
+                             : "the camera image's per-pixel light, a strip a draw");
+    if (moreDirect) shares_->direct = std::min(most.direct, shares_->direct * 4);
+    if (moreGather) shares_->gather = std::min(most.gather, shares_->gather * 4);
     direct_->walks().clearWalksCut();
   }
 }
 
-// One view; `parts`: 0 without per-pixel direct light, else drawDirect's.
+// One view, with the per-pixel pass where `perPixel`; where its walks were cut, none, and `cut` says
+// which part's.
 Image Renderer::draw(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues,
-                     unsigned parts) {
+                     bool perPixel, Cut& cut) {
   const CameraPlan plan = cameraPlan(width, height, supersample, samples_, gl::limits().textureSize);
   const SupersampleGrid grid(supersample, plan.scale);
   const int w = width * grid.scale(), h = height * grid.scale();
@@ -159,8 +164,7 @@ Image Renderer::draw(const Camera& camera, int width, int height, int supersampl
   const bool ambient = ambient_ && &atlasValues == &shown();
   if (ambient) updateAmbient();
   ambientTerm_.bindBase(GL_SHADER_STORAGE_BUFFER, slot::SSBO_AMBIENT);
-  const bool direct = parts > 0;
-  const gl::Program& program = direct ? directProgram_ : program_;
+  const gl::Program& program = perPixel ? directProgram_ : program_;
   program.set("addAmbient", int(ambient));
   std::vector<double> sums;
   std::vector<float> rgba;
@@ -169,11 +173,11 @@ Image Renderer::draw(const Camera& camera, int width, int height, int supersampl
     gl::cameraView(w, h).apply();
     const glm::mat4 shifted = grid.shift(k, w, h) * vp;
     program.set("viewProjection", &shifted[0][0]);
-    if (direct) program.set("directPass", 0);
+    if (perPixel) program.set("directPass", 0);
     program.use();
     mesh_.draw();
     gl::checkErrors("camera render");
-    if (direct) drawDirect(shifted, w, h, parts);
+    if (perPixel && (cut = drawDirect(shifted, w, h)) != Cut::None) return {};
     target.read(rgba);
     requireDrawn(rgba);
     grid.accumulate(rgba, width, height, 3, sums);

@@ -2,10 +2,12 @@
 // each fragment looking B up in the atlas (bilinear, masked to its own polygon).
 #pragma once
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "gl/Objects.h"
 #include "src/output/DirectLight.h"
+#include "src/output/DirectShares.h"
 #include "src/output/DrawBands.h"
 #include "src/output/Image.h"
 #include "src/output/NearGather.h"
@@ -47,9 +49,11 @@ class Renderer {
   void setMultisample(int samples) { samples_ = samples; }
   // The samples a cell the last render drew: setMultisample's, or 1 where cameraPlan fell back.
   int lastSamples() const { return lastSamples_; }
-  // The shares the last render's near gather was drawn in: 1, or more where llvmpipe's loop limit
-  // cut a walk (render()).
-  unsigned lastShares() const { return lastShares_; }
+  // The shares the last render's per-pixel pass was drawn in: {1, 1}, or more where llvmpipe's
+  // loop limit cut a walk (render(), src/output/DirectShares.h).
+  SharePlan lastShares() const { return shares_.value_or(SharePlan{}); }
+  // The near gather's shares a renderer's first per-pixel view on llvmpipe starts from.
+  void setFirstSoftwareShares(unsigned shares) { firstSoftwareShares_ = shares; }
 
  private:
   const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
@@ -57,9 +61,10 @@ class Renderer {
   const SolverState& state_;
   void updateAmbient();
 
+  enum class Cut { None, Direct, Gather, Both };  // the part of the per-pixel pass whose walks were cut
   Image draw(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues,
-             unsigned parts);
-  void drawDirect(const glm::mat4& vp, int width, int height, unsigned parts);
+             bool perPixel, Cut& cut);
+  Cut drawDirect(const glm::mat4& vp, int width, int height);
 
   gl::Program program_, ambientProgram_, directProgram_;
   const DirectLight* direct_ = nullptr;
@@ -69,7 +74,11 @@ class Renderer {
   CameraMesh mesh_;
   bool ambient_ = false;
   int samples_ = 1, lastSamples_ = 1;
-  unsigned lastShares_ = 0;  // none yet
+  std::optional<SharePlan> shares_;  // the last view's; none yet
+  // The Cornell box's gather took 16 shares at 1,000 elements (64^2); a draw more than needed costs
+  // a raster pass, a cut try the whole view (there 9.5 s for the per-pixel pass from 1 share, 4.2 s
+  // from 16, the same bytes).
+  unsigned firstSoftwareShares_ = 16;
   std::unique_ptr<gl::Texture> shown_;
   std::unique_ptr<ShownRadiosity> stitcher_;  // stitchLive(), where what is shown differs from B
 };

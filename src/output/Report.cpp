@@ -71,6 +71,7 @@ nlohmann::json reportJson(const RunInfo& r) {
   if (r.direct == "per-pixel") report["final_gather"] = r.finalGather;
   if (r.supersample) report["camera_image"] = {{"supersample", r.supersample}, {"msaa", r.msaa}};
   if (r.gatherShares) report["camera_image"]["gather_shares"] = r.gatherShares;
+  if (r.directShares) report["camera_image"]["direct_shares"] = r.directShares;
   if (const std::optional<Smoothness>& m = r.smoothness)
     report["smoothness"] = {{"facet_edges", m->facetEdges},
                             {"facet_jump", m->facetJump},

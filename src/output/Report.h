@@ -26,6 +26,7 @@ struct RunInfo {
   double directSplitMs = 0, directPixelsMs = 0;
   int supersample = 0, msaa = 0;  // the camera image's N x N cells and the samples a cell drawn (0: none)
   int gatherShares = 0;           // the draws its near gather took (Renderer::lastShares; 0: none)
+  int directShares = 0;           // the draws its per-pixel direct light took (0: none)
   double refineNear = 0;          // progressive: receivers nearer than this many shooter sides see its parts
   std::string visibility;         // progressive: "item-buffer" or "bvh" (--visibility)
   unsigned importanceShots = 0;   // importance-driven solves
