@@ -170,6 +170,7 @@ TEST_CASE(
   std::ifstream in(report);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK_THAT(text, Contains("\"direct\": \"per-pixel\"") && Contains("\"direct_ms\""));
+  CHECK_THAT(text, Contains("\"direct_shares\": 1"));  // one lamp: its walks fit one draw on llvmpipe too
 }
 
 TEST_CASE("Per-pixel direct light and the near final gather are deterministic: the same solve writes the same bytes",
