@@ -77,7 +77,6 @@ TEST_CASE(
   Renderer renderer(state);
   renderer.show(std::vector<glm::vec4>(atlas.polygonOf.size(), glm::vec4(0.0f)));  // nothing reflects twice
   renderer.usePerPixelDirect(light);
-  renderer.setFirstSoftwareShares(1);  // as a GPU: the whole lamp in one draw first (there is no gather)
   const int size = 32;
   const Camera camera{{0.5, 0.5, 0.6}, {0.5, 0.5, 1.0}, {0, 1, 0}, 90.0};  // between occluder and receiver
   const Image image = renderer.render(camera, size, size, 1);

@@ -15,6 +15,14 @@
 
 namespace hemirad {
 
+namespace {
+// llvmpipe's first try at a near-gathered view: the Cornell box's gather took 16 shares at 1,000
+// elements (64^2); a draw more than needed costs a raster pass, a cut try the whole view (there
+// 9.5 s for the per-pixel pass from 1 share, 4.2 s from 16, the same bytes). The direct light
+// starts in one draw.
+constexpr SharePlan kFirstSoftwareShares{1, 16};
+}  // namespace
+
 void requireDrawn(const std::vector<float>& rgba) {
   for (std::size_t i = 3; i < rgba.size(); i += 4)
     if (rgba[i] != 1.0f)
@@ -124,13 +132,13 @@ Renderer::Cut Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
 // which a pixel's walks to the emitters or its near gather beside a crease can pass: where a
 // part's walks were cut, the view is drawn again with that part in 4 x as many shares, each
 // walking less, down to a strip or a block a draw. A renderer starts from the shares its last view
-// took (the same scene's views need about as many), its first on llvmpipe from the gather's
-// firstSoftwareShares_.
+// took (the same scene's views need about as many), its first on llvmpipe from
+// kFirstSoftwareShares.
 Image Renderer::render(const Camera& camera, int width, int height, int supersample, const gl::Texture& atlasValues) {
   const bool direct = direct_ && &atlasValues == &shown();  // other values (error maps) are shown as they are
   Cut cut = Cut::None;
   if (!direct) return draw(camera, width, height, supersample, atlasValues, false, cut);
-  if (!shares_) shares_ = gl::softwareRenderer() ? SharePlan{1, firstSoftwareShares_} : SharePlan{};
+  if (!shares_) shares_ = gl::softwareRenderer() ? kFirstSoftwareShares : SharePlan{};
   const SharePlan most{std::max(direct_->pieces() * direct_->grid(), 1u),
                        std::max(gather_ ? gather_->blocks() : 0u, 1u)};
   for (;;) {

@@ -52,8 +52,6 @@ class Renderer {
   // The shares the last render's per-pixel pass was drawn in: {1, 1}, or more where llvmpipe's
   // loop limit cut a walk (render(), src/output/DirectShares.h).
   SharePlan lastShares() const { return shares_.value_or(SharePlan{}); }
-  // The near gather's shares a renderer's first per-pixel view on llvmpipe starts from.
-  void setFirstSoftwareShares(unsigned shares) { firstSoftwareShares_ = shares; }
 
  private:
   const gl::Texture& shown() const { return shown_ ? *shown_ : state_.radiosity; }
@@ -75,10 +73,6 @@ class Renderer {
   bool ambient_ = false;
   int samples_ = 1, lastSamples_ = 1;
   std::optional<SharePlan> shares_;  // the last view's; none yet
-  // The Cornell box's gather took 16 shares at 1,000 elements (64^2); a draw more than needed costs
-  // a raster pass, a cut try the whole view (there 9.5 s for the per-pixel pass from 1 share, 4.2 s
-  // from 16, the same bytes).
-  unsigned firstSoftwareShares_ = 16;
   std::unique_ptr<gl::Texture> shown_;
   std::unique_ptr<ShownRadiosity> stitcher_;  // stitchLive(), where what is shown differs from B
 };
