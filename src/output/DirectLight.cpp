@@ -41,7 +41,7 @@ void DirectLight::bind(const gl::Program& program) const {
   program.set("directGrid", grid_);
   program.set("segmentEps", segmentEps_);
   program.set("pyramidTurns", gl::softwareRenderer() ? kSoftwarePyramidTurns : ~0u);
-  bindStrips(program, 0, pieceCount_ * unsigned(grid_));
+  bindStrips(program, 0, strips());
 }
 
 void DirectLight::bindStrips(const gl::Program& program, unsigned first, unsigned end) const {

@@ -40,6 +40,7 @@ class DirectLight {
   void bindStrips(const gl::Program& program, unsigned first, unsigned end) const;
   unsigned pieces() const { return pieceCount_; }
   unsigned grid() const { return unsigned(grid_); }  // strips a piece
+  unsigned strips() const { return pieceCount_ * grid(); }
   // Where llvmpipe's loop limit cut a walk of the images drawn with it (BvhBuffers.h).
   const BvhBuffers& walks() const { return bvh_; }
 

@@ -120,9 +120,10 @@ Renderer::Cut Renderer::drawDirect(const glm::mat4& vp, int width, int height) {
       add.apply();
       mesh_.draw();
     });
-    const bool partDone = k + 1 == shares.size() || lights(shares[k]) != lights(shares[k + 1]);
-    if (partDone && direct_->walks().walksCut())
-      return shares.size() == 1 ? Cut::Both : lights(shares[k]) ? Cut::Direct : Cut::Gather;
+    // Split, each part's walks are read once it is drawn, so a retry splits the part that was cut;
+    // one draw of both (every GPU) is read once a view, by render().
+    const bool partDone = shares.size() > 1 && (k + 1 == shares.size() || lights(shares[k]) != lights(shares[k + 1]));
+    if (partDone && direct_->walks().walksCut()) return lights(shares[k]) ? Cut::Direct : Cut::Gather;
   }
   gl::checkErrors("per-pixel direct light");
   return Cut::None;
@@ -139,10 +140,10 @@ Image Renderer::render(const Camera& camera, int width, int height, int supersam
   Cut cut = Cut::None;
   if (!direct) return draw(camera, width, height, supersample, atlasValues, false, cut);
   if (!shares_) shares_ = gl::softwareRenderer() ? kFirstSoftwareShares : SharePlan{};
-  const SharePlan most{std::max(direct_->pieces() * direct_->grid(), 1u),
-                       std::max(gather_ ? gather_->blocks() : 0u, 1u)};
+  const SharePlan most{std::max(direct_->strips(), 1u), std::max(gather_ ? gather_->blocks() : 0u, 1u)};
   for (;;) {
     Image view = draw(camera, width, height, supersample, atlasValues, true, cut);
+    if (cut == Cut::None && direct_->walks().walksCut()) cut = Cut::Both;  // drawn in one draw
     if (cut == Cut::None) return view;
     const bool moreDirect = cut != Cut::Gather && shares_->direct < most.direct;
     const bool moreGather = cut != Cut::Direct && shares_->gather < most.gather;
